@@ -1,0 +1,14 @@
+// Source text -> AST for one file: runs the ANTLR lexer/parser generated from
+// grammar/*.g4 and converts the parse tree (ast_builder). Syntax errors go to
+// the CompileLog with file:line:col and what was expected; parsing recovers
+// and reports further errors. Never throws.
+#pragma once
+
+#include "interpreter/ast/ast.h"
+#include "interpreter/source/source_set.h"
+
+namespace strun::ast {
+
+CompilationUnit parseFile(const SourceSet& sources, int fileIndex, CompileLog& log);
+
+}  // namespace strun::ast

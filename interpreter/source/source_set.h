@@ -1,0 +1,74 @@
+// The source files of one project and the compile diagnostics reported on them.
+// Every stage reports errors here, with a location; the CLI prints them
+// compiler style: FILE:LINE:COL: error: MESSAGE.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "interpreter/ast/ast.h"
+
+namespace strun {
+
+struct SourceFile {
+    std::string path;  // as given on the command line
+    std::string text;
+};
+
+class SourceSet {
+public:
+    int add(std::string path, std::string text) {
+        files_.push_back({std::move(path), std::move(text)});
+        return static_cast<int>(files_.size()) - 1;
+    }
+    const SourceFile& file(int index) const { return files_.at(static_cast<size_t>(index)); }
+    int size() const { return static_cast<int>(files_.size()); }
+
+private:
+    std::vector<SourceFile> files_;
+};
+
+enum class Severity { Error, Warning };
+
+struct CompileMessage {
+    Severity severity = Severity::Error;
+    ast::Loc loc;
+    std::string message;
+};
+
+class CompileLog {
+public:
+    // A cap so that a pathological file cannot flood stderr or memory.
+    static constexpr size_t kMaxMessages = 500;
+
+    void error(const ast::Loc& loc, std::string message) { add(Severity::Error, loc, std::move(message)); }
+    void warning(const ast::Loc& loc, std::string message) { add(Severity::Warning, loc, std::move(message)); }
+    bool hasErrors() const { return errors_ > 0; }
+    size_t errorCount() const { return errors_; }
+    const std::vector<CompileMessage>& messages() const { return messages_; }
+
+    // FILE:LINE:COL: error: MESSAGE, one per line, in the order reported.
+    void print(std::ostream& out, const SourceSet& sources) const {
+        for (const auto& m : messages_) {
+            const std::string& path = (m.loc.file >= 0 && m.loc.file < sources.size())
+                                          ? sources.file(m.loc.file).path
+                                          : std::string("<unknown>");
+            out << path << ':' << (m.loc.line > 0 ? m.loc.line : 1) << ':' << (m.loc.col > 0 ? m.loc.col : 1)
+                << ": " << (m.severity == Severity::Error ? "error" : "warning") << ": " << m.message << '\n';
+        }
+        if (dropped_ > 0) out << "note: " << dropped_ << " further messages suppressed\n";
+    }
+
+private:
+    void add(Severity s, const ast::Loc& loc, std::string message) {
+        if (s == Severity::Error) ++errors_;
+        if (messages_.size() >= kMaxMessages) { ++dropped_; return; }
+        messages_.push_back({s, loc, std::move(message)});
+    }
+    std::vector<CompileMessage> messages_;
+    size_t errors_ = 0;
+    size_t dropped_ = 0;
+};
+
+}  // namespace strun

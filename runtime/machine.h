@@ -1,0 +1,89 @@
+// The state shared between the interpreter and the task runtime while a
+// project runs. The interpreter touches it at every statement boundary
+// (Machine::tick), so the hot part is two integers and one comparison; all
+// decisions (preemption, watchdog, fault handling, stop) happen behind
+// AttentionHandler::onAttention(), which the scheduler implements.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace strun::rt {
+
+// PLC time: nanoseconds since the PLC went to RUN (virtual or real clock).
+using PlcTime = int64_t;
+constexpr PlcTime kNever = std::numeric_limits<PlcTime>::max();
+
+// Every code that can appear in the diagnostic buffer. Documented in
+// docs/diagnostics.md; names (diagCodeName) are the `code` strings of --dump.
+enum class DiagCode {
+    DivByZero,     // DIV_BY_ZERO: integer / or MOD by zero; divisor 1 used
+    ArrayBounds,   // ARRAY_BOUNDS: subscript outside the declared range
+    CallDepth,     // CALL_DEPTH: call nesting deeper than 16
+    Watchdog,      // WATCHDOG: task execution exceeded its watchdog
+    Overrun,       // OVERRUN: cyclic task released while still busy; activation dropped
+    NullPointer,   // NULL_POINTER: dereference of a null POINTER/REFERENCE
+    TaskError,     // TASK_ERROR: other runtime failure of a task (message says which)
+};
+const char* diagCodeName(DiagCode code);
+
+// The process image of direct addresses (%I, %Q, %M). CODESYS addressing:
+// %IX3.2 = bit 2 of byte 3, %IB3 = byte 3, %IW3 = bytes 6..7, %ID3 = bytes
+// 12..15, %IL3 = bytes 24..31 (the index counts units of the access size).
+struct ProcessImage {
+    static constexpr size_t kSize = 65536;  // bytes per area
+    std::vector<uint8_t> inputs = std::vector<uint8_t>(kSize);   // %I as the program sees it
+    std::vector<uint8_t> outputs = std::vector<uint8_t>(kSize);  // %Q as the program writes it
+    std::vector<uint8_t> memory = std::vector<uint8_t>(kSize);   // %M
+    std::vector<uint8_t> physicalInputs = std::vector<uint8_t>(kSize);   // what the "field" presents
+    std::vector<uint8_t> physicalOutputs = std::vector<uint8_t>(kSize);  // what the field last received
+};
+
+// Implemented by the scheduler.
+class AttentionHandler {
+public:
+    virtual ~AttentionHandler() = default;
+    // Called by the interpreter when Machine::now >= Machine::deadline at a
+    // statement boundary. May run higher-priority tasks nested (preemption)
+    // before returning. Returns true when the current activation must be
+    // aborted (watchdog, STOP): the interpreter then unwinds to the task body.
+    virtual bool onAttention() = 0;
+    // A runtime fault detected by the interpreter in the running task.
+    // Records it in the diagnostic buffer and decides what follows (nothing,
+    // release the program-error task, STOP); anything that must interrupt the
+    // running code makes the next tick call onAttention().
+    virtual void onFault(DiagCode code, std::string_view pou, int line, std::string message) = 0;
+    // Current PLC time in ns (virtual clock: Machine::now; real clock: read now).
+    virtual PlcTime currentTime() = 0;
+    // Calendar date-time now, as nanoseconds since 1970-01-01-00:00:00 (UTC),
+    // from --start on the virtual clock or the system clock on the real one.
+    virtual int64_t calendarNanos() = 0;
+};
+
+struct Machine {
+    // Virtual clock: advanced by stmtCost at every statement. Real clock:
+    // stmtCost is 0 and the scheduler refreshes `now` in onAttention.
+    PlcTime now = 0;
+    PlcTime stmtCost = 0;
+    // When now >= deadline the interpreter calls handler->onAttention(). The
+    // scheduler lowers it (from another thread on the real clock) to ask for
+    // attention at the next statement boundary.
+    std::atomic<PlcTime> deadline{kNever};
+    AttentionHandler* handler = nullptr;
+    ProcessImage image;
+
+    // At every statement boundary and loop back-edge. True: abort the activation.
+    inline bool tick() {
+        now += stmtCost;
+        if (__builtin_expect(now >= deadline.load(std::memory_order_relaxed), 0)) return handler->onAttention();
+        return false;
+    }
+    // Make the next tick call onAttention().
+    void requestAttention() { deadline.store(std::numeric_limits<PlcTime>::min(), std::memory_order_relaxed); }
+};
+
+}  // namespace strun::rt

@@ -1,0 +1,59 @@
+// What the checker hands the runtime about one configured task. The checker
+// resolves a CONFIGURATION's TASK declarations (or builds the default
+// MainTask) into these; the scheduler runs them.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "interpreter/ast/ast.h"
+#include "runtime/machine.h"
+
+namespace strun::rt {
+
+enum class TaskKind {
+    Cyclic,        // INTERVAL := t (t > 0)
+    Freewheeling,  // no trigger, or INTERVAL := T#0ms
+    Event,         // SINGLE := boolVar: once per rising edge
+    Status,        // STATUS := boolVar: repeatedly while TRUE
+    Startup,       // EVENT := STARTUP: once at STOP -> RUN, before every other task
+    ProgramError,  // EVENT := PROGRAM_ERROR: on an ARRAY_BOUNDS fault
+    ExecTimeout,   // EVENT := EXEC_TIMEOUT: on a watchdog trip
+    TimeEvent,     // AT := DT#..., REPEAT := ...
+};
+const char* taskKindName(TaskKind kind);  // "cyclic", "freewheeling", "event", "status", "startup", "program_error", "exec_timeout", "time_event"
+
+enum class TimeRepeat { Once, Hourly, Daily, Weekly, Monthly, MonthEnd, Yearly };
+
+// A BOOL in storage the scheduler samples (SINGLE / STATUS). bit < 0: the
+// whole byte is the BOOL (0 / 1); else bit `bit` of the byte (AT %IX...).
+struct BoolRef {
+    const uint8_t* byte = nullptr;
+    int bit = -1;
+    bool read() const { return bit < 0 ? (*byte != 0) : ((*byte >> bit) & 1) != 0; }
+};
+
+struct TaskSpec {
+    std::string name;
+    ast::Loc loc;
+    TaskKind kind = TaskKind::Freewheeling;
+    int priority = 30;
+    PlcTime interval = 0;   // Cyclic: period in ns
+    PlcTime watchdog = 0;   // 0 = no watchdog
+    BoolRef trigger;        // Event / Status
+    int64_t atCalendarNanos = 0;  // TimeEvent: first occurrence, ns since 1970-01-01 (UTC, no zone)
+    TimeRepeat repeat = TimeRepeat::Once;
+};
+
+// The code a task runs: all programs (and FB instances) bound to it, in order.
+class TaskBody {
+public:
+    virtual ~TaskBody() = default;
+    // Runs one activation. Returns false when the activation was aborted
+    // (a tick returned true), true when it completed.
+    virtual bool runActivation() = 0;
+};
+
+}  // namespace strun::rt

@@ -1,0 +1,2 @@
+// placeholder until the conformance runner lands
+int main() { return 0; }
