@@ -41,6 +41,12 @@ struct ProcessImage {
     std::vector<uint8_t> memory = std::vector<uint8_t>(kSize);   // %M
     std::vector<uint8_t> physicalInputs = std::vector<uint8_t>(kSize);   // what the "field" presents
     std::vector<uint8_t> physicalOutputs = std::vector<uint8_t>(kSize);  // what the field last received
+    // Bytes of %I / %Q the project addresses at all. The scheduler copies
+    // that many at every task start (inputs) and end (outputs), so the
+    // checker should lower them to the highest byte any direct address
+    // reaches + 1; kSize is always correct, only slower (64 KiB per copy).
+    size_t inputExtent = kSize;
+    size_t outputExtent = kSize;
 };
 
 // Implemented by the scheduler.

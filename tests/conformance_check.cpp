@@ -1,2 +1,508 @@
-// placeholder until the conformance runner lands
-int main() { return 0; }
+// conformance_check: runs one conformance program through the strun CLI and
+// compares the outcome with its expectation files (format: tests/conformance/README.md).
+//
+//   conformance_check <strun-binary> <file.st>   exit 0 = pass, 1 = fail, 2 = bad usage/test
+//   conformance_check --self-test                checks the comparison logic itself
+//
+// strun is started with fork/exec (no shell, so no quoting problems); its stdout
+// and stderr go to temporary files, so a chatty child can never block on a pipe.
+// A run longer than 30 s is killed and reported as a timeout.
+#include <nlohmann/json.hpp>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+using nlohmann::json;
+
+constexpr int kTimeoutSeconds = 30;
+constexpr double kRelativeTolerance = 1e-6;
+
+// ---------------------------------------------------------------- directives
+
+struct Directives {
+    std::vector<std::string> args{"run", "--virtual", "--cycles", "1", "--dump"};
+    std::optional<int> exit;  // unset: 0, or 1 when a .err expectation exists
+};
+
+std::string trim(const std::string& s) {
+    const auto first = s.find_first_not_of(" \t\r\n");
+    if (first == std::string::npos) return "";
+    const auto last = s.find_last_not_of(" \t\r\n");
+    return s.substr(first, last - first + 1);
+}
+
+std::vector<std::string> splitWords(const std::string& s) {
+    std::istringstream in(s);
+    std::vector<std::string> words;
+    for (std::string w; in >> w;) words.push_back(w);
+    return words;
+}
+
+// The directive block is the file's first comment, when it starts with `strun-test`:
+//   (* strun-test
+//      args: run --virtual --cycles 3
+//      exit: 0
+//   *)
+// Returns an error message for a malformed block.
+std::optional<std::string> parseDirectives(const std::string& source, Directives& out) {
+    const auto start = source.find_first_not_of(" \t\r\n");
+    if (start == std::string::npos || source.compare(start, 2, "(*") != 0) return std::nullopt;
+    const auto end = source.find("*)", start + 2);
+    if (end == std::string::npos) return std::nullopt;  // unterminated: the compiler's problem
+    std::istringstream body(source.substr(start + 2, end - start - 2));
+    std::string line;
+    bool first = true;
+    while (std::getline(body, line)) {
+        line = trim(line);
+        if (first) {
+            if (line.empty()) continue;
+            first = false;
+            if (line != "strun-test") return std::nullopt;  // an ordinary comment
+            continue;
+        }
+        if (line.empty()) continue;
+        const auto colon = line.find(':');
+        if (colon == std::string::npos) return "directive line without ':': " + line;
+        const std::string key = trim(line.substr(0, colon));
+        const std::string value = trim(line.substr(colon + 1));
+        if (key == "args") {
+            out.args = splitWords(value);
+            if (out.args.empty()) return "empty 'args' directive";
+        } else if (key == "exit") {
+            char* rest = nullptr;
+            const long code = std::strtol(value.c_str(), &rest, 10);
+            if (value.empty() || *rest != '\0' || code < 0 || code > 255)
+                return "bad 'exit' directive: " + value;
+            out.exit = static_cast<int>(code);
+        } else {
+            return "unknown directive '" + key + "'";
+        }
+    }
+    return std::nullopt;
+}
+
+// ---------------------------------------------------------------- JSON subset match
+
+bool numbersMatch(const json& expected, const json& actual) {
+    const bool bothIntegers = expected.is_number_integer() && actual.is_number_integer();
+    if (bothIntegers) {
+        // Compare in the widest signed/unsigned form so ULINT and LINT extremes are exact.
+        if (expected.is_number_unsigned() && actual.is_number_unsigned())
+            return expected.get<std::uint64_t>() == actual.get<std::uint64_t>();
+        if (expected.is_number_unsigned() || actual.is_number_unsigned()) {
+            const json& u = expected.is_number_unsigned() ? expected : actual;
+            const json& s = expected.is_number_unsigned() ? actual : expected;
+            const auto sv = s.get<std::int64_t>();
+            return sv >= 0 && static_cast<std::uint64_t>(sv) == u.get<std::uint64_t>();
+        }
+        return expected.get<std::int64_t>() == actual.get<std::int64_t>();
+    }
+    const double e = expected.get<double>();
+    const double a = actual.get<double>();
+    if (e == a) return true;
+    // An integral expectation must be met exactly, unless the actual value is a float
+    // (REAL results like 3.0000001 against an expectation of 3).
+    if (expected.is_number_integer() && actual.is_number_integer()) return false;
+    return std::fabs(e - a) <= kRelativeTolerance * std::max(std::fabs(e), std::fabs(a));
+}
+
+std::string kindName(const json& v) {
+    if (v.is_null()) return "null";
+    if (v.is_boolean()) return "boolean";
+    if (v.is_number()) return "number";
+    if (v.is_string()) return "string";
+    if (v.is_array()) return "array";
+    return "object";
+}
+
+// Appends one line per mismatch; `path` is the JSON path of `expected`.
+void matchSubset(const json& expected, const json& actual, const std::string& path,
+                 std::vector<std::string>& mismatches) {
+    auto mismatch = [&](const std::string& why) {
+        mismatches.push_back((path.empty() ? std::string("<root>") : path) + ": " + why);
+    };
+    if (expected.is_object()) {
+        if (!actual.is_object()) {
+            mismatch("expected an object, got " + kindName(actual) + " " + actual.dump());
+            return;
+        }
+        for (const auto& [key, value] : expected.items()) {
+            const std::string child = path.empty() ? key : path + "." + key;
+            const auto it = actual.find(key);
+            if (it == actual.end()) {
+                std::string present;
+                for (const auto& [k, v] : actual.items()) present += (present.empty() ? "" : ", ") + k;
+                mismatches.push_back(child + ": missing (expected " + value.dump() + "); present keys: [" +
+                                     present + "]");
+                continue;
+            }
+            matchSubset(value, *it, child, mismatches);
+        }
+        return;
+    }
+    if (expected.is_array()) {
+        if (!actual.is_array()) {
+            mismatch("expected an array, got " + kindName(actual) + " " + actual.dump());
+            return;
+        }
+        if (expected.size() != actual.size()) {
+            mismatch("array length " + std::to_string(actual.size()) + ", expected " +
+                     std::to_string(expected.size()) + "; actual " + actual.dump());
+            return;
+        }
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            matchSubset(expected[i], actual[i], path + "[" + std::to_string(i) + "]", mismatches);
+        return;
+    }
+    bool same = false;
+    if (expected.is_number() && actual.is_number()) {
+        same = numbersMatch(expected, actual);
+    } else if (expected.type() == actual.type()) {
+        same = expected == actual;
+    }
+    if (!same) mismatch("expected " + expected.dump() + ", actual " + actual.dump());
+}
+
+// A pattern line of a .err file must occur in one stderr line.
+std::vector<std::string> missingPatterns(const std::string& patternsText, const std::string& stderrText) {
+    std::vector<std::string> stderrLines;
+    {
+        std::istringstream in(stderrText);
+        for (std::string l; std::getline(in, l);) stderrLines.push_back(l);
+    }
+    std::vector<std::string> missing;
+    std::istringstream in(patternsText);
+    for (std::string pattern; std::getline(in, pattern);) {
+        if (!pattern.empty() && pattern.back() == '\r') pattern.pop_back();
+        if (trim(pattern).empty()) continue;
+        bool found = false;
+        for (const auto& l : stderrLines)
+            if (l.find(pattern) != std::string::npos) { found = true; break; }
+        if (!found) missing.push_back(pattern);
+    }
+    return missing;
+}
+
+// ---------------------------------------------------------------- running strun
+
+struct RunResult {
+    bool started = false;
+    bool timedOut = false;
+    int exitCode = -1;  // valid when signal == 0
+    int signal = 0;
+    std::string out, err;
+    std::string startError;
+};
+
+std::optional<std::string> readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return std::nullopt;
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string readFd(int fd) {
+    std::string text;
+    lseek(fd, 0, SEEK_SET);
+    char buf[65536];
+    for (ssize_t n; (n = read(fd, buf, sizeof buf)) > 0;) text.append(buf, static_cast<std::size_t>(n));
+    return text;
+}
+
+int makeTempFile(const char* tag) {
+    std::string pattern = std::string(std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "/tmp") +
+                          "/conformance_" + tag + "_XXXXXX";
+    std::vector<char> name(pattern.begin(), pattern.end());
+    name.push_back('\0');
+    const int fd = mkstemp(name.data());
+    if (fd >= 0) unlink(name.data());  // lives as long as the descriptor
+    return fd;
+}
+
+RunResult runProgram(const std::vector<std::string>& argv) {
+    RunResult result;
+    const int outFd = makeTempFile("out");
+    const int errFd = makeTempFile("err");
+    if (outFd < 0 || errFd < 0) {
+        result.startError = std::string("cannot create temp files: ") + std::strerror(errno);
+        return result;
+    }
+    std::vector<char*> cargv;
+    for (const auto& a : argv) cargv.push_back(const_cast<char*>(a.c_str()));
+    cargv.push_back(nullptr);
+
+    const pid_t pid = fork();
+    if (pid < 0) {
+        result.startError = std::string("fork failed: ") + std::strerror(errno);
+        return result;
+    }
+    if (pid == 0) {
+        setpgid(0, 0);  // own process group, so a timeout kills strun's children too
+        const int devNull = open("/dev/null", O_RDONLY);
+        if (devNull >= 0) dup2(devNull, STDIN_FILENO);
+        dup2(outFd, STDOUT_FILENO);
+        dup2(errFd, STDERR_FILENO);
+        execv(cargv[0], cargv.data());
+        const std::string msg = std::string("exec ") + argv[0] + " failed: " + std::strerror(errno) + "\n";
+        (void)!write(STDERR_FILENO, msg.data(), msg.size());
+        _exit(127);
+    }
+    setpgid(pid, pid);
+    result.started = true;
+
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(kTimeoutSeconds);
+    int status = 0;
+    for (;;) {
+        const pid_t done = waitpid(pid, &status, WNOHANG);
+        if (done == pid) break;
+        if (done < 0 && errno != EINTR) break;
+        if (std::chrono::steady_clock::now() >= deadline) {
+            result.timedOut = true;
+            kill(-pid, SIGKILL);
+            kill(pid, SIGKILL);
+            waitpid(pid, &status, 0);
+            break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    if (WIFEXITED(status)) result.exitCode = WEXITSTATUS(status);
+    if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
+    result.out = readFd(outFd);
+    result.err = readFd(errFd);
+    close(outFd);
+    close(errFd);
+    return result;
+}
+
+std::string joinCommand(const std::vector<std::string>& argv) {
+    std::string s;
+    for (const auto& a : argv) {
+        if (!s.empty()) s += ' ';
+        const bool plain = !a.empty() && a.find_first_of(" \t'\"\\$*?#()") == std::string::npos;
+        if (plain) {
+            s += a;
+        } else {
+            s += '\'';
+            for (char c : a) s += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+            s += '\'';
+        }
+    }
+    return s;
+}
+
+// ---------------------------------------------------------------- one test
+
+std::string withoutExtension(const std::string& path) {
+    const auto slash = path.find_last_of('/');
+    const auto dot = path.find_last_of('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return path;
+    return path.substr(0, dot);
+}
+
+std::string clip(const std::string& text, std::size_t limit = 20000) {
+    if (text.size() <= limit) return text;
+    return text.substr(0, limit) + "\n... (" + std::to_string(text.size() - limit) + " more bytes)";
+}
+
+int checkOne(const std::string& strun, const std::string& programPath) {
+    const auto source = readFile(programPath);
+    if (!source) {
+        std::cerr << "conformance_check: cannot read " << programPath << "\n";
+        return 2;
+    }
+    Directives directives;
+    if (auto error = parseDirectives(*source, directives)) {
+        std::cerr << "conformance_check: " << programPath << ": " << *error << "\n";
+        return 2;
+    }
+    const std::string base = withoutExtension(programPath);
+    const auto expectedJsonText = readFile(base + ".json");
+    const auto expectedErr = readFile(base + ".err");
+    if (expectedJsonText && expectedErr) {
+        std::cerr << "conformance_check: " << programPath << " has both a .json and a .err expectation\n";
+        return 2;
+    }
+    std::optional<json> expectedJson;
+    if (expectedJsonText) {
+        try {
+            expectedJson = json::parse(*expectedJsonText);
+        } catch (const json::exception& e) {
+            std::cerr << "conformance_check: " << base << ".json is not valid JSON: " << e.what() << "\n";
+            return 2;
+        }
+    }
+    const int expectedExit = directives.exit.value_or(expectedErr ? 1 : 0);
+
+    std::vector<std::string> argv{strun};
+    argv.insert(argv.end(), directives.args.begin(), directives.args.end());
+    bool hasDump = false;
+    for (const auto& a : directives.args) hasDump = hasDump || a == "--dump";
+    if (directives.args.front() == "run" && !hasDump) argv.push_back("--dump");
+    argv.push_back(programPath);
+
+    const RunResult run = runProgram(argv);
+    std::vector<std::string> failures;
+    if (!run.started) {
+        failures.push_back(run.startError);
+    } else if (run.timedOut) {
+        failures.push_back("timed out after " + std::to_string(kTimeoutSeconds) + " s (killed)");
+    } else if (run.signal != 0) {
+        failures.push_back("strun was killed by signal " + std::to_string(run.signal) + " (" +
+                           strsignal(run.signal) + ")");
+    } else if (run.exitCode != expectedExit) {
+        failures.push_back("exit status " + std::to_string(run.exitCode) + ", expected " +
+                           std::to_string(expectedExit));
+    }
+    const bool ranToEnd = run.started && !run.timedOut && run.signal == 0;
+
+    if (ranToEnd && expectedJson) {
+        json actual;
+        bool parsed = true;
+        try {
+            actual = json::parse(run.out);
+        } catch (const json::exception& e) {
+            parsed = false;
+            failures.push_back(std::string("stdout is not one JSON document: ") + e.what());
+        }
+        if (parsed) {
+            std::vector<std::string> mismatches;
+            matchSubset(*expectedJson, actual, "", mismatches);
+            for (const auto& m : mismatches) failures.push_back("dump mismatch at " + m);
+        }
+    }
+    if (ranToEnd && expectedErr) {
+        if (!run.out.empty()) failures.push_back("stdout must be empty for a program that does not compile");
+        for (const auto& p : missingPatterns(*expectedErr, run.err))
+            failures.push_back("no stderr line contains the pattern \"" + p + "\"");
+    }
+
+    if (failures.empty()) return 0;
+    std::cout << "FAIL " << programPath << "\n";
+    std::cout << "command: " << joinCommand(argv) << "\n";
+    for (const auto& f : failures) std::cout << "  - " << f << "\n";
+    std::cout << "---- stderr (" << run.err.size() << " bytes)\n" << clip(run.err);
+    if (!run.err.empty() && run.err.back() != '\n') std::cout << "\n";
+    std::cout << "---- stdout (" << run.out.size() << " bytes)\n" << clip(run.out);
+    if (!run.out.empty() && run.out.back() != '\n') std::cout << "\n";
+    std::cout << "----\n";
+    return 1;
+}
+
+// ---------------------------------------------------------------- self-test
+
+int selfTest() {
+    int failed = 0;
+    auto expect = [&](bool ok, const std::string& what) {
+        if (!ok) {
+            ++failed;
+            std::cout << "self-test FAILED: " << what << "\n";
+        }
+    };
+    auto countMismatches = [](const char* e, const char* a) {
+        std::vector<std::string> m;
+        matchSubset(json::parse(e), json::parse(a), "", m);
+        return m;
+    };
+    const char* actual = R"({"state":"RUN","time":"T#3us",
+        "programs":{"Main":{"i":7,"r":0.1000000014901161,"s":"ab","b":true,
+                            "a":[1,2,{"x":1,"y":2}],"m":[[1,2],[3,4]],"big":18446744073709551615,
+                            "neg":-9223372036854775808,"f":"inf"}},
+        "diagnostics":[]})";
+
+    expect(countMismatches(R"({"state":"RUN"})", actual).empty(), "subset of top-level keys");
+    expect(countMismatches(R"({"programs":{"Main":{"i":7}}})", actual).empty(), "nested subset");
+    expect(countMismatches(R"({"programs":{"Main":{"r":0.1}}})", actual).empty(), "REAL within 1e-6");
+    expect(countMismatches(R"({"programs":{"Main":{"r":0.1001}}})", actual).size() == 1, "REAL outside 1e-6");
+    expect(countMismatches(R"({"programs":{"Main":{"i":7.0}}})", actual).empty(), "7.0 equals 7");
+    expect(countMismatches(R"({"programs":{"Main":{"i":8}}})", actual).size() == 1, "integer differs");
+    expect(countMismatches(R"({"programs":{"Main":{"i":"7"}}})", actual).size() == 1, "string vs number");
+    expect(countMismatches(R"({"programs":{"Main":{"b":1}}})", actual).size() == 1, "number vs boolean");
+    expect(countMismatches(R"({"programs":{"Main":{"s":"ab"}}})", actual).empty(), "string equal");
+    expect(countMismatches(R"({"programs":{"Main":{"s":"aB"}}})", actual).size() == 1, "string case matters");
+    expect(countMismatches(R"({"programs":{"Main":{"a":[1,2,{"x":1}]}}})", actual).empty(),
+           "object subset inside array");
+    expect(countMismatches(R"({"programs":{"Main":{"a":[1,2]}}})", actual).size() == 1, "array length differs");
+    expect(countMismatches(R"({"programs":{"Main":{"m":[[1,2],[3,5]]}}})", actual).size() == 1,
+           "nested array element differs");
+    expect(countMismatches(R"({"programs":{"Main":{"zz":1}}})", actual).size() == 1, "missing key");
+    expect(countMismatches(R"({"programs":{"Other":{}}})", actual).size() == 1, "missing program");
+    expect(countMismatches(R"({"programs":{"Main":{"big":18446744073709551615}}})", actual).empty(),
+           "ULINT max exact");
+    expect(countMismatches(R"({"programs":{"Main":{"big":18446744073709551614}}})", actual).size() == 1,
+           "ULINT max - 1 differs");
+    expect(countMismatches(R"({"programs":{"Main":{"neg":-9223372036854775808}}})", actual).empty(),
+           "LINT min exact");
+    expect(countMismatches(R"({"programs":{"Main":{"f":"inf"}}})", actual).empty(), "inf string");
+    expect(countMismatches(R"({"diagnostics":[]})", actual).empty(), "empty array");
+    expect(countMismatches(R"({"diagnostics":[{"code":"DIV_BY_ZERO"}]})", actual).size() == 1,
+           "diagnostic expected but none");
+    {
+        auto m = countMismatches(R"({"programs":{"Main":{"a":[1,2,{"y":3}]}}})", actual);
+        expect(m.size() == 1 && m[0].rfind("programs.Main.a[2].y:", 0) == 0, "mismatch path names the element");
+    }
+    expect(numbersMatch(json(1e30), json(1.0000001e30)), "large REAL relative");
+    expect(!numbersMatch(json(1), json(2)), "1 vs 2");
+    expect(numbersMatch(json(-3), json(-3.0000001)), "integral expectation vs float actual");
+    expect(!numbersMatch(json(0.0), json(1e-9)), "zero expectation is exact");
+
+    const std::string err = "/abs/x.st:4:5: error: undeclared variable 'q'\n/abs/x.st:9:1: warning: w\n";
+    expect(missingPatterns(":4:5: error:\nundeclared\n", err).empty(), "patterns found");
+    expect(missingPatterns(":4:6: error:\n", err).size() == 1, "wrong column reported missing");
+    expect(missingPatterns(":4:5: error: undeclared variable 'q'\n\n", err).empty(), "blank lines ignored");
+    expect(missingPatterns(":9:1: error:", err).size() == 1, "warning is not an error");
+
+    {
+        Directives d;
+        expect(!parseDirectives("(* strun-test\n   args: run --virtual --cycles 3\n   exit: 3\n*)\nPROGRAM P END_PROGRAM",
+                                d) && d.args.size() == 4 && d.args[3] == "3" && d.exit == 3,
+               "directive block parsed");
+        Directives plain;
+        expect(!parseDirectives("(* just a comment *)\nPROGRAM P END_PROGRAM", plain) && plain.args.size() == 5 &&
+                   !plain.exit,
+               "ordinary comment ignored");
+        Directives bad;
+        expect(parseDirectives("(* strun-test\n colour: red\n*)", bad).has_value(), "unknown directive rejected");
+        Directives badExit;
+        expect(parseDirectives("(* strun-test\n exit: x\n*)", badExit).has_value(), "bad exit rejected");
+    }
+    {
+        const RunResult r = runProgram({"/bin/sh", "-c", "echo out; echo err >&2; exit 3"});
+        expect(r.exitCode == 3 && r.out == "out\n" && r.err == "err\n", "runProgram captures streams and status");
+        const RunResult missing = runProgram({"/nonexistent/strun"});
+        expect(missing.exitCode == 127 && missing.err.find("exec") != std::string::npos,
+               "missing binary reported");
+    }
+    std::cout << (failed == 0 ? "self-test passed\n" : "self-test failed\n");
+    return failed == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc == 2 && std::string(argv[1]) == "--self-test") return selfTest();
+    if (argc != 3) {
+        std::cerr << "usage: conformance_check <strun-binary> <file.st>\n"
+                     "       conformance_check --self-test\n";
+        return 2;
+    }
+    return checkOne(argv[1], argv[2]);
+}

@@ -173,6 +173,10 @@ struct VarDecl {
     TypeSpecPtr type;
     InitPtr init;
     std::vector<Pragma> pragmas;
+    // VAR_ACCESS only: `name : path : TYPE READ_ONLY;` — the path text as
+    // written (e.g. "prog.var") and whether the access is READ_ONLY.
+    std::string accessPath;
+    bool readOnly = false;
 };
 
 enum class VarSection {

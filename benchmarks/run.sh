@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# Runs every benchmark workload on strun and on Lua 5.4 and prints, per
+# workload, the best wall-clock time of each side and the ratio strun/Lua.
+# Fails (exit 1) when a run fails or the two checksums differ.
+#
+# usage: benchmarks/run.sh [path-to-strun] [workload...]
+#   path-to-strun  default build/strun
+#   workload       names from benchmarks/workloads (default: all, in the order below)
+# environment: BENCH_REPEATS (default 3) runs per side, best one counts;
+#              LUA (default lua5.4) the Lua interpreter.
+set -u
+
+bench_dir=$(cd "$(dirname "$0")" && pwd)
+workload_dir="$bench_dir/workloads"
+strun=${1:-build/strun}
+shift $(( $# > 0 ? 1 : 0 ))
+repeats=${BENCH_REPEATS:-3}
+lua=${LUA:-lua5.4}
+
+default_workloads=(int_loops real_math sort sieve fb_calls strings state_machine)
+if (( $# > 0 )); then workloads=("$@"); else workloads=("${default_workloads[@]}"); fi
+
+if [[ ! -x "$strun" ]]; then
+    echo "run.sh: strun not found or not executable at '$strun' (build it with 'make build')" >&2
+    exit 2
+fi
+if ! command -v "$lua" >/dev/null 2>&1; then
+    echo "run.sh: Lua interpreter '$lua' not found (install the Debian package lua5.4)" >&2
+    exit 2
+fi
+if ! [[ "$repeats" =~ ^[1-9][0-9]*$ ]]; then
+    echo "run.sh: BENCH_REPEATS must be a positive integer, got '$repeats'" >&2
+    exit 2
+fi
+for name in "${workloads[@]}"; do
+    for ext in st lua; do
+        if [[ ! -f "$workload_dir/$name.$ext" ]]; then
+            echo "run.sh: no workload file $workload_dir/$name.$ext" >&2
+            exit 2
+        fi
+    done
+done
+
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+
+# best_time OUT ERR CMD...: runs CMD $repeats times, stdout to OUT and stderr
+# to ERR (of the last run); sets best_ns to the fastest run in ns, run_rc to
+# the first non-zero exit status (0 if every run succeeded).
+best_time() {
+    local out=$1 err=$2
+    shift 2
+    best_ns=""
+    run_rc=0
+    local r start end ns rc
+    for (( r = 0; r < repeats; r++ )); do
+        start=$(date +%s%N)
+        "$@" >"$out" 2>"$err"
+        rc=$?
+        end=$(date +%s%N)
+        if (( rc != 0 )); then
+            run_rc=$rc
+            return
+        fi
+        ns=$(( end - start ))
+        if [[ -z "$best_ns" ]] || (( ns < best_ns )); then best_ns=$ns; fi
+    done
+}
+
+seconds() { awk -v ns="$1" 'BEGIN { printf "%.3f", ns / 1e9 }'; }
+
+echo "strun: $strun   lua: $($lua -v 2>&1 | head -n1 | cut -d" " -f1-2)   best of $repeats runs each"
+row_format="%-14s %9s %9s %13s  %s\n"
+printf "$row_format" "workload" "strun s" "lua s" "strun/lua" "checksum"
+printf "$row_format" "--------" "-------" "-----" "---------" "--------"
+
+failed=0
+for name in "${workloads[@]}"; do
+    st_file="$workload_dir/$name.st"
+    lua_file="$workload_dir/$name.lua"
+
+    best_time "$scratch/strun.json" "$scratch/strun.err" \
+        "$strun" run --virtual --stmt-cost 0ns --cycles 1 --task Main --dump "$st_file"
+    strun_ns=$best_ns strun_rc=$run_rc
+    best_time "$scratch/lua.out" "$scratch/lua.err" "$lua" "$lua_file"
+    lua_ns=$best_ns lua_rc=$run_rc
+
+    if (( strun_rc != 0 || lua_rc != 0 )); then
+        failed=1
+        strun_col=$( (( strun_rc == 0 )) && seconds "$strun_ns" || echo "exit $strun_rc")
+        lua_col=$( (( lua_rc == 0 )) && seconds "$lua_ns" || echo "exit $lua_rc")
+        printf "$row_format" "$name" "$strun_col" "$lua_col" "-" "FAILED"
+        (( strun_rc != 0 )) && sed -n '1,5s/^/    strun: /p' "$scratch/strun.err"
+        (( lua_rc != 0 )) && sed -n '1,5s/^/    lua: /p' "$scratch/lua.err"
+        continue
+    fi
+
+    ratio=$(awk -v s="$strun_ns" -v l="$lua_ns" 'BEGIN { printf "%.2f", s / l }')
+    if values=$("$lua" "$bench_dir/same_checksum.lua" "$scratch/strun.json" "$scratch/lua.out"); then
+        verdict="ok (${values% *})"
+    else
+        failed=1
+        verdict="DIFFERS: strun ${values% *}, lua ${values#* }"
+    fi
+    printf "$row_format" "$name" "$(seconds "$strun_ns")" "$(seconds "$lua_ns")" "$ratio" "$verdict"
+done
+
+if (( failed )); then
+    echo "run.sh: at least one workload failed or disagreed with Lua" >&2
+    exit 1
+fi

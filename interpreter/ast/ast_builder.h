@@ -1,0 +1,89 @@
+// Parse tree (generated from grammar/STParser.g4) -> AST (ast.h).
+// Walks the typed contexts of the generated parser; every node gets the
+// location of its first character. Robust against the partial trees ANTLR
+// leaves behind after a syntax error (any child may be missing): it then
+// builds what it can, the error has already been reported.
+//
+// Also the place for checks the grammar keeps permissive on purpose so that
+// the message can be specific: `x S= 1` with an operator other than S/R/REF,
+// an expression used as a statement, a body in an interface method, ...
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grammar/STParser.h"
+#include "interpreter/ast/ast.h"
+#include "interpreter/ast/syntax_errors.h"
+#include "interpreter/source/source_set.h"
+
+namespace strun::ast {
+
+// Deepest expression tree the builder produces (left-deep chains such as
+// `a + b + c ...` are parsed iteratively, so this is where they are capped).
+inline constexpr int kMaxExpressionDepth = 2000;
+
+class AstBuilder {
+public:
+    using P = strun_grammar::STParser;
+
+    // `tokens`: the stream the tree was parsed from (pragmas are read from
+    // its PRAGMAS channel). Errors go through `errors`, which keeps one
+    // message per line, so a statement the parser already complained about
+    // gets no second message from the builder.
+    AstBuilder(antlr4::BufferedTokenStream& tokens, SyntaxErrorReporter& errors, int fileIndex)
+        : tokens_(tokens), errors_(errors), file_(fileIndex) {}
+
+    CompilationUnit build(P::CompilationUnitContext* tree);
+
+private:
+    // ---- declarations (ast_builder.cpp)
+    void topLevelItem(P::TopLevelItemContext* c, const std::string& nameSpace, CompilationUnit& unit);
+    std::unique_ptr<Pou> pou(P::PouDeclContext* c, const std::string& nameSpace);
+    std::unique_ptr<Pou> method(P::MethodDeclContext* c, const std::string& nameSpace, bool inInterface);
+    Property property(P::PropertyDeclContext* c, const std::string& nameSpace, bool inInterface);
+    void member(P::MemberDeclContext* c, Pou& owner, bool inInterface);
+    void typeDecl(P::TypeDeclContext* c, const std::string& nameSpace, CompilationUnit& unit);
+    Configuration configuration(P::ConfigurationContext* c);
+    Resource resource(P::ResourceContext* c);
+    TaskDecl task(P::TaskDeclContext* c);
+    ProgramConfig programConfig(P::ProgramConfigContext* c);
+    void modifiers(const std::vector<P::ModifierContext*>& mods, Access& access, bool& isAbstract, bool& isFinal);
+
+    // ---- variables, types, initial values (ast_builder_types.cpp)
+    VarBlock varBlock(P::VarBlockContext* c);
+    VarDecl varDecl(P::VarDeclContext* c, VarSection section);
+    TypeSpecPtr typeSpec(P::TypeSpecContext* c);
+    TypeSpecPtr namedType(P::QualifiedNameContext* c);
+    EnumValue enumValue(P::EnumValueContext* c);
+    InitPtr initializer(P::InitializerContext* c);
+
+    // ---- statements (ast_builder_stmt.cpp)
+    void stmtList(P::StmtListContext* c, StmtList& out);
+    StmtPtr stmt(P::StatementContext* c);
+    StmtPtr exprStmt(P::ExprStmtContext* c);
+
+    // ---- expressions (ast_builder_expr.cpp)
+    ExprPtr expr(P::ExpressionContext* c);
+    ExprPtr postfix(P::PostfixExprContext* c);
+    ExprPtr primary(P::PrimaryContext* c);
+    ExprPtr literal(P::LiteralContext* c);
+    std::vector<Arg> args(P::ArgListContext* c);
+    ExprPtr placeholder(const Loc& at);  // stands in for what a syntax error left out
+
+    // ---- helpers
+    Loc loc(const antlr4::Token* token) const;
+    Loc loc(antlr4::ParserRuleContext* c) const;
+    static std::string text(antlr4::tree::ParseTree* node);  // "" for a missing node
+    static std::string sourceText(antlr4::ParserRuleContext* c);  // as written, shortened for messages
+    std::vector<Pragma> pragmasBefore(const antlr4::Token* token);
+    void error(const Loc& at, const std::string& message);
+
+    antlr4::BufferedTokenStream& tokens_;
+    SyntaxErrorReporter& errors_;
+    int file_;
+    int exprDepth_ = 0;
+    bool depthReported_ = false;
+};
+
+}  // namespace strun::ast

@@ -1,0 +1,155 @@
+// AstBuilder: statements.
+#include "interpreter/ast/ast_builder.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "grammar/STLexer.h"
+
+namespace strun::ast {
+
+using L = strun_grammar::STLexer;
+
+namespace {
+
+std::string upper(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char ch) { return std::toupper(ch); });
+    return s;
+}
+
+StmtPtr makeStmt(StmtKind kind, const Loc& at) {
+    auto s = std::make_unique<Stmt>();
+    s->kind = kind;
+    s->loc = at;
+    return s;
+}
+
+}  // namespace
+
+void AstBuilder::stmtList(P::StmtListContext* c, StmtList& out) {
+    if (c == nullptr) return;
+    for (auto* s : c->statement())
+        if (auto built = stmt(s)) out.push_back(std::move(built));
+}
+
+StmtPtr AstBuilder::stmt(P::StatementContext* c) {
+    const Loc at = loc(c);
+    if (auto* e = dynamic_cast<P::ExprStmtContext*>(c)) return exprStmt(e);
+
+    if (auto* l = dynamic_cast<P::LabelStmtContext*>(c)) {
+        auto s = makeStmt(StmtKind::Label, at);
+        s->name = text(l->identifier());
+        return s;
+    }
+    if (auto* i = dynamic_cast<P::IfStmtContext*>(c)) {
+        auto s = makeStmt(StmtKind::If, at);
+        auto conds = i->expression();
+        auto blocks = i->stmtList();
+        for (size_t k = 0; k < conds.size(); ++k) {
+            s->conds.push_back(expr(conds[k]));
+            s->blocks.emplace_back();
+            if (k < blocks.size()) stmtList(blocks[k], s->blocks.back());
+        }
+        if (i->ELSE() && blocks.size() > conds.size()) {
+            s->elseBlock.emplace();
+            stmtList(blocks.back(), *s->elseBlock);
+        }
+        return s;
+    }
+    if (auto* cs = dynamic_cast<P::CaseStmtContext*>(c)) {
+        auto s = makeStmt(StmtKind::Case, at);
+        s->expr = cs->expression() ? expr(cs->expression()) : placeholder(at);
+        for (auto* b : cs->caseBranch()) {
+            CaseBranch branch;
+            branch.loc = loc(b);
+            for (auto* label : b->caseLabel()) {
+                CaseLabel built;
+                built.lo = label->expression(0) ? expr(label->expression(0)) : placeholder(loc(label));
+                if (label->DOTDOT())
+                    built.hi = label->expression(1) ? expr(label->expression(1)) : placeholder(loc(label));
+                branch.labels.push_back(std::move(built));
+            }
+            if (b->caseBody())
+                for (auto* cst : b->caseBody()->caseStatement())
+                    if (auto built = stmt(cst->statement())) branch.body.push_back(std::move(built));
+            s->cases.push_back(std::move(branch));
+        }
+        if (cs->ELSE()) {
+            s->elseBlock.emplace();
+            stmtList(cs->stmtList(), *s->elseBlock);
+        }
+        return s;
+    }
+    if (auto* f = dynamic_cast<P::ForStmtContext*>(c)) {
+        auto s = makeStmt(StmtKind::For, at);
+        s->name = text(f->identifier());
+        s->from = f->expression(0) ? expr(f->expression(0)) : placeholder(at);
+        s->to = f->expression(1) ? expr(f->expression(1)) : placeholder(at);
+        if (f->BY()) s->by = f->expression(2) ? expr(f->expression(2)) : placeholder(at);
+        stmtList(f->stmtList(), s->body);
+        return s;
+    }
+    if (auto* w = dynamic_cast<P::WhileStmtContext*>(c)) {
+        auto s = makeStmt(StmtKind::While, at);
+        s->expr = w->expression() ? expr(w->expression()) : placeholder(at);
+        stmtList(w->stmtList(), s->body);
+        return s;
+    }
+    if (auto* r = dynamic_cast<P::RepeatStmtContext*>(c)) {
+        auto s = makeStmt(StmtKind::Repeat, at);
+        stmtList(r->stmtList(), s->body);
+        s->expr = r->expression() ? expr(r->expression()) : placeholder(at);
+        return s;
+    }
+    if (dynamic_cast<P::ExitStmtContext*>(c)) return makeStmt(StmtKind::Exit, at);
+    if (dynamic_cast<P::ContinueStmtContext*>(c)) return makeStmt(StmtKind::Continue, at);
+    if (dynamic_cast<P::ReturnStmtContext*>(c)) return makeStmt(StmtKind::Return, at);
+    if (auto* j = dynamic_cast<P::JmpStmtContext*>(c)) {
+        auto s = makeStmt(StmtKind::Jmp, at);
+        s->name = text(j->identifier());
+        return s;
+    }
+    if (dynamic_cast<P::EmptyStmtContext*>(c)) return makeStmt(StmtKind::Empty, at);
+    return nullptr;  // a statement the parser could not make sense of (already reported)
+}
+
+StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
+    const Loc at = loc(c);
+    auto operands = c->expression();
+    if (operands.empty()) return nullptr;
+    if (operands.size() == 1) {
+        ExprPtr e = expr(operands[0]);
+        if (c->ASSIGN() || c->TRY_ASSIGN() || c->EQ()) return nullptr;  // right side missing: reported
+        if (e->kind != ExprKind::Call) {
+            const bool comparison = e->kind == ExprKind::Binary && e->op == Op::Eq;
+            error(at, "'" + sourceText(operands[0]) + "' is not a statement: expected ':=' or a call with '(...)'" +
+                          (comparison ? " (for an assignment write ':=', not '=')" : ""));
+            return nullptr;
+        }
+        auto s = makeStmt(StmtKind::Call, at);
+        s->expr = std::move(e);
+        return s;
+    }
+
+    StmtKind kind = StmtKind::Assign;
+    if (c->TRY_ASSIGN()) {
+        kind = StmtKind::TryAssign;
+    } else if (c->identifier()) {
+        // `x S= y` lexes as x, S, =, y: the word before '=' names the operator.
+        const std::string op = upper(text(c->identifier()));
+        if (op == "S") kind = StmtKind::SetAssign;
+        else if (op == "R") kind = StmtKind::ResetAssign;
+        else if (op == "REF") kind = StmtKind::RefAssign;
+        else {
+            error(loc(c->identifier()), "unknown assignment operator '" + text(c->identifier()) +
+                                            "=', expected ':=', 'S=', 'R=', 'REF=' or '?='");
+            return nullptr;
+        }
+    }
+    auto s = makeStmt(kind, at);
+    s->target = expr(operands[0]);
+    s->expr = expr(operands[1]);
+    return s;
+}
+
+}  // namespace strun::ast

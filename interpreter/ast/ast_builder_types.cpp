@@ -1,0 +1,185 @@
+// AstBuilder: VAR blocks, variable declarations, type specifications and
+// initial values.
+#include "interpreter/ast/ast_builder.h"
+
+#include "grammar/STLexer.h"
+
+namespace strun::ast {
+
+using L = strun_grammar::STLexer;
+
+namespace {
+
+VarSection sectionOf(size_t tokenType) {
+    switch (tokenType) {
+        case L::VAR_INPUT: return VarSection::Input;
+        case L::VAR_OUTPUT: return VarSection::Output;
+        case L::VAR_IN_OUT: return VarSection::InOut;
+        case L::VAR_TEMP: return VarSection::Temp;
+        case L::VAR_STAT: return VarSection::Stat;
+        case L::VAR_INST: return VarSection::Inst;
+        case L::VAR_GLOBAL: return VarSection::Global;
+        case L::VAR_EXTERNAL: return VarSection::External;
+        case L::VAR_ACCESS: return VarSection::Access;
+        case L::VAR_CONFIG: return VarSection::Config;
+        default: return VarSection::Var;
+    }
+}
+
+}  // namespace
+
+VarBlock AstBuilder::varBlock(P::VarBlockContext* c) {
+    VarBlock out;
+    out.loc = loc(c);
+    if (c->varSection()) out.section = sectionOf(c->varSection()->getStart()->getType());
+    for (auto* q : c->varQualifier()) {
+        switch (q->getStart()->getType()) {
+            case L::CONSTANT: out.constant = true; break;
+            case L::RETAIN: out.retain = true; break;
+            case L::NON_RETAIN: out.nonRetain = true; break;
+            case L::PERSISTENT: out.persistent = true; break;
+            default: break;
+        }
+    }
+    for (auto* d : c->varDecl()) out.vars.push_back(varDecl(d, out.section));
+    return out;
+}
+
+VarDecl AstBuilder::varDecl(P::VarDeclContext* c, VarSection section) {
+    VarDecl out;
+    out.loc = loc(c);
+    out.pragmas = pragmasBefore(c->getStart());
+    for (auto* n : c->varName()) {
+        out.names.push_back(text(n));
+        out.nameLocs.push_back(loc(n));
+        // A path (prog.x, arr[1]) names something declared elsewhere: only
+        // VAR_CONFIG (and VAR_ACCESS) refer to other declarations that way.
+        const bool isPath = n->children.size() > 1;
+        if (isPath && section != VarSection::Config && section != VarSection::Access)
+            error(loc(n), "'" + out.names.back() + "' is not a simple name; paths are only allowed in VAR_CONFIG");
+    }
+    if (c->DIRECT_ADDRESS()) out.address = c->DIRECT_ADDRESS()->getText();
+    if (c->accessPath()) {
+        out.accessPath = text(c->accessPath());
+        if (section != VarSection::Access)
+            error(loc(c->accessPath()), "an access path ('name : path : TYPE') is only allowed in VAR_ACCESS");
+    }
+    out.readOnly = c->READ_ONLY() != nullptr;
+    if ((c->READ_ONLY() || c->READ_WRITE()) && section != VarSection::Access)
+        error(loc(c->READ_ONLY() ? c->READ_ONLY()->getSymbol() : c->READ_WRITE()->getSymbol()),
+              "READ_ONLY / READ_WRITE are only allowed in VAR_ACCESS");
+    out.type = typeSpec(c->typeSpec());
+    if (c->initializer()) out.init = initializer(c->initializer());
+    return out;
+}
+
+TypeSpecPtr AstBuilder::namedType(P::QualifiedNameContext* c) {
+    auto out = std::make_unique<TypeSpec>();
+    out->kind = TypeSpecKind::Named;
+    out->loc = loc(c);
+    out->name = text(c);
+    return out;
+}
+
+EnumValue AstBuilder::enumValue(P::EnumValueContext* c) {
+    EnumValue out;
+    out.loc = loc(c);
+    out.name = text(c->identifier());
+    if (c->expression()) out.value = expr(c->expression());
+    return out;
+}
+
+TypeSpecPtr AstBuilder::typeSpec(P::TypeSpecContext* c) {
+    auto out = std::make_unique<TypeSpec>();
+    out->loc = loc(c);
+    if (c == nullptr) return out;  // missing after a syntax error: an unnamed Named type
+
+    if (auto* a = dynamic_cast<P::ArrayTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Array;
+        for (auto* r : a->arrayRange()) {
+            Range range;
+            if (r->STAR()) {
+                range.star = true;
+            } else {
+                range.lo = r->expression(0) ? expr(r->expression(0)) : placeholder(loc(r));
+                range.hi = r->expression(1) ? expr(r->expression(1)) : placeholder(loc(r));
+            }
+            out->dims.push_back(std::move(range));
+        }
+        out->elem = typeSpec(a->typeSpec());
+    } else if (auto* p = dynamic_cast<P::PointerTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Pointer;
+        out->elem = typeSpec(p->typeSpec());
+    } else if (auto* r = dynamic_cast<P::ReferenceTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Reference;
+        out->elem = typeSpec(r->typeSpec());
+    } else if (auto* s = dynamic_cast<P::StringTypeContext*>(c)) {
+        out->kind = TypeSpecKind::String;
+        out->wide = s->WSTRING() != nullptr;
+        if (s->expression()) out->length = expr(s->expression());
+    } else if (auto* st = dynamic_cast<P::StructTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Struct;
+        for (auto* d : st->varDecl()) out->fields.push_back(varDecl(d, VarSection::Var));
+    } else if (auto* e = dynamic_cast<P::EnumTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Enum;
+        for (auto* v : e->enumValue()) out->enumValues.push_back(enumValue(v));
+        if (e->qualifiedName()) out->elem = namedType(e->qualifiedName());
+    } else if (auto* te = dynamic_cast<P::TypedEnumTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Enum;
+        for (auto* v : te->enumValue()) out->enumValues.push_back(enumValue(v));
+        if (te->qualifiedName()) out->elem = namedType(te->qualifiedName());
+    } else if (auto* sr = dynamic_cast<P::SubrangeTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Subrange;
+        if (sr->qualifiedName()) out->elem = namedType(sr->qualifiedName());
+        out->lo = sr->expression(0) ? expr(sr->expression(0)) : placeholder(out->loc);
+        out->hi = sr->expression(1) ? expr(sr->expression(1)) : placeholder(out->loc);
+    } else if (auto* n = dynamic_cast<P::NamedTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Named;
+        out->name = text(n->qualifiedName());
+    }
+    return out;
+}
+
+InitPtr AstBuilder::initializer(P::InitializerContext* c) {
+    auto out = std::make_unique<Init>();
+    out->loc = loc(c);
+    if (c == nullptr) {
+        out->expr = placeholder(out->loc);
+        return out;
+    }
+    if (auto* a = dynamic_cast<P::ArrayInitContext*>(c)) {
+        out->kind = InitKind::Array;
+        for (auto* item : a->arrayInitItem()) {
+            ArrayInitItem built;
+            if (item->LPAREN() && item->INTEGER()) {  // count(value)
+                auto repeat = std::make_unique<Expr>();
+                repeat->kind = ExprKind::Literal;
+                repeat->lit = LitKind::Integer;
+                repeat->loc = loc(item->INTEGER()->getSymbol());
+                repeat->text = item->INTEGER()->getText();
+                built.repeat = std::move(repeat);
+                if (item->initializer()) built.value = initializer(item->initializer());
+            } else {
+                built.value = initializer(item->initializer());
+            }
+            out->items.push_back(std::move(built));
+        }
+    } else if (auto* s = dynamic_cast<P::StructInitContext*>(c)) {
+        out->kind = InitKind::Struct;
+        for (auto* item : s->structInitItem()) {
+            StructInitItem built;
+            built.loc = loc(item);
+            built.name = text(item->identifier());
+            built.value = initializer(item->initializer());
+            out->fields.push_back(std::move(built));
+        }
+    } else if (auto* e = dynamic_cast<P::ExprInitContext*>(c)) {
+        out->kind = InitKind::Expr;
+        out->expr = expr(e->expression());
+    } else {
+        out->expr = placeholder(out->loc);
+    }
+    return out;
+}
+
+}  // namespace strun::ast

@@ -1,0 +1,177 @@
+// parseFile: source text -> tokens -> parse tree -> AST, with every problem
+// reported to the CompileLog and nothing thrown.
+//
+// Stages: (1) make the bytes valid UTF-8 (the ANTLR runtime throws otherwise);
+// (2) lex everything, reporting the lexer's error tokens (unterminated
+// comments/strings/pragmas, stray characters) at their exact location;
+// (3) refuse pathological nesting before the recursive parser sees it;
+// (4) parse with SLL prediction and bail out on the first error, then, only if
+// that failed, parse again with full LL and error recovery, so that valid
+// files take the fast path and invalid ones get the best messages;
+// (5) build the AST. Stages 4 and 5 run on a thread with a large stack.
+#include "interpreter/ast/parse.h"
+
+#include <exception>
+
+#include <antlr4-runtime.h>
+
+#include "grammar/STLexer.h"
+#include "grammar/STParser.h"
+#include "interpreter/ast/ast_builder.h"
+#include "interpreter/ast/large_stack.h"
+#include "interpreter/ast/nesting_guard.h"
+#include "interpreter/ast/syntax_errors.h"
+#include "interpreter/ast/utf8_input.h"
+
+namespace strun::ast {
+
+namespace {
+
+using L = strun_grammar::STLexer;
+using P = strun_grammar::STParser;
+
+std::string lexerErrorMessage(const antlr4::Token& token) {
+    switch (token.getType()) {
+        case L::UNTERMINATED_BLOCK_COMMENT: return "unterminated comment: '(*' has no matching '*)'";
+        case L::UNTERMINATED_C_COMMENT: return "unterminated comment: '/*' has no matching '*/'";
+        case L::UNTERMINATED_PRAGMA: return "unterminated pragma: '{' has no matching '}'";
+        case L::UNTERMINATED_STRING: return "unterminated string literal: missing closing ' on this line";
+        case L::UNTERMINATED_WSTRING: return "unterminated string literal: missing closing \" on this line";
+        default: break;
+    }
+    const std::string text = token.getText();
+    const unsigned char first = text.empty() ? 0 : static_cast<unsigned char>(text[0]);
+    if (first >= 0x21 && first < 0x7F) return "unexpected character '" + text + "'";
+    if (text == "\xEF\xBF\xBD") return "unexpected byte (not valid UTF-8)";
+    if (first < 0x80) return "unexpected control character (code " + std::to_string(first) + ")";
+    return "unexpected character '" + text + "'";
+}
+
+class FileParser {
+public:
+    FileParser(const SourceSet& sources, int fileIndex, CompileLog& log)
+        : text_(sanitizeUtf8(sources.file(fileIndex).text, &firstInvalidByte_, &invalidBytes_)),
+          input_(text_),
+          lexer_(&input_),
+          tokens_(&lexer_),
+          parser_(&tokens_),
+          reporter_(log, fileIndex),
+          log_(log),
+          fileIndex_(fileIndex) {
+        lexer_.removeErrorListeners();
+        lexer_.addErrorListener(&reporter_);
+        parser_.removeErrorListeners();
+    }
+
+    CompilationUnit run() {
+        warnAboutInvalidUtf8();
+        tokens_.fill();
+        if (!reportLexerErrors()) return emptyUnit();
+        CompilationUnit unit = emptyUnit();
+        runWithLargeStack([&] {
+            try {
+                P::CompilationUnitContext* tree = parse();
+                AstBuilder builder(tokens_, reporter_, fileIndex_);
+                unit = builder.build(tree);
+            } catch (const std::exception& e) {
+                log_.error(Loc{fileIndex_, 1, 1}, std::string("internal parser error: ") + e.what());
+            } catch (...) {
+                log_.error(Loc{fileIndex_, 1, 1}, "internal parser error");
+            }
+        });
+        return unit;
+    }
+
+private:
+    CompilationUnit emptyUnit() const {
+        CompilationUnit unit;
+        unit.file = fileIndex_;
+        return unit;
+    }
+
+    // A Latin-1 file, say, still compiles (its odd bytes are usually in
+    // comments or strings), but the user should know that characters changed.
+    void warnAboutInvalidUtf8() {
+        if (invalidBytes_ == 0) return;
+        int line = 1, col = 1;
+        for (size_t i = 0; i < firstInvalidByte_ && i < text_.size(); ++i) {
+            const unsigned char c = static_cast<unsigned char>(text_[i]);
+            if (c == '\n') {
+                ++line;
+                col = 1;
+            } else if ((c & 0xC0) != 0x80) {
+                ++col;  // count code points, as the lexer does
+            }
+        }
+        log_.warning(Loc{fileIndex_, line, col},
+                     "the file is not valid UTF-8: " + std::to_string(invalidBytes_) +
+                         " byte(s) replaced by U+FFFD, the first here");
+    }
+
+    // Reports error tokens and runs the nesting guard; false if parsing must
+    // not go ahead.
+    bool reportLexerErrors() {
+        std::vector<antlr4::Token*> onChannel;
+        for (antlr4::Token* token : tokens_.getTokens()) {
+            if (token->getChannel() == L::ERRORS)
+                reporter_.report(token->getLine(), token->getCharPositionInLine(), lexerErrorMessage(*token),
+                                 token->getType() != L::ERROR_CHAR);
+            else if (token->getChannel() == antlr4::Token::DEFAULT_CHANNEL)
+                onChannel.push_back(token);
+        }
+        if (auto violation = findExcessiveNesting(onChannel)) {
+            log_.error(Loc{fileIndex_, static_cast<int>(violation->token->getLine()),
+                           static_cast<int>(violation->token->getCharPositionInLine()) + 1},
+                       "syntax error: " + violation->message);
+            return false;
+        }
+        return true;
+    }
+
+    P::CompilationUnitContext* parse() {
+        auto* simulator = parser_.getInterpreter<antlr4::atn::ParserATNSimulator>();
+        simulator->setPredictionMode(antlr4::atn::PredictionMode::SLL);
+        parser_.setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
+        try {
+            return parser_.compilationUnit();
+        } catch (const antlr4::ParseCancellationException&) {
+            // Not SLL-parseable as is: a syntax error, or (rarely) a construct
+            // that needs full-context prediction. Parse again properly.
+        }
+        tokens_.seek(0);
+        parser_.reset();
+        simulator->setPredictionMode(antlr4::atn::PredictionMode::LL);
+        parser_.setErrorHandler(std::make_shared<FriendlyErrorStrategy>());
+        parser_.addErrorListener(&reporter_);
+        return parser_.compilationUnit();
+    }
+
+    size_t firstInvalidByte_ = 0;
+    size_t invalidBytes_ = 0;
+    std::string text_;
+    antlr4::ANTLRInputStream input_;
+    L lexer_;
+    antlr4::CommonTokenStream tokens_;
+    P parser_;
+    SyntaxErrorReporter reporter_;
+    CompileLog& log_;
+    int fileIndex_;
+};
+
+}  // namespace
+
+CompilationUnit parseFile(const SourceSet& sources, int fileIndex, CompileLog& log) {
+    try {
+        FileParser parser(sources, fileIndex, log);
+        return parser.run();
+    } catch (const std::exception& e) {
+        log.error(Loc{fileIndex, 1, 1}, std::string("internal parser error: ") + e.what());
+    } catch (...) {
+        log.error(Loc{fileIndex, 1, 1}, "internal parser error");
+    }
+    CompilationUnit unit;
+    unit.file = fileIndex;
+    return unit;
+}
+
+}  // namespace strun::ast

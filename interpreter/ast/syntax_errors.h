@@ -1,0 +1,65 @@
+// Readable syntax errors. ANTLR's default messages ("mismatched input 'x'
+// expecting {...50 tokens...}") are replaced by "unexpected 'x', expected ';'",
+// or, when many tokens would fit, "unexpected 'x', expected an expression".
+// Recovery is ANTLR's default (single-token insertion/deletion, resync); the
+// reporter keeps at most one message per source line so that one mistake does
+// not produce a cascade.
+#pragma once
+
+#include <set>
+#include <string>
+
+#include <antlr4-runtime.h>
+
+#include "interpreter/source/source_set.h"
+
+namespace strun::ast {
+
+// How a token is named in a message: 'END_IF', ';', identifier, end of file.
+std::string describeTokenType(size_t type, const antlr4::dfa::Vocabulary& vocabulary);
+// The offending token as found in the text: 'END_IF', 'foo', end of file.
+std::string describeFoundToken(const antlr4::Token* token);
+
+class FriendlyErrorStrategy : public antlr4::DefaultErrorStrategy {
+protected:
+    void reportNoViableAlternative(antlr4::Parser* parser, const antlr4::NoViableAltException& e) override;
+    void reportInputMismatch(antlr4::Parser* parser, const antlr4::InputMismatchException& e) override;
+    void reportFailedPredicate(antlr4::Parser* parser, const antlr4::FailedPredicateException& e) override;
+    void reportUnwantedToken(antlr4::Parser* parser) override;
+    void reportMissingToken(antlr4::Parser* parser) override;
+    // ANTLR recovers from `x := 1 + ;` by deleting the ';' and taking the
+    // next statement's first word as the operand, which then garbles the
+    // next statement too. Statement terminators and END_ keywords are
+    // never deleted; the error stays local to the broken statement.
+    antlr4::Token* singleTokenDeletion(antlr4::Parser* parser) override;
+
+private:
+    // "unexpected X, expected Y" for `found` with the given expected set.
+    std::string message(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected);
+};
+
+// Forwards parser errors into the CompileLog as "syntax error: ...".
+class SyntaxErrorReporter : public antlr4::BaseErrorListener {
+public:
+    // Past this many, a file is more noise than code: one closing note instead.
+    static constexpr size_t kMaxErrorsPerFile = 100;
+
+    SyntaxErrorReporter(CompileLog& log, int fileIndex) : log_(log), fileIndex_(fileIndex) {}
+
+    void syntaxError(antlr4::Recognizer* recognizer, antlr4::Token* offendingSymbol, size_t line,
+                     size_t charPositionInLine, const std::string& msg, std::exception_ptr e) override;
+
+    // For errors found outside the parser (lexer error tokens, the AST
+    // builder): same format and the same one-per-line rule, unless `always`
+    // (an unterminated comment or string must be reported even on a line
+    // that already has an error: it explains everything after it).
+    void report(size_t line, size_t charPositionInLine, const std::string& msg, bool always = false);
+
+private:
+    CompileLog& log_;
+    int fileIndex_;
+    std::set<size_t> linesWithError_;
+    size_t reported_ = 0;
+};
+
+}  // namespace strun::ast

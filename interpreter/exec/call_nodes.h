@@ -1,0 +1,165 @@
+// Calls between POUs. A call reserves a frame on the task's frame stack
+// (function/method locals, VAR_TEMP, temporaries), initialises it from the
+// callee's frame image, binds the arguments, runs the body and unbinds the
+// outputs. Nesting deeper than kMaxCallDepth reports CALL_DEPTH (the runtime
+// then STOPs the PLC) and the call yields 0.
+#pragma once
+
+#include "interpreter/exec/stmt_nodes.h"
+
+namespace strun::exec {
+
+constexpr int kMaxCallDepth = 16;
+
+// The executable form of one POU (program, function, FB body, method).
+struct PouCode {
+    std::string name;
+    Block* body = nullptr;
+    uint32_t frameSize = 0;
+    std::vector<uint8_t> frameInit;  // initial image of the frame (locals with their initial values)
+    uint32_t resultOffset = 0;       // FUNCTION / METHOD result, in the frame
+};
+
+void reportCallDepth(Ctx& c, const Site& site, const std::string& callee);
+
+// Pushes a frame for `code`; returns nullptr (after reporting) when nesting is too deep.
+inline uint8_t* pushFrame(Ctx& c, const PouCode& code, const Site& site) {
+    uint8_t* f = reinterpret_cast<uint8_t*>((reinterpret_cast<uintptr_t>(c.stackTop) + 15) & ~uintptr_t(15));
+    if (__builtin_expect(c.depth >= kMaxCallDepth || f + code.frameSize > c.stackEnd, 0)) {
+        reportCallDepth(c, site, code.name);
+        return nullptr;
+    }
+    if (code.frameSize) std::memcpy(f, code.frameInit.data(), code.frameSize);
+    c.stackTop = f + code.frameSize;
+    return f;
+}
+
+enum class ResultRep : uint8_t { None, I8, I16, I32, I64, U8, U16, U32, U64, F32, F64, Addr };
+
+inline int64_t loadIntRep(const uint8_t* p, ResultRep r) {
+    switch (r) {
+        case ResultRep::I8: return loadAs<int8_t>(p);
+        case ResultRep::I16: return loadAs<int16_t>(p);
+        case ResultRep::I32: return loadAs<int32_t>(p);
+        case ResultRep::I64: return loadAs<int64_t>(p);
+        case ResultRep::U8: return loadAs<uint8_t>(p);
+        case ResultRep::U16: return loadAs<uint16_t>(p);
+        case ResultRep::U32: return loadAs<uint32_t>(p);
+        case ResultRep::U64: return static_cast<int64_t>(loadAs<uint64_t>(p));
+        default: return 0;
+    }
+}
+
+// FUNCTION call, or METHOD call (then `instance` gives the FB instance).
+// Inputs are stores into the new frame (places relative to Ctx::pending);
+// outputs are stores from the frame into the caller's places, evaluated
+// while Ctx::pending still points at the callee frame.
+struct CallPou final : Expr {
+    PouCode* callee = nullptr;
+    Expr* instance = nullptr;        // methods: the instance (self) the method runs on
+    std::vector<Stmt*> inputs;
+    std::vector<Stmt*> outputs;
+    Site site;
+    ResultRep rep = ResultRep::None;
+    uint32_t resultSize = 0;         // aggregates: bytes copied to the caller's temporary
+    uint32_t tempOffset = 0;         // aggregates: caller-frame temporary receiving the result
+
+    // Runs the call; returns the (already popped) callee frame, or nullptr if it did not run.
+    uint8_t* run(Ctx& c) {
+        uint8_t* inst = instance ? instance->addr(c) : c.self;
+        uint8_t* f = pushFrame(c, *callee, site);
+        if (!f) return nullptr;
+        uint8_t* savedPending = c.pending;
+        c.pending = f;
+        for (Stmt* s : inputs) s->exec(c);
+        uint8_t* savedSelf = c.self;
+        uint8_t* savedFrame = c.frame;
+        c.self = inst;
+        c.frame = f;
+        ++c.depth;
+        callee->body->exec(c);
+        --c.depth;
+        c.self = savedSelf;
+        c.frame = savedFrame;
+        for (Stmt* s : outputs) s->exec(c);
+        c.pending = savedPending;
+        c.stackTop = f;
+        return f;
+    }
+    int64_t i(Ctx& c) override {
+        uint8_t* f = run(c);
+        return f ? loadIntRep(f + callee->resultOffset, rep) : 0;
+    }
+    double f(Ctx& c) override {
+        uint8_t* fr = run(c);
+        if (!fr) return 0;
+        return rep == ResultRep::F32 ? static_cast<double>(loadAs<float>(fr + callee->resultOffset))
+                                     : loadAs<double>(fr + callee->resultOffset);
+    }
+    uint8_t* addr(Ctx& c) override {
+        uint8_t* fr = run(c);
+        uint8_t* dst = c.frame + tempOffset;
+        if (fr) std::memmove(dst, fr + callee->resultOffset, resultSize);
+        else std::memset(dst, 0, resultSize);
+        return dst;
+    }
+};
+
+// FUNCTION_BLOCK call statement: inputs and outputs are plain stores in the
+// caller's context (into / out of the instance's members).
+struct CallFbStmt final : Stmt {
+    PouCode* body = nullptr;
+    Expr* instance = nullptr;
+    std::vector<Stmt*> inputs;
+    std::vector<Stmt*> outputs;
+    Site site;
+    Flow exec(Ctx& c) override {
+        for (Stmt* s : inputs) s->exec(c);
+        uint8_t* inst = instance->addr(c);
+        uint8_t* f = pushFrame(c, *body, site);
+        if (!f) return Flow::Next;
+        uint8_t* savedSelf = c.self;
+        uint8_t* savedFrame = c.frame;
+        c.self = inst;
+        c.frame = f;
+        ++c.depth;
+        body->body->exec(c);
+        --c.depth;
+        c.self = savedSelf;
+        c.frame = savedFrame;
+        c.stackTop = f;
+        if (c.aborting) return Flow::Abort;
+        for (Stmt* s : outputs) s->exec(c);
+        return Flow::Next;
+    }
+};
+
+// A place in the frame being bound (argument stores of CallPou).
+template <class T>
+struct PendingVar final : Expr {
+    uint32_t off;
+    explicit PendingVar(uint32_t o) : off(o) {}
+    uint8_t* addr(Ctx& c) override { return c.pending + off; }
+    int64_t i(Ctx& c) override {
+        if constexpr (std::is_void_v<T>) return 0;
+        else return toI(loadAs<T>(c.pending + off));
+    }
+    double f(Ctx& c) override {
+        if constexpr (std::is_void_v<T>) return 0;
+        else return toF(loadAs<T>(c.pending + off));
+    }
+};
+
+// Binds a VAR_IN_OUT: stores the address of the caller's place into the slot.
+struct BindAddress final : Stmt {
+    Expr* slot;   // place of the 8-byte slot
+    Expr* place;  // the caller's storage
+    BindAddress(Expr* s, Expr* p) : slot(s), place(p) {}
+    Flow exec(Ctx& c) override {
+        uint8_t* p = place->addr(c);
+        storeAs<uint8_t*>(slot->addr(c), p);
+        return Flow::Next;
+    }
+};
+
+}  // namespace strun::exec

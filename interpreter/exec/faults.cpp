@@ -1,0 +1,65 @@
+// The slow paths of the evaluator: runtime faults reported to the scheduler
+// with the contract's substitute behaviour, and REAL -> integer conversion.
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "interpreter/exec/call_nodes.h"
+#include "stdlib/conversions.h"
+
+namespace strun::exec {
+
+namespace {
+const std::string kUnknownPou = "?";
+const std::string& pouOf(const Site& s) { return s.pou ? *s.pou : kUnknownPou; }
+
+uint8_t* sink(Ctx& c) {
+    // Large enough for any element: the checker sizes it to the largest type in the project.
+    std::memset(c.faultSink, 0, kFaultSinkSize);
+    return c.faultSink;
+}
+}  // namespace
+
+void reportDivByZero(Ctx& c, const Site& site) {
+    c.m->handler->onFault(rt::DiagCode::DivByZero, pouOf(site), site.line, "division by zero; divisor 1 used");
+}
+
+void reportCallDepth(Ctx& c, const Site& site, const std::string& callee) {
+    c.m->handler->onFault(rt::DiagCode::CallDepth, pouOf(site), site.line,
+                          fmt::format("call nesting deeper than {} (calling {})", kMaxCallDepth, callee));
+    c.aborting = true;
+}
+
+uint8_t* IndexPlace::outOfRange(Ctx& c, const Dim& d, int64_t value) {
+    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(site), site.line,
+                          fmt::format("subscript {} outside {}..{}", value, d.lo, d.lo + d.count - 1));
+    return sink(c);
+}
+
+uint8_t* Index1Place::outOfRange(Ctx& c, int64_t value) {
+    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(site), site.line,
+                          fmt::format("subscript {} outside {}..{}", value, lo, lo + count - 1));
+    return sink(c);
+}
+
+uint8_t* RefSlotPlace::nullTarget(Ctx& c) {
+    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line, "reference is not bound");
+    return sink(c);
+}
+
+uint8_t* DerefPlace::nullTarget(Ctx& c) {
+    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line, "dereference of a null pointer");
+    return sink(c);
+}
+
+// Rounding rule and out-of-range behaviour: docs/decisions/0031 (stdlib/conversions.h).
+int64_t realToIntRounded(double v, int bits, bool isSigned) {
+    return static_cast<int64_t>(stdlib::realToInteger(v, bits, isSigned));
+}
+
+int64_t realToIntTruncated(double v, int bits, bool isSigned) {
+    return static_cast<int64_t>(stdlib::truncToInteger(v, bits, isSigned));
+}
+
+}  // namespace strun::exec

@@ -1,0 +1,100 @@
+// The resolved, typed tree the evaluator walks. The checker (sema) builds it:
+// every name is already a storage location (an offset into the current
+// instance, the current call frame, or an absolute address), every operator
+// is specialised for its operand type. Evaluation allocates nothing and
+// throws nothing; faults are reported to the runtime and evaluation goes on
+// with the contract's substitute values until the next statement boundary.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "interpreter/sema/types.h"
+#include "runtime/machine.h"
+
+namespace strun::exec {
+
+using sema::Type;
+
+// The evaluator's registers while one task runs its programs. One per task:
+// a preempting task runs on its own Ctx (and its own frame stack).
+// Bytes of the zeroed scratch that faulty accesses are redirected to.
+constexpr size_t kFaultSinkSize = 1 << 16;
+
+struct Ctx {
+    uint8_t* self = nullptr;       // current PROGRAM / FUNCTION_BLOCK instance
+    uint8_t* frame = nullptr;      // current call frame: function locals, VAR_TEMP, temporaries
+    uint8_t* stackTop = nullptr;   // first free byte of the frame stack
+    uint8_t* stackEnd = nullptr;
+    int depth = 0;                 // POU call nesting (program body = 0)
+    int jumpLabel = -1;            // pending JMP target while Flow::Jump unwinds
+    bool aborting = false;         // the activation is being aborted (watchdog, STOP)
+    uint8_t* pending = nullptr;    // frame of the call whose arguments are being bound
+    rt::Machine* m = nullptr;
+    uint8_t* faultSink = nullptr;  // zeroed scratch that faulty accesses read from / write to
+};
+
+// Where a fault is reported from: the POU and the source line.
+struct Site {
+    const std::string* pou = nullptr;
+    int line = 0;
+};
+
+struct Expr {
+    const Type* type = nullptr;
+    virtual ~Expr() = default;
+    // Integer-represented values (BOOL, integers, bit strings, TIME/DATE, chars, enums):
+    // sign- or zero-extended to 64 bits according to the type.
+    virtual int64_t i(Ctx&) { return 0; }
+    // REAL / LREAL (a REAL is a float widened exactly).
+    virtual double f(Ctx&) { return 0; }
+    // Storage address: variables, members, elements, aggregates (strings, structs, arrays).
+    virtual uint8_t* addr(Ctx&) { return nullptr; }
+    // A place whose storage is a single bit (bit access x.3, BOOL AT %IX0.3).
+    virtual int bitIndex() const { return -1; }
+};
+
+enum class Flow : uint8_t { Next, Exit, Continue, Return, Jump, Abort };
+
+struct Stmt {
+    int line = 0;
+    virtual ~Stmt() = default;
+    virtual Flow exec(Ctx&) = 0;
+};
+
+// Owns every node of a loaded project.
+class NodePool {
+public:
+    template <class T, class... Args>
+    T* make(Args&&... args) {
+        auto p = std::make_unique<T>(std::forward<Args>(args)...);
+        T* raw = p.get();
+        holders_.push_back(std::unique_ptr<Holder>(new HolderOf<T>(std::move(p))));
+        return raw;
+    }
+
+private:
+    struct Holder { virtual ~Holder() = default; };
+    template <class T>
+    struct HolderOf : Holder {
+        explicit HolderOf(std::unique_ptr<T> p) : ptr(std::move(p)) {}
+        std::unique_ptr<T> ptr;
+    };
+    std::vector<std::unique_ptr<Holder>> holders_;
+};
+
+template <class T>
+inline T loadAs(const uint8_t* p) {
+    T v;
+    std::memcpy(&v, p, sizeof(T));
+    return v;
+}
+template <class T>
+inline void storeAs(uint8_t* p, T v) {
+    std::memcpy(p, &v, sizeof(T));
+}
+
+}  // namespace strun::exec

@@ -1,0 +1,259 @@
+// Statements of the resolved tree. Every statement boundary and every loop
+// back-edge ticks the machine (virtual time, preemption, watchdog); a tick
+// that asks for an abort unwinds with Flow::Abort to the task body.
+#pragma once
+
+#include <algorithm>
+
+#include "interpreter/exec/operator_nodes.h"
+
+namespace strun::exec {
+
+inline bool tickAborts(Ctx& c) {
+    if (__builtin_expect(c.m->tick(), 0)) { c.aborting = true; return true; }
+    return false;
+}
+
+struct Block final : Stmt {
+    std::vector<Stmt*> stmts;
+    std::vector<std::pair<int, size_t>> labels;  // label id -> statement index
+    Flow exec(Ctx& c) override {
+        const size_t n = stmts.size();
+        for (size_t k = 0; k < n; ++k) {
+            if (tickAborts(c)) return Flow::Abort;
+            Flow f = stmts[k]->exec(c);
+            if (__builtin_expect(f != Flow::Next, 0)) {
+                if (f == Flow::Jump) {
+                    auto it = std::find_if(labels.begin(), labels.end(), [&](auto& l) { return l.first == c.jumpLabel; });
+                    if (it != labels.end()) { k = it->second - 1; continue; }
+                }
+                return f;
+            }
+            if (__builtin_expect(c.aborting, 0)) return Flow::Abort;
+        }
+        return Flow::Next;
+    }
+};
+
+// place := value, for scalar storage T.
+template <class T>
+struct Assign final : Stmt {
+    Expr* place;
+    Expr* value;
+    Assign(Expr* p, Expr* v) : place(p), value(v) {}
+    Flow exec(Ctx& c) override {
+        if constexpr (std::is_floating_point_v<T>) {
+            T v = static_cast<T>(value->f(c));
+            storeAs<T>(place->addr(c), v);
+        } else if constexpr (std::is_same_v<T, bool>) {
+            uint8_t v = value->i(c) != 0;
+            storeAs<uint8_t>(place->addr(c), v);
+        } else {
+            T v = static_cast<T>(value->i(c));
+            storeAs<T>(place->addr(c), v);
+        }
+        return Flow::Next;
+    }
+};
+
+// Fast path: target in the current instance or frame.
+template <class T, bool FRAME>
+struct AssignLocal final : Stmt {
+    uint32_t off;
+    Expr* value;
+    AssignLocal(uint32_t o, Expr* v) : off(o), value(v) {}
+    Flow exec(Ctx& c) override {
+        uint8_t* p = (FRAME ? c.frame : c.self) + off;
+        if constexpr (std::is_floating_point_v<T>) storeAs<T>(p, static_cast<T>(value->f(c)));
+        else if constexpr (std::is_same_v<T, bool>) storeAs<uint8_t>(p, value->i(c) != 0);
+        else storeAs<T>(p, static_cast<T>(value->i(c)));
+        return Flow::Next;
+    }
+};
+
+// One bit of a T-sized place.
+template <class T>
+struct AssignBit final : Stmt {
+    Expr* base;
+    int bit;
+    Expr* value;
+    AssignBit(Expr* b, int n, Expr* v) : base(b), bit(n), value(v) {}
+    Flow exec(Ctx& c) override {
+        bool v = value->i(c) != 0;
+        uint8_t* p = base->addr(c);
+        T w = loadAs<T>(p);
+        T mask = static_cast<T>(T(1) << bit);
+        w = v ? static_cast<T>(w | mask) : static_cast<T>(w & static_cast<T>(~mask));
+        storeAs<T>(p, w);
+        return Flow::Next;
+    }
+};
+
+// STRING / WSTRING assignment: copies up to the target's length, truncating.
+template <class Ch>
+struct AssignString final : Stmt {
+    Expr* place;
+    Expr* value;
+    uint32_t maxLen;
+    AssignString(Expr* p, Expr* v, uint32_t n) : place(p), value(v), maxLen(n) {}
+    Flow exec(Ctx& c) override {
+        const Ch* src = reinterpret_cast<const Ch*>(value->addr(c));
+        Ch* dst = reinterpret_cast<Ch*>(place->addr(c));
+        uint32_t k = 0;
+        if (src != dst) {
+            // memmove semantics: source and target may overlap (s := s).
+            while (k < maxLen && src[k] != 0) ++k;
+            std::memmove(dst, src, k * sizeof(Ch));
+        } else {
+            while (k < maxLen && dst[k] != 0) ++k;
+        }
+        dst[k] = 0;
+        return Flow::Next;
+    }
+};
+
+// Structures, arrays, FB instances: bytewise copy.
+struct AssignBytes final : Stmt {
+    Expr* place;
+    Expr* value;
+    uint32_t size;
+    AssignBytes(Expr* p, Expr* v, uint32_t n) : place(p), value(v), size(n) {}
+    Flow exec(Ctx& c) override {
+        const uint8_t* src = value->addr(c);
+        uint8_t* dst = place->addr(c);
+        if (src != dst) std::memmove(dst, src, size);
+        return Flow::Next;
+    }
+};
+
+// An expression evaluated for its effect (a call statement).
+struct EvalStmt final : Stmt {
+    Expr* e;
+    enum class Rep : uint8_t { Int, Real, Addr, None } rep;
+    EvalStmt(Expr* x, Rep r) : e(x), rep(r) {}
+    Flow exec(Ctx& c) override {
+        switch (rep) {
+            case Rep::Int: (void)e->i(c); break;
+            case Rep::Real: (void)e->f(c); break;
+            default: (void)e->addr(c); break;
+        }
+        return c.aborting ? Flow::Abort : Flow::Next;
+    }
+};
+
+// S= / R= : assigns only when the condition is TRUE.
+struct CondStmt final : Stmt {
+    Expr* cond;
+    Stmt* then;
+    CondStmt(Expr* k, Stmt* t) : cond(k), then(t) {}
+    Flow exec(Ctx& c) override { return cond->i(c) ? then->exec(c) : Flow::Next; }
+};
+
+struct IfStmt final : Stmt {
+    std::vector<Expr*> conds;
+    std::vector<Block*> blocks;
+    Block* elseBlock = nullptr;
+    Flow exec(Ctx& c) override {
+        for (size_t k = 0; k < conds.size(); ++k)
+            if (conds[k]->i(c)) return blocks[k]->exec(c);
+        return elseBlock ? elseBlock->exec(c) : Flow::Next;
+    }
+};
+
+struct CaseStmt final : Stmt {
+    struct Entry { int64_t lo, hi; size_t block; };
+    Expr* selector;
+    bool isUnsigned64 = false;
+    std::vector<Entry> entries;  // in source order: the first match wins
+    std::vector<Block*> blocks;
+    Block* elseBlock = nullptr;
+    Flow exec(Ctx& c) override {
+        int64_t v = selector->i(c);
+        for (const Entry& e : entries) {
+            bool in = isUnsigned64 ? (static_cast<uint64_t>(v) >= static_cast<uint64_t>(e.lo) && static_cast<uint64_t>(v) <= static_cast<uint64_t>(e.hi))
+                                   : (v >= e.lo && v <= e.hi);
+            if (in) return blocks[e.block]->exec(c);
+        }
+        return elseBlock ? elseBlock->exec(c) : Flow::Next;
+    }
+};
+
+// FOR v := from TO to BY step: bounds and step evaluated once; the control
+// variable is read back each iteration (CODESYS lets the body change it) and
+// ends one step past the bound, like CODESYS.
+template <class T>
+struct ForStmt final : Stmt {
+    Expr* var;
+    Expr *from, *to, *by;  // by may be null (step 1)
+    Block* body;
+    Flow exec(Ctx& c) override {
+        T end = static_cast<T>(to->i(c));
+        T step = by ? static_cast<T>(by->i(c)) : T(1);
+        uint8_t* p = var->addr(c);
+        storeAs<T>(p, static_cast<T>(from->i(c)));
+        for (;;) {
+            T v = loadAs<T>(p);
+            if (step >= T(0) ? !(v <= end) : !(v >= end)) break;
+            Flow f = body->exec(c);
+            if (f != Flow::Next) {
+                if (f == Flow::Exit) break;
+                if (f != Flow::Continue) return f;
+            }
+            if (tickAborts(c)) return Flow::Abort;
+            p = var->addr(c);
+            storeAs<T>(p, static_cast<T>(static_cast<U<T>>(loadAs<T>(p)) + static_cast<U<T>>(step)));
+        }
+        return Flow::Next;
+    }
+};
+
+struct WhileStmt final : Stmt {
+    Expr* cond;
+    Block* body;
+    Flow exec(Ctx& c) override {
+        while (cond->i(c)) {
+            Flow f = body->exec(c);
+            if (f != Flow::Next) {
+                if (f == Flow::Exit) break;
+                if (f != Flow::Continue) return f;
+            }
+            if (tickAborts(c)) return Flow::Abort;
+        }
+        return c.aborting ? Flow::Abort : Flow::Next;
+    }
+};
+
+struct RepeatStmt final : Stmt {
+    Expr* cond;
+    Block* body;
+    Flow exec(Ctx& c) override {
+        for (;;) {
+            Flow f = body->exec(c);
+            if (f != Flow::Next) {
+                if (f == Flow::Exit) break;
+                if (f != Flow::Continue) return f;
+            }
+            if (cond->i(c)) break;
+            if (tickAborts(c)) return Flow::Abort;
+        }
+        return c.aborting ? Flow::Abort : Flow::Next;
+    }
+};
+
+struct FlowStmt final : Stmt {
+    Flow flow;
+    explicit FlowStmt(Flow f) : flow(f) {}
+    Flow exec(Ctx&) override { return flow; }
+};
+
+struct JumpStmt final : Stmt {
+    int label;
+    explicit JumpStmt(int l) : label(l) {}
+    Flow exec(Ctx& c) override { c.jumpLabel = label; return Flow::Jump; }
+};
+
+struct NopStmt final : Stmt {
+    Flow exec(Ctx&) override { return Flow::Next; }
+};
+
+}  // namespace strun::exec

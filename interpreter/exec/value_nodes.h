@@ -1,0 +1,196 @@
+// Leaves of the resolved tree: constants and variable places. A place node
+// both yields its address (for stores, members, aggregates) and loads its
+// value in the representation of its storage type T, so reading a variable
+// is one virtual call. Struct members of a variable are folded into the
+// variable's offset by the checker; only subscripts, dereferences and
+// VAR_IN_OUT references are computed at run time.
+#pragma once
+
+#include <cmath>
+#include <type_traits>
+
+#include "interpreter/exec/node.h"
+
+namespace strun::exec {
+
+template <class T>
+inline int64_t toI(T v) {
+    if constexpr (std::is_floating_point_v<T>) return static_cast<int64_t>(v);
+    else return static_cast<int64_t>(v);
+}
+template <class T>
+inline double toF(T v) { return static_cast<double>(v); }
+
+struct ConstInt final : Expr {
+    int64_t v;
+    explicit ConstInt(int64_t value) : v(value) {}
+    int64_t i(Ctx&) override { return v; }
+    double f(Ctx&) override { return static_cast<double>(v); }
+};
+
+struct ConstReal final : Expr {
+    double v;
+    explicit ConstReal(double value) : v(value) {}
+    double f(Ctx&) override { return v; }
+};
+
+// Constant aggregate (string literal, folded string): its bytes laid out as the type's storage.
+struct ConstBytes final : Expr {
+    std::vector<uint8_t> bytes;
+    explicit ConstBytes(std::vector<uint8_t> b) : bytes(std::move(b)) {}
+    uint8_t* addr(Ctx&) override { return bytes.data(); }
+};
+
+// Variable in the current instance (PROGRAM / FB body, method of an FB).
+template <class T>
+struct SelfVar final : Expr {
+    uint32_t off;
+    explicit SelfVar(uint32_t o) : off(o) {}
+    uint8_t* addr(Ctx& c) override { return c.self + off; }
+    int64_t i(Ctx& c) override {
+        if constexpr (std::is_void_v<T>) return 0;
+        else return toI(loadAs<T>(c.self + off));
+    }
+    double f(Ctx& c) override {
+        if constexpr (std::is_void_v<T>) return 0;
+        else return toF(loadAs<T>(c.self + off));
+    }
+};
+
+// Variable in the current call frame (function/method locals, VAR_TEMP).
+template <class T>
+struct FrameVar final : Expr {
+    uint32_t off;
+    explicit FrameVar(uint32_t o) : off(o) {}
+    uint8_t* addr(Ctx& c) override { return c.frame + off; }
+    int64_t i(Ctx& c) override {
+        if constexpr (std::is_void_v<T>) return 0;
+        else return toI(loadAs<T>(c.frame + off));
+    }
+    double f(Ctx& c) override {
+        if constexpr (std::is_void_v<T>) return 0;
+        else return toF(loadAs<T>(c.frame + off));
+    }
+};
+
+// Variable at a fixed address: globals, program instances seen from the
+// configuration, the process image.
+template <class T>
+struct AbsVar final : Expr {
+    uint8_t* p;
+    explicit AbsVar(uint8_t* ptr) : p(ptr) {}
+    uint8_t* addr(Ctx&) override { return p; }
+    int64_t i(Ctx&) override {
+        if constexpr (std::is_void_v<T>) return 0;
+        else return toI(loadAs<T>(p));
+    }
+    double f(Ctx&) override {
+        if constexpr (std::is_void_v<T>) return 0;
+        else return toF(loadAs<T>(p));
+    }
+};
+
+// Storage reached through a computed address (subscript, dereference, member of those).
+template <class T>
+struct PlaceLoad final : Expr {
+    Expr* place;
+    explicit PlaceLoad(Expr* p) : place(p) {}
+    uint8_t* addr(Ctx& c) override { return place->addr(c); }
+    int64_t i(Ctx& c) override {
+        if constexpr (std::is_void_v<T>) return 0;
+        else return toI(loadAs<T>(place->addr(c)));
+    }
+    double f(Ctx& c) override {
+        if constexpr (std::is_void_v<T>) return 0;
+        else return toF(loadAs<T>(place->addr(c)));
+    }
+};
+
+// A member at a fixed offset from a computed address.
+struct OffsetPlace final : Expr {
+    Expr* base;
+    uint32_t off;
+    OffsetPlace(Expr* b, uint32_t o) : base(b), off(o) {}
+    uint8_t* addr(Ctx& c) override { return base->addr(c) + off; }
+};
+
+// VAR_IN_OUT, REFERENCE TO: the slot holds the address of the referenced storage.
+struct RefSlotPlace final : Expr {
+    Expr* slot;  // place of the 8-byte address
+    Site site;
+    RefSlotPlace(Expr* s, Site st) : slot(s), site(st) {}
+    uint8_t* addr(Ctx& c) override {
+        uint8_t* p = loadAs<uint8_t*>(slot->addr(c));
+        if (__builtin_expect(p == nullptr, 0)) return nullTarget(c);
+        return p;
+    }
+    uint8_t* nullTarget(Ctx& c);
+};
+
+// p^ : the pointer value (an address) as storage.
+struct DerefPlace final : Expr {
+    Expr* pointer;
+    Site site;
+    DerefPlace(Expr* p, Site st) : pointer(p), site(st) {}
+    uint8_t* addr(Ctx& c) override {
+        auto p = reinterpret_cast<uint8_t*>(static_cast<intptr_t>(pointer->i(c)));
+        if (__builtin_expect(p == nullptr, 0)) return nullTarget(c);
+        return p;
+    }
+    uint8_t* nullTarget(Ctx& c);
+};
+
+// ADR(x) / REF(x): the address of a place as a pointer value.
+struct AddressOf final : Expr {
+    Expr* place;
+    explicit AddressOf(Expr* p) : place(p) {}
+    int64_t i(Ctx& c) override { return static_cast<int64_t>(reinterpret_cast<intptr_t>(place->addr(c))); }
+};
+
+// a[i, j, ...]: bounds-checked element address. Out of range: ARRAY_BOUNDS
+// goes to the runtime, and the access is redirected to a zeroed sink so the
+// read yields 0 and the write is dropped.
+struct IndexPlace final : Expr {
+    struct Dim { Expr* index; int64_t lo; int64_t count; uint64_t stride; };
+    Expr* base;
+    std::vector<Dim> dims;
+    Site site;
+    uint8_t* addr(Ctx& c) override {
+        uint64_t offset = 0;
+        for (const Dim& d : dims) {
+            int64_t k = d.index->i(c) - d.lo;
+            if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(d.count), 0)) return outOfRange(c, d, k + d.lo);
+            offset += static_cast<uint64_t>(k) * d.stride;
+        }
+        return base->addr(c) + offset;
+    }
+    uint8_t* outOfRange(Ctx& c, const Dim& d, int64_t value);
+};
+
+// One-dimensional fast path.
+struct Index1Place final : Expr {
+    Expr* base;
+    Expr* index;
+    int64_t lo, count;
+    uint64_t stride;
+    Site site;
+    uint8_t* addr(Ctx& c) override {
+        int64_t k = index->i(c) - lo;
+        if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return outOfRange(c, k + lo);
+        return base->addr(c) + static_cast<uint64_t>(k) * stride;
+    }
+    uint8_t* outOfRange(Ctx& c, int64_t value);
+};
+
+// x.3 — one bit of an integer / bit-string place; also BOOL AT %IX0.3.
+template <class T>
+struct BitPlace final : Expr {
+    Expr* base;
+    int bit;
+    BitPlace(Expr* b, int n) : base(b), bit(n) {}
+    int bitIndex() const override { return bit; }
+    uint8_t* addr(Ctx& c) override { return base->addr(c); }
+    int64_t i(Ctx& c) override { return (loadAs<T>(base->addr(c)) >> bit) & 1; }
+};
+
+}  // namespace strun::exec

@@ -1,0 +1,15 @@
+// The --dump JSON of the contract: final values of globals and program
+// instances, encoded by type (shared/contract.md, "VALUE encodings").
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "interpreter/sema/program_model.h"
+
+namespace strun::project {
+
+nlohmann::ordered_json valueToJson(const sema::Type* type, const uint8_t* p);
+nlohmann::ordered_json globalsJson(const sema::ProgramModel& model);
+nlohmann::ordered_json programsJson(const sema::ProgramModel& model);
+
+}  // namespace strun::project

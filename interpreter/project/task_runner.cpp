@@ -1,0 +1,42 @@
+#include "interpreter/project/task_runner.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace strun::project {
+
+TaskRunner::TaskRunner(sema::ProgramModel& model, const sema::ConfiguredTask& task) : calls_(task.calls) {
+    // Deep enough for kMaxCallDepth nested frames of the largest POU, plus temporaries.
+    size_t frame = static_cast<size_t>(model.maxFrameSize) + 64;
+    stack_.resize(frame * (exec::kMaxCallDepth + 2) + 4096);
+    sink_.resize(std::max<size_t>(exec::kFaultSinkSize, model.largestType + 64));
+    ctx_.m = &model.machine;
+    ctx_.faultSink = sink_.data();
+}
+
+bool TaskRunner::runActivation() {
+    exec::Ctx& c = ctx_;
+    c.aborting = false;
+    for (const sema::Invocation& inv : calls_) {
+        c.depth = 0;
+        c.stackTop = stack_.data();
+        c.stackEnd = stack_.data() + stack_.size();
+        c.frame = c.stackTop;
+        c.self = inv.instance;
+        if (inv.program)
+            for (exec::Stmt* s : inv.program->before) s->exec(c);
+        const exec::PouCode& code = *inv.code;
+        if (code.frameSize) std::memcpy(c.frame, code.frameInit.data(), code.frameSize);
+        c.stackTop = c.frame + code.frameSize;
+        // Every activation costs at least one statement of PLC time, so an
+        // empty program cannot spin a freewheeling task at a standstill.
+        if (exec::tickAborts(c)) return false;
+        exec::Flow f = code.body->exec(c);
+        if (f == exec::Flow::Abort || c.aborting) return false;
+        if (inv.program)
+            for (exec::Stmt* s : inv.program->after) s->exec(c);
+    }
+    return true;
+}
+
+}  // namespace strun::project

@@ -1,0 +1,161 @@
+// The checker: declarations -> types and storage layout -> checked, resolved
+// tree. It reports every error with a location to the CompileLog and keeps
+// going, so one run shows as many errors as possible.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "interpreter/ast/ast.h"
+#include "interpreter/sema/program_model.h"
+#include "interpreter/sema/symbols.h"
+#include "interpreter/source/source_set.h"
+
+namespace strun::sema {
+
+class Checker;
+
+// What a standard-library binding sees of a call (stdlib/bind/).
+struct CallArgs {
+    const ast::Expr* call = nullptr;
+    std::string name;             // upper-case callee name
+    std::vector<Checked> args;    // positional order (formal args placed by their name when known)
+    std::vector<std::string> names;  // formal names as written (upper-case), "" if positional
+    ast::Loc loc;
+};
+using BuiltinFn = std::function<Checked(Checker&, CallArgs&)>;
+
+class Checker {
+public:
+    Checker(ProgramModel& model, CompileLog& log);
+    // Checks every unit; fills the model (program instances, tasks, code).
+    void run(std::vector<ast::CompilationUnit>& units, bool stdlibUnits = false);
+
+    // ---- services for standard-library bindings
+    exec::NodePool& pool() { return model_.pool; }
+    TypeTable& types() { return *model_.types; }
+    CompileLog& log() { return log_; }
+    void error(const ast::Loc& loc, const std::string& message) { log_.error(loc, message); }
+    // Converts `e` implicitly to `target` (errors if the standard forbids it).
+    Checked coerce(Checked e, const Type* target, const ast::Loc& loc, const char* what);
+    // Explicit conversion (X_TO_Y / TO_Y): any elementary pair.
+    Checked convert(Checked e, const Type* target, const ast::Loc& loc, bool truncate = false);
+    // The type two operands are brought to by an arithmetic/comparison operator; null if none.
+    const Type* commonType(Checked& a, Checked& b, const ast::Loc& loc, bool reportError = true);
+    // Fixes the type of an untyped literal (ANY_INT -> DINT/LINT, ANY_REAL -> LREAL).
+    Checked settle(Checked e);
+    Checked constInt(int64_t v, const Type* t, const ast::Loc& loc);
+    Checked constReal(double v, const Type* t, const ast::Loc& loc);
+    Checked bad(const ast::Loc& loc) { Checked c; c.loc = loc; return c; }
+    exec::Site site(const ast::Loc& loc);
+    // A caller-frame temporary of `size` bytes for aggregate results; returns its offset.
+    uint32_t allocTemp(uint32_t size);
+    // A fresh aggregate place in the current frame's temporaries with the given type.
+    exec::Expr* tempPlace(const Type* t, uint32_t* offsetOut = nullptr);
+    // Registry of built-in functions (name upper-case).
+    void addBuiltin(const std::string& upperName, BuiltinFn fn) { builtins_[upperName] = std::move(fn); }
+    bool hasBuiltin(const std::string& upperName) const { return builtins_.count(upperName) != 0; }
+    // Makes a node yielding the value stored at `place` (a PlaceLoad of the right width).
+    exec::Expr* loadFrom(exec::Expr* place, const Type* t);
+    // Stores `value` (already of type t) into `place`.
+    exec::Stmt* storeTo(exec::Expr* place, const Type* t, exec::Expr* value, int bit = -1);
+    const std::string* currentPouName() const { return currentPouName_; }
+    int64_t currentTimeProbe = 0;
+
+private:
+    friend struct CheckerAccess;
+    // ---- declarations (checker_declare.cpp)
+    void collect(ast::CompilationUnit& unit);
+    void declarePou(ast::Pou* pou, PouInfo* owner);
+    const Type* resolveTypeSpec(const ast::TypeSpec* spec, const std::string& context);
+    const Type* resolveNamedType(const std::string& name, const ast::Loc& loc);
+    const Type* resolveTypeDecl(const std::string& upperName, const ast::Loc& loc);
+    void layoutPou(PouInfo* pou);
+    void declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks, uint32_t& instOff, uint32_t& frameOff,
+                     std::vector<Field>* instanceFields);
+    void declareGlobals();
+    VarSym* addGlobal(const ast::VarDecl& decl, size_t nameIndex, const ast::VarBlock& block);
+    bool constIntExpr(const ast::Expr* e, int64_t& out, const char* what);
+    void writeInitial(uint8_t* base, const Type* t, const ast::Init* init, const ast::Loc& loc);
+    void writeDefault(uint8_t* base, const Type* t);
+    void writeScalar(uint8_t* p, const Type* t, const Checked& v);
+    uint8_t* mapAddress(const std::string& address, const Type* t, const ast::Loc& loc, int& bit);
+
+    // ---- configuration (checker_config.cpp)
+    void buildConfiguration();
+    void buildDefaultConfiguration();
+    void instantiateProgram(const std::string& name, PouInfo* pou, const ast::Loc& loc);
+
+    // ---- bodies (checker_stmt.cpp / checker_expr.cpp / checker_call.cpp)
+    void checkBodies();
+    void checkBody(PouInfo* pou);
+    exec::Block* checkBlock(const ast::StmtList& list);
+    exec::Stmt* checkStmt(const ast::Stmt& s);
+    exec::Stmt* checkAssign(const ast::Stmt& s);
+    exec::Stmt* checkFor(const ast::Stmt& s);
+    exec::Stmt* checkCase(const ast::Stmt& s);
+    Checked checkExpr(const ast::Expr& e);
+    Checked checkCondition(const ast::Expr& e, const char* what);
+    Checked checkLiteral(const ast::Expr& e);
+    Checked checkName(const ast::Expr& e);
+    Checked checkMember(const ast::Expr& e);
+    Checked checkIndex(const ast::Expr& e);
+    Checked checkUnary(const ast::Expr& e);
+    Checked checkBinary(const ast::Expr& e);
+    Checked checkCall(const ast::Expr& e, bool statement);
+    Checked checkConversionCall(const std::string& upperName, const ast::Expr& e, bool& handled);
+    Checked callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* instance);
+    exec::Stmt* callFunctionBlock(Checked inst, const ast::Expr& e);
+    Checked varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside);
+    Checked memberOf(Checked base, const std::string& member, const ast::Loc& loc);
+    VarSym* lookupVar(const std::string& upperName);
+    const Enumerator* lookupEnumValue(const std::string& upperName, const Type** enumType);
+    Checked makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc);
+    Checked makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& loc);
+    Checked makeLogic(ast::Op op, Checked a, Checked b, const ast::Loc& loc);
+    Checked foldIfConst(Checked r, std::initializer_list<const Checked*> operands);
+    exec::Stmt* assignChecked(Checked target, Checked value, const ast::Loc& loc);
+    void markWritten(const Checked& target, const ast::Loc& loc);
+    int labelId(const std::string& upperName);
+    void warnUnused();
+
+    ProgramModel& model_;
+    CompileLog& log_;
+    bool stdlibMode_ = false;
+
+    // declarations by upper-case name
+    std::map<std::string, ast::TypeDecl*> typeDecls_;
+    std::map<std::string, const Type*> resolvedTypes_;
+    std::set<std::string> resolvingTypes_;
+    std::map<std::string, PouInfo*> pous_;  // owned by model_.pouStore
+    std::vector<PouInfo*> pouOrder_;
+    std::vector<ast::GlobalList*> globalLists_;
+    std::vector<ast::Configuration*> configurations_;
+    std::map<std::string, VarSym*> globals_;
+    std::map<std::string, BuiltinFn> builtins_;
+    std::map<std::string, std::pair<const Type*, const Enumerator*>> enumValues_;  // unqualified, unique ones
+    std::set<std::string> ambiguousEnumValues_;
+
+    // state while checking one body
+    PouInfo* pou_ = nullptr;
+    const std::string* currentPouName_ = nullptr;
+    uint32_t frameTop_ = 0;
+    int loopDepth_ = 0;
+    std::map<std::string, int> labels_;
+    std::vector<std::pair<ast::Loc, std::string>> pendingJumps_;
+    std::set<std::string> definedLabels_;
+    bool assignedResult_ = false;
+    std::vector<std::string> pouNames_;
+    std::vector<std::unique_ptr<ast::TypeDecl>> inlineEnumDecls_;
+    std::set<int> libraryFiles_;
+
+public:
+    // Files whose POUs are the standard library (no unused-variable warnings).
+    void setLibraryFiles(std::set<int> files) { libraryFiles_ = std::move(files); }
+};
+
+}  // namespace strun::sema

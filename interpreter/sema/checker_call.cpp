@@ -1,0 +1,334 @@
+// Calls: user functions, function-block instances, explicit conversions and
+// the standard-library functions registered by stdlib/bind.
+#include <fmt/format.h>
+
+#include "interpreter/sema/checker.h"
+#include "interpreter/sema/node_factory.h"
+
+namespace strun::sema {
+
+namespace {
+// Type names as they appear in conversion function names.
+const Type* conversionTypeName(TypeTable& types, const std::string& name) {
+    if (name == "TOD") return types.elementary(TK::Tod);
+    if (name == "DT") return types.elementary(TK::Dt);
+    if (name == "LTOD") return types.elementary(TK::LTod);
+    if (name == "LDT") return types.elementary(TK::LDt);
+    const Type* t = types.byName(name);
+    return t && isElementary(t->kind) ? t : nullptr;
+}
+
+struct ArgBinding {
+    const ast::Arg* arg = nullptr;
+    VarSym* param = nullptr;
+};
+
+// Matches written arguments to formal parameters (positional ones to the
+// inputs and in-outs in declaration order). Reports every mismatch.
+bool bindArguments(Checker& ck, const std::string& callee, const std::vector<VarSym*>& params, const ast::Expr& call,
+                   std::vector<ArgBinding>& out) {
+    bool ok = true;
+    size_t positional = 0;
+    std::vector<VarSym*> inputsInOrder;
+    for (VarSym* p : params)
+        if (p->section != ast::VarSection::Output) inputsInOrder.push_back(p);
+    std::set<VarSym*> seen;
+    for (const auto& a : call.args) {
+        VarSym* param = nullptr;
+        if (a.name.empty()) {
+            if (positional >= inputsInOrder.size()) {
+                ck.error(a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
+                ok = false;
+                continue;
+            }
+            param = inputsInOrder[positional++];
+        } else {
+            std::string key = upper(a.name);
+            for (VarSym* p : params)
+                if (upper(p->name) == key) param = p;
+            if (!param) {
+                ck.error(a.loc, fmt::format("'{}' has no parameter '{}'", callee, a.name));
+                ok = false;
+                continue;
+            }
+            bool isOut = param->section == ast::VarSection::Output;
+            if (a.output && !isOut) {
+                ck.error(a.loc, fmt::format("'{}' is not an output of '{}'; connect it with ':='", a.name, callee));
+                ok = false;
+                continue;
+            }
+            if (!a.output && isOut) {
+                ck.error(a.loc, fmt::format("'{}' is an output of '{}'; connect it with '=>'", a.name, callee));
+                ok = false;
+                continue;
+            }
+        }
+        if (seen.count(param)) {
+            ck.error(a.loc, fmt::format("parameter '{}' given twice", param->name));
+            ok = false;
+            continue;
+        }
+        seen.insert(param);
+        out.push_back({&a, param});
+    }
+    return ok;
+}
+}  // namespace
+
+Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e, bool& handled) {
+    handled = false;
+    const Type* to = nullptr;
+    const Type* from = nullptr;
+    bool truncate = false;
+    auto pos = key.find("_TO_");
+    if (key == "TRUNC") {
+        to = types().elementary(TK::DInt);
+        truncate = true;
+    } else if (key.rfind("TRUNC_", 0) == 0) {
+        to = conversionTypeName(types(), key.substr(6));
+        truncate = true;
+    } else if (key.rfind("TO_", 0) == 0) {
+        to = conversionTypeName(types(), key.substr(3));
+    } else if (pos != std::string::npos && key.find("BCD") == std::string::npos) {
+        from = conversionTypeName(types(), key.substr(0, pos));
+        to = conversionTypeName(types(), key.substr(pos + 4));
+        if (!from) return bad(e.loc);
+    } else if (auto tp = key.find("_TRUNC_"); tp != std::string::npos) {
+        from = conversionTypeName(types(), key.substr(0, tp));
+        to = conversionTypeName(types(), key.substr(tp + 7));
+        truncate = true;
+        if (!from) return bad(e.loc);
+    }
+    if (!to) return bad(e.loc);
+    if (isStringType(to->kind) || (from && isStringType(from->kind))) return bad(e.loc);  // string conversions: stdlib/bind
+    handled = true;
+    if (e.args.size() != 1 || e.args[0].output || !e.args[0].value) {
+        error(e.loc, fmt::format("{} takes exactly one input", key));
+        return bad(e.loc);
+    }
+    Checked a = checkExpr(*e.args[0].value);
+    if (!a.ok) return a;
+    if (truncate && !(isReal(a.type->kind) || a.untypedReal)) {
+        error(e.args[0].value->loc, fmt::format("{} needs a REAL or LREAL input, not {}", key, typeName(a.type)));
+        return bad(e.loc);
+    }
+    if (from) {
+        if (from->kind == TK::Bool && a.type->kind != TK::Bool) {
+            error(e.args[0].value->loc, fmt::format("{} needs a BOOL input, not {}", key, typeName(a.type)));
+            return bad(e.loc);
+        }
+        a = coerce(a, from, e.args[0].value->loc, key.c_str());
+        if (!a.ok) return a;
+    }
+    Checked r = convert(a, to, e.loc, truncate);
+    r.hasCall = a.hasCall;
+    return r;
+}
+
+Checked Checker::checkCall(const ast::Expr& e, bool statement) {
+    const ast::Expr& callee = *e.kids[0];
+    if (callee.kind == ast::ExprKind::Name) {
+        std::string key = upper(callee.name);
+        if (VarSym* v = lookupVar(key)) {
+            if (v->type->kind == TK::FunctionBlock) {
+                error(e.loc, fmt::format("'{}' is a function-block instance: call it as a statement and read its outputs as {}.Q", callee.name, callee.name));
+            } else {
+                error(callee.loc, fmt::format("'{}' is a variable, not a function", callee.name));
+            }
+            return bad(e.loc);
+        }
+        auto it = pous_.find(key);
+        if (it != pous_.end() && it->second->kind == ast::PouKind::Function) {
+            return callUserFunction(it->second, e, nullptr);
+        }
+        bool handled = false;
+        Checked conv = checkConversionCall(key, e, handled);
+        if (handled) return conv;
+        auto b = builtins_.find(key);
+        if (b != builtins_.end()) {
+            CallArgs args;
+            args.call = &e;
+            args.name = key;
+            args.loc = e.loc;
+            for (const auto& a : e.args) {
+                if (!a.value) {
+                    error(a.loc, "missing argument value");
+                    return bad(e.loc);
+                }
+                Checked c = checkExpr(*a.value);
+                if (!c.ok) return bad(e.loc);
+                args.args.push_back(c);
+                args.names.push_back(upper(a.name));
+            }
+            Checked r = b->second(*this, args);
+            if (r.ok) {
+                for (const auto& a : args.args) r.hasCall = r.hasCall || a.hasCall;
+            }
+            return r;
+        }
+        if (it != pous_.end()) {
+            if (it->second->kind == ast::PouKind::Function) return callUserFunction(it->second, e, nullptr);
+            error(callee.loc, fmt::format("'{}' is a {} and cannot be called here", callee.name,
+                                          it->second->kind == ast::PouKind::Program ? "PROGRAM" : "type"));
+            return bad(e.loc);
+        }
+        error(callee.loc, fmt::format("undeclared function '{}'", callee.name));
+        return bad(e.loc);
+    }
+    if (callee.kind == ast::ExprKind::Member) {
+        Checked base = checkExpr(*callee.kids[0]);
+        if (!base.ok) return base;
+        if (base.type->kind == TK::FunctionBlock && base.type->pou) {
+            std::string key = upper(callee.name);
+            for (PouInfo* p = base.type->pou; p; p = p->parent) {
+                auto m = p->methods.find(key);
+                if (m != p->methods.end()) return callUserFunction(m->second, e, base.node);
+            }
+        }
+        error(callee.loc, fmt::format("'{}' is not a method of {}", callee.name, typeName(base.type)));
+        return bad(e.loc);
+    }
+    error(e.loc, "this cannot be called");
+    return bad(e.loc);
+}
+
+Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* instance) {
+    layoutPou(fn);
+    std::vector<ArgBinding> bindings;
+    bool ok = bindArguments(*this, fn->name, fn->params, e, bindings);
+    auto* call = pool().make<exec::CallPou>();
+    call->callee = fn->code;
+    call->instance = instance;
+    call->site = site(e.loc);
+    std::set<VarSym*> connected;
+    for (const auto& b : bindings) {
+        VarSym* p = b.param;
+        connected.insert(p);
+        if (!b.arg->value) continue;
+        if (p->section == ast::VarSection::Output) {
+            Checked target = checkExpr(*b.arg->value);
+            if (!target.ok) { ok = false; continue; }
+            Checked src;
+            src.ok = true;
+            src.loc = b.arg->loc;
+            src.type = p->type;
+            src.node = makeByRep<exec::PendingVar>(pool(), isAggregate(p->type) ? Rep::Void : repOf(p->type), p->offset);
+            src.node->type = p->type;
+            if (b.arg->negated) {
+                if (p->type->kind != TK::Bool) { error(b.arg->loc, "NOT on an output needs a BOOL output"); ok = false; continue; }
+                src.node = pool().make<exec::NotBool>(src.node);
+                src.node->type = p->type;
+            }
+            exec::Stmt* st = assignChecked(target, src, b.arg->loc);
+            if (st) call->outputs.push_back(st);
+            else ok = false;
+            continue;
+        }
+        Checked v = checkExpr(*b.arg->value);
+        if (!v.ok) { ok = false; continue; }
+        if (p->byRef) {
+            if (!v.isPlace) {
+                error(b.arg->value->loc, fmt::format("VAR_IN_OUT '{}' needs a variable, not an expression", p->name));
+                ok = false;
+                continue;
+            }
+            if (!sameType(v.type, p->type) && !(isStringType(v.type->kind) && v.type->kind == p->type->kind)) {
+                error(b.arg->value->loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}", p->name, typeName(p->type), typeName(v.type)));
+                ok = false;
+                continue;
+            }
+            exec::Expr* slot = makeByRep<exec::PendingVar>(pool(), Rep::Void, p->offset);
+            call->inputs.push_back(pool().make<exec::BindAddress>(slot, v.node));
+            continue;
+        }
+        Checked cv = coerce(v, p->type, b.arg->value->loc, fmt::format("argument '{}'", p->name).c_str());
+        if (!cv.ok) { ok = false; continue; }
+        exec::Expr* place = makeByRep<exec::PendingVar>(pool(), isAggregate(p->type) ? Rep::Void : repOf(p->type), p->offset);
+        call->inputs.push_back(storeTo(place, p->type, cv.node));
+    }
+    for (VarSym* p : fn->params)
+        if (p->byRef && !connected.count(p)) {
+            error(e.loc, fmt::format("VAR_IN_OUT '{}' of '{}' must be connected", p->name, fn->name));
+            ok = false;
+        }
+    if (!ok) return bad(e.loc);
+    Checked r;
+    r.ok = true;
+    r.loc = e.loc;
+    r.hasCall = true;
+    r.type = fn->resultType ? fn->resultType : types().voidType();
+    call->rep = resultRepOf(r.type);
+    if (fn->resultType && isAggregate(fn->resultType)) {
+        call->resultSize = fn->resultType->size;
+        call->tempOffset = allocTemp(fn->resultType->size);
+    }
+    call->type = r.type;
+    r.node = call;
+    return r;
+}
+
+exec::Stmt* Checker::callFunctionBlock(Checked inst, const ast::Expr& e) {
+    PouInfo* fb = inst.type->pou;
+    if (!fb) return nullptr;
+    layoutPou(fb);
+    std::vector<ArgBinding> bindings;
+    std::vector<VarSym*> params = fb->params;
+    bool ok = bindArguments(*this, fb->name, params, e, bindings);
+    auto* call = pool().make<exec::CallFbStmt>();
+    call->body = fb->code;
+    call->instance = inst.node;
+    call->site = site(e.loc);
+    std::set<VarSym*> connected;
+    for (const auto& b : bindings) {
+        VarSym* p = b.param;
+        connected.insert(p);
+        if (!b.arg->value) continue;
+        Checked member = memberOf(inst, p->name, b.arg->loc);
+        if (!member.ok) { ok = false; continue; }
+        if (p->section == ast::VarSection::Output) {
+            Checked target = checkExpr(*b.arg->value);
+            if (!target.ok) { ok = false; continue; }
+            Checked src = member;
+            src.readOnly = false;
+            if (b.arg->negated) {
+                if (p->type->kind != TK::Bool) { error(b.arg->loc, "NOT on an output needs a BOOL output"); ok = false; continue; }
+                src.node = pool().make<exec::NotBool>(src.node);
+                src.node->type = p->type;
+            }
+            exec::Stmt* st = assignChecked(target, src, b.arg->loc);
+            if (st) call->outputs.push_back(st);
+            else ok = false;
+            continue;
+        }
+        Checked v = checkExpr(*b.arg->value);
+        if (!v.ok) { ok = false; continue; }
+        if (p->byRef) {
+            if (!v.isPlace) {
+                error(b.arg->value->loc, fmt::format("VAR_IN_OUT '{}' needs a variable, not an expression", p->name));
+                ok = false;
+                continue;
+            }
+            if (!sameType(v.type, p->type) && !(isStringType(v.type->kind) && v.type->kind == p->type->kind)) {
+                error(b.arg->value->loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}", p->name, typeName(p->type), typeName(v.type)));
+                ok = false;
+                continue;
+            }
+            const Field* f = inst.type->findField(upper(p->name));
+            exec::Expr* slot = pool().make<exec::OffsetPlace>(inst.node, f ? f->offset : 0);
+            call->inputs.push_back(pool().make<exec::BindAddress>(slot, v.node));
+            continue;
+        }
+        member.readOnly = false;
+        exec::Stmt* st = assignChecked(member, v, b.arg->loc);
+        if (st) call->inputs.push_back(st);
+        else ok = false;
+    }
+    for (VarSym* p : params)
+        if (p->byRef && !connected.count(p)) {
+            // An unconnected VAR_IN_OUT of an FB keeps its previous binding (CODESYS); only the first call must bind it.
+        }
+    if (!ok) return nullptr;
+    return call;
+}
+
+}  // namespace strun::sema

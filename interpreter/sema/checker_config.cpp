@@ -1,0 +1,257 @@
+// CONFIGURATION / RESOURCE / TASK / PROGRAM ... WITH: program instances and
+// the tasks that run them; or, without a CONFIGURATION, the contract's
+// default: every PROGRAM in one freewheeling MainTask.
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "interpreter/sema/checker.h"
+#include "interpreter/sema/node_factory.h"
+#include "runtime/plc_profile.h"
+#include "runtime/task_rules.h"
+
+namespace strun::sema {
+
+void Checker::instantiateProgram(const std::string& name, PouInfo* pou, const ast::Loc& loc) {
+    layoutPou(pou);
+    for (auto& p : model_.programs)
+        if (upper(p.name) == upper(name)) {
+            error(loc, fmt::format("duplicate program instance '{}'", name));
+            return;
+        }
+    ProgramInstance inst;
+    inst.name = name;
+    inst.pou = pou;
+    inst.loc = loc;
+    size_t size = pou->instanceType ? pou->instanceType->size : 8;
+    inst.memory = model_.allocate(size);
+    if (!pou->instanceInit.empty()) std::memcpy(inst.memory, pou->instanceInit.data(), std::min(size, pou->instanceInit.size()));
+    model_.programs.push_back(std::move(inst));
+}
+
+void Checker::buildDefaultConfiguration() {
+    ConfiguredTask task;
+    task.spec.name = "MainTask";
+    task.spec.kind = rt::TaskKind::Freewheeling;
+    task.spec.priority = 30;
+    task.spec.watchdog = rt::defaultProfile().defaultMainWatchdog;
+    for (PouInfo* p : pouOrder_) {
+        if (p->kind != ast::PouKind::Program || libraryFiles_.count(p->ast->loc.file)) continue;
+        instantiateProgram(p->name, p, p->ast->loc);
+    }
+    for (auto& inst : model_.programs) task.calls.push_back({&inst, inst.pou->code, inst.memory, inst.name});
+    model_.tasks.push_back(std::move(task));
+}
+
+void Checker::buildConfiguration() {
+    if (configurations_.empty()) {
+        buildDefaultConfiguration();
+        return;
+    }
+    model_.hasConfiguration = true;
+    if (configurations_.size() > 1)
+        error(configurations_[1]->loc, "only one CONFIGURATION per project");
+    ast::Configuration& conf = *configurations_.front();
+    std::vector<const ast::TaskDecl*> taskDecls;
+    std::vector<const ast::ProgramConfig*> programDecls;
+    for (auto& t : conf.tasks) taskDecls.push_back(&t);
+    for (auto& p : conf.programs) programDecls.push_back(&p);
+    for (auto& r : conf.resources) {
+        for (auto& t : r.tasks) taskDecls.push_back(&t);
+        for (auto& p : r.programs) programDecls.push_back(&p);
+    }
+    // Tasks
+    auto constTime = [&](const ast::Expr* e, rt::PlcTime& out) {
+        Checked c = checkExpr(*e);
+        if (!c.ok) return false;
+        if (!c.isConst || !isTimeLike(c.type->kind)) {
+            error(e->loc, "expected a constant duration such as T#10ms");
+            return false;
+        }
+        out = c.type->kind == TK::Time ? c.constInt * 1000000 : c.constInt;
+        return true;
+    };
+    auto boolRef = [&](const ast::Expr* e, rt::BoolRef& out) {
+        Checked c = checkExpr(*e);
+        if (!c.ok) return false;
+        if (c.type->kind != TK::Bool || !c.isPlace || c.direct != Checked::Direct::Abs) {
+            if (c.type->kind == TK::Bool && c.node->bitIndex() >= 0) {
+                auto* bp = dynamic_cast<exec::BitPlace<uint8_t>*>(c.node);
+                exec::Ctx dummy;
+                out.byte = bp->base->addr(dummy);
+                out.bit = bp->bit;
+                return true;
+            }
+            error(e->loc, "expected a global BOOL variable");
+            return false;
+        }
+        out.byte = c.directAbs + c.directOffset;
+        out.bit = -1;
+        return true;
+    };
+    for (const ast::TaskDecl* td : taskDecls) {
+        ConfiguredTask task;
+        rt::TaskSpec& s = task.spec;
+        s.name = td->name;
+        s.loc = td->loc;
+        s.kind = rt::TaskKind::Freewheeling;
+        s.priority = 30;
+        bool hasInterval = false;
+        for (const auto& p : td->params) {
+            std::string key = upper(p.name);
+            if (!p.value) continue;
+            if (key == "INTERVAL") {
+                rt::PlcTime t = 0;
+                if (constTime(p.value.get(), t)) {
+                    s.interval = t;
+                    hasInterval = t > 0;
+                }
+            } else if (key == "PRIORITY") {
+                int64_t v = 0;
+                if (constIntExpr(p.value.get(), v, "PRIORITY")) s.priority = static_cast<int>(std::clamp<int64_t>(v, -1000000, 1000000));
+            } else if (key == "WATCHDOG") {
+                constTime(p.value.get(), s.watchdog);
+            } else if (key == "SINGLE" || key == "STATUS") {
+                if (boolRef(p.value.get(), s.trigger)) s.kind = key == "SINGLE" ? rt::TaskKind::Event : rt::TaskKind::Status;
+            } else if (key == "EVENT") {
+                std::string v = p.value->kind == ast::ExprKind::Name ? upper(p.value->name) : "";
+                if (v == "STARTUP") s.kind = rt::TaskKind::Startup;
+                else if (v == "PROGRAM_ERROR") s.kind = rt::TaskKind::ProgramError;
+                else if (v == "EXEC_TIMEOUT") s.kind = rt::TaskKind::ExecTimeout;
+                else if (boolRef(p.value.get(), s.trigger)) s.kind = rt::TaskKind::Event;
+            } else if (key == "AT") {
+                Checked c = checkExpr(*p.value);
+                if (c.ok && c.isConst && (c.type->kind == TK::Dt || c.type->kind == TK::LDt)) {
+                    s.kind = rt::TaskKind::TimeEvent;
+                    s.atCalendarNanos = c.type->kind == TK::Dt ? c.constInt * 1000000000 : c.constInt;
+                } else if (c.ok) {
+                    error(p.value->loc, "AT needs a date-and-time literal such as DT#2026-01-01-02:00:00");
+                }
+            } else if (key == "REPEAT") {
+                std::string v = p.value->kind == ast::ExprKind::Name ? upper(p.value->name) : "";
+                static const std::map<std::string, rt::TimeRepeat> repeats = {
+                    {"HOURLY", rt::TimeRepeat::Hourly}, {"DAILY", rt::TimeRepeat::Daily}, {"WEEKLY", rt::TimeRepeat::Weekly},
+                    {"MONTHLY", rt::TimeRepeat::Monthly}, {"MONTH_END", rt::TimeRepeat::MonthEnd}, {"YEARLY", rt::TimeRepeat::Yearly},
+                    {"ONCE", rt::TimeRepeat::Once}};
+                auto it = repeats.find(v);
+                if (it == repeats.end()) error(p.value->loc, "REPEAT must be HOURLY, DAILY, WEEKLY, MONTHLY, MONTH_END or YEARLY");
+                else s.repeat = it->second;
+            } else {
+                error(p.loc, fmt::format("unknown task parameter '{}'", p.name));
+            }
+        }
+        if (hasInterval && s.kind == rt::TaskKind::Freewheeling) s.kind = rt::TaskKind::Cyclic;
+        model_.tasks.push_back(std::move(task));
+    }
+    std::vector<rt::TaskSpec> specs;
+    for (auto& t : model_.tasks) specs.push_back(t.spec);
+    for (const auto& v : rt::checkTaskRules(rt::defaultProfile(), specs)) error(v.loc, v.message);
+    auto findTask = [&](const std::string& name) -> ConfiguredTask* {
+        for (auto& t : model_.tasks)
+            if (upper(t.spec.name) == upper(name)) return &t;
+        return nullptr;
+    };
+    // Program instances and FB bindings
+    for (const ast::ProgramConfig* pc : programDecls) {
+        ConfiguredTask* task = nullptr;
+        if (!pc->task.empty()) {
+            task = findTask(pc->task);
+            if (!task) {
+                error(pc->loc, fmt::format("unknown task '{}'", pc->task));
+                continue;
+            }
+        } else {
+            task = findTask("DefaultTask");
+            if (!task) {
+                // IEC: a program with no task runs cyclically at the lowest priority.
+                ConfiguredTask dt;
+                dt.spec.name = "DefaultTask";
+                dt.spec.loc = pc->loc;
+                dt.spec.kind = rt::TaskKind::Freewheeling;
+                dt.spec.priority = 31;
+                model_.tasks.push_back(std::move(dt));
+                task = &model_.tasks.back();
+            }
+        }
+        if (!pc->isProgram) {
+            VarSym* g = lookupVar(upper(pc->instance));
+            if (!g || g->type->kind != TK::FunctionBlock || g->storage != Storage::Abs) {
+                error(pc->loc, fmt::format("'{}' is not a global function-block instance", pc->instance));
+                continue;
+            }
+            g->used = true;
+            task->calls.push_back({nullptr, g->type->pou->code, g->abs, pc->instance});
+            continue;
+        }
+        auto it = pous_.find(upper(pc->typeName));
+        if (it == pous_.end() || it->second->kind != ast::PouKind::Program) {
+            error(pc->loc, fmt::format("'{}' is not a PROGRAM", pc->typeName));
+            continue;
+        }
+        instantiateProgram(pc->instance, it->second, pc->loc);
+        ProgramInstance& inst = model_.programs.back();
+        if (upper(inst.name) != upper(pc->instance)) continue;
+        // Parameter connections: evaluated in the configuration's scope each activation.
+        Checked self;
+        self.ok = true;
+        self.loc = pc->loc;
+        self.type = inst.pou->instanceType;
+        self.isPlace = true;
+        self.direct = Checked::Direct::Abs;
+        self.directAbs = inst.memory;
+        self.node = pool().make<exec::AbsVar<void>>(inst.memory);
+        model_.names.push_back(inst.name);
+        currentPouName_ = &model_.names.back();
+        for (const auto& a : pc->args) {
+            if (!a.value) continue;
+            Checked member = memberOf(self, a.name, a.loc);
+            if (!member.ok) continue;
+            member.readOnly = false;
+            if (a.output) {
+                Checked target = checkExpr(*a.value);
+                if (!target.ok) continue;
+                if (exec::Stmt* st = assignChecked(target, member, a.loc)) inst.after.push_back(st);
+            } else {
+                Checked v = checkExpr(*a.value);
+                if (!v.ok) continue;
+                if (exec::Stmt* st = assignChecked(member, v, a.loc)) inst.before.push_back(st);
+            }
+        }
+        currentPouName_ = nullptr;
+        task->calls.push_back({&inst, inst.pou->code, inst.memory, inst.name});
+    }
+}
+
+// ---------------------------------------------------------------- driver
+
+void Checker::run(std::vector<ast::CompilationUnit>& units, bool) {
+    for (auto& u : units) collect(u);
+    // Types and enumerations first, so that enumeration values are known everywhere.
+    for (auto& [key, decl] : typeDecls_) resolveTypeDecl(key, decl->loc);
+    declareGlobals();
+    for (PouInfo* p : pouOrder_)
+        if (p->kind != ast::PouKind::Interface) layoutPou(p);
+    buildConfiguration();
+    checkBodies();
+    if (log_.hasErrors()) return;
+    warnUnused();
+}
+
+void Checker::warnUnused() {
+    for (PouInfo* p : pouOrder_) {
+        if (libraryFiles_.count(p->ast->loc.file)) continue;
+        auto visit = [&](PouInfo* pou) {
+            for (auto& v : pou->ownedVars) {
+                if (v->used || v.get() == pou->result) continue;
+                if (v->section == ast::VarSection::Var || v->section == ast::VarSection::Temp) {
+                    if (pou->kind == ast::PouKind::Program) continue;  // program variables are visible in --dump
+                    log_.warning(v->loc, fmt::format("variable '{}' is never used", v->name));
+                }
+            }
+        };
+        visit(p);
+        for (auto& [n, m] : p->methods) visit(m);
+    }
+}
+
+}  // namespace strun::sema

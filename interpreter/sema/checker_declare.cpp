@@ -1,0 +1,771 @@
+// Declarations: collecting names, resolving types, laying out storage and
+// writing initial values.
+#include <algorithm>
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "interpreter/sema/checker.h"
+#include "interpreter/sema/node_factory.h"
+
+namespace strun::sema {
+
+namespace {
+uint32_t alignUp(uint32_t v, uint32_t a) { return a <= 1 ? v : (v + a - 1) / a * a; }
+constexpr uint32_t kMaxStorage = 256u * 1024u * 1024u;  // per block: keeps absurd declarations from exhausting memory
+constexpr uint32_t kFbHeader = 8;                        // every FB instance starts with its class pointer
+}  // namespace
+
+Checker::Checker(ProgramModel& model, CompileLog& log) : model_(model), log_(log) {}
+
+void Checker::collect(ast::CompilationUnit& unit) {
+    for (auto& t : unit.types) {
+        std::string key = upper(t.name);
+        if (typeDecls_.count(key) || types().byName(key)) {
+            error(t.loc, fmt::format("duplicate type name '{}'", t.name));
+            continue;
+        }
+        typeDecls_[key] = &t;
+    }
+    for (auto& p : unit.pous) declarePou(p.get(), nullptr);
+    for (auto& g : unit.globals) globalLists_.push_back(&g);
+    for (auto& c : unit.configurations) configurations_.push_back(&c);
+}
+
+void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
+    auto info = std::make_unique<PouInfo>();
+    info->ast = pou;
+    info->kind = pou->kind;
+    info->name = pou->name;
+    info->owner = owner;
+    model_.codes.emplace_back();
+    info->code = &model_.codes.back();
+    info->code->name = owner ? owner->name + "." + pou->name : pou->name;
+    PouInfo* raw = info.get();
+    std::string key = upper(pou->name);
+    if (owner) {
+        if (owner->methods.count(key)) error(pou->loc, fmt::format("duplicate method '{}' in '{}'", pou->name, owner->name));
+        owner->methods[key] = raw;
+        model_.pouStore.push_back(std::move(info));
+    } else {
+        if (pous_.count(key) || typeDecls_.count(key) || types().byName(key)) {
+            error(pou->loc, fmt::format("duplicate declaration of '{}'", pou->name));
+            model_.pouStore.push_back(std::move(info));  // keep it alive, unreachable by name
+        } else {
+            pous_[key] = raw;
+            model_.pouStore.push_back(std::move(info));
+            pouOrder_.push_back(raw);
+        }
+    }
+    for (auto& m : pou->methods) declarePou(m.get(), raw);
+}
+
+// ---------------------------------------------------------------- types
+
+const Type* Checker::resolveNamedType(const std::string& name, const ast::Loc& loc) {
+    std::string key = upper(name);
+    auto dot = key.rfind('.');
+    if (dot != std::string::npos && !typeDecls_.count(key) && !pous_.count(key)) key = key.substr(dot + 1);
+    if (const Type* t = types().byName(key)) return t;
+    if (typeDecls_.count(key)) return resolveTypeDecl(key, loc);
+    auto it = pous_.find(key);
+    if (it != pous_.end()) {
+        PouInfo* p = it->second;
+        if (p->kind == ast::PouKind::FunctionBlock || p->kind == ast::PouKind::Program) {
+            layoutPou(p);
+            return p->instanceType;
+        }
+        if (p->kind == ast::PouKind::Interface) {
+            Type t;
+            t.kind = TK::Interface;
+            t.name = p->name;
+            t.size = 8;
+            t.align = 8;
+            t.pou = p;
+            auto& slot = resolvedTypes_[key];
+            if (!slot) slot = types().create(std::move(t));
+            return slot;
+        }
+        error(loc, fmt::format("'{}' is a function, not a type", name));
+        return nullptr;
+    }
+    error(loc, fmt::format("unknown type '{}'", name));
+    return nullptr;
+}
+
+const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc) {
+    auto done = resolvedTypes_.find(key);
+    if (done != resolvedTypes_.end()) return done->second;
+    ast::TypeDecl* decl = typeDecls_.at(key);
+    if (resolvingTypes_.count(key)) {
+        error(decl->loc, fmt::format("type '{}' is defined in terms of itself", decl->name));
+        return nullptr;
+    }
+    resolvingTypes_.insert(key);
+    const Type* result = nullptr;
+    const ast::TypeSpec* spec = decl->spec.get();
+    if (spec && spec->kind == ast::TypeSpecKind::Struct) {
+        Type* t = types().create(Type{});
+        resolvedTypes_[key] = t;  // allows POINTER TO self inside
+        t->kind = TK::Struct;
+        t->name = decl->name;
+        uint32_t off = 0;
+        uint32_t align = 1;
+        if (!decl->extends.empty()) {
+            const Type* base = resolveNamedType(decl->extends, decl->loc);
+            if (base && base->kind == TK::Struct) {
+                t->parent = base;
+                off = base->size;
+                align = base->align;
+            } else if (base) {
+                error(decl->loc, fmt::format("'{}' can only extend a structure", decl->name));
+            }
+        }
+        std::vector<uint8_t> image;
+        if (t->parent) image = t->parent->defaultImage.empty() ? std::vector<uint8_t>(t->parent->size) : t->parent->defaultImage;
+        std::vector<std::pair<const ast::VarDecl*, size_t>> inits;
+        for (const auto& f : spec->fields) {
+            const Type* ft = resolveTypeSpec(f.type.get(), decl->name);
+            if (!ft) continue;
+            for (size_t n = 0; n < f.names.size(); ++n) {
+                if (t->findField(upper(f.names[n]))) {
+                    error(f.loc, fmt::format("duplicate member '{}' in structure '{}'", f.names[n], decl->name));
+                    continue;
+                }
+                off = alignUp(off, ft->align);
+                t->fields.push_back({f.names[n], ft, off, n < f.nameLocs.size() ? f.nameLocs[n] : f.loc});
+                off += ft->size;
+                align = std::max(align, ft->align);
+                if (off > kMaxStorage) { error(f.loc, "structure too large"); off = 0; break; }
+            }
+        }
+        t->size = alignUp(off, align);
+        t->align = align;
+        image.resize(t->size);
+        bool nonZero = false;
+        for (const auto& fld : t->fields) {
+            const ast::VarDecl* fd = nullptr;
+            for (const auto& f : spec->fields)
+                for (const auto& n : f.names)
+                    if (upper(n) == upper(fld.name)) fd = &f;
+            if (fd && fd->init) writeInitial(image.data() + fld.offset, fld.type, fd->init.get(), fd->loc);
+            else writeDefault(image.data() + fld.offset, fld.type);
+        }
+        if (t->parent && !t->parent->defaultImage.empty()) nonZero = true;
+        for (uint8_t b : image) nonZero = nonZero || b != 0;
+        if (nonZero) t->defaultImage = std::move(image);
+        result = t;
+    } else if (spec && spec->kind == ast::TypeSpecKind::Enum) {
+        Type t;
+        t.kind = TK::Enum;
+        t.name = decl->name;
+        const Type* base = spec->elem ? resolveTypeSpec(spec->elem.get(), decl->name) : types().elementary(TK::Int);
+        if (base && !isInteger(base->kind) && !isBitString(base->kind)) {
+            error(spec->loc, "the base type of an enumeration must be an integer type");
+            base = types().elementary(TK::Int);
+        }
+        if (!base) base = types().elementary(TK::Int);
+        t.base = base;
+        t.size = base->size;
+        t.align = base->align;
+        int64_t next = 0;
+        for (const auto& ev : spec->enumValues) {
+            int64_t v = next;
+            if (ev.value && !constIntExpr(ev.value.get(), v, "an enumeration value")) v = next;
+            for (const auto& other : t.enumerators)
+                if (upper(other.name) == upper(ev.name)) error(ev.loc, fmt::format("duplicate enumeration value '{}'", ev.name));
+            t.enumerators.push_back({ev.name, v});
+            next = v + 1;
+        }
+        t.enumDefault = t.enumerators.empty() ? 0 : t.enumerators.front().value;
+        Type* created = types().create(std::move(t));
+        resolvedTypes_[key] = created;
+        for (const auto& e : created->enumerators) {
+            std::string ek = upper(e.name);
+            if (enumValues_.count(ek)) ambiguousEnumValues_.insert(ek);
+            else enumValues_[ek] = {created, &e};
+        }
+        if (decl->init && decl->init->expr && decl->init->expr->kind == ast::ExprKind::Name) {
+            bool found = false;
+            for (const auto& e : created->enumerators)
+                if (upper(e.name) == upper(decl->init->expr->name)) { created->enumDefault = e.value; found = true; }
+            if (!found) error(decl->init->loc, fmt::format("'{}' is not a value of '{}'", decl->init->expr->name, decl->name));
+        }
+        created->defaultImage.resize(created->size);
+        writeScalar(created->defaultImage.data(), created, constInt(created->enumDefault, created->base, decl->loc));
+        result = created;
+    } else if (spec) {
+        const Type* base = resolveTypeSpec(spec, decl->name);
+        if (base && (decl->init || spec->kind == ast::TypeSpecKind::Subrange)) {
+            Type t = *base;
+            t.name = decl->name;
+            if (decl->init) {
+                t.defaultImage.assign(t.size, 0);
+                writeInitial(t.defaultImage.data(), base, decl->init.get(), decl->loc);
+            }
+            result = types().create(std::move(t));
+        } else {
+            result = base;  // a plain alias is the same type
+        }
+    }
+    resolvingTypes_.erase(key);
+    resolvedTypes_[key] = result;
+    return result;
+}
+
+const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::string& context) {
+    if (!spec) return nullptr;
+    switch (spec->kind) {
+        case ast::TypeSpecKind::Named: return resolveNamedType(spec->name, spec->loc);
+        case ast::TypeSpecKind::String: {
+            int64_t len = 80;
+            if (spec->length && !constIntExpr(spec->length.get(), len, "a string length")) len = 80;
+            if (len < 1 || len > 65535) {
+                error(spec->loc, fmt::format("string length {} outside 1..65535", len));
+                len = 80;
+            }
+            return types().string(static_cast<uint32_t>(len), spec->wide);
+        }
+        case ast::TypeSpecKind::Array: {
+            const Type* elem = resolveTypeSpec(spec->elem.get(), context);
+            if (!elem) return nullptr;
+            std::vector<ArrayDim> dims;
+            bool flexible = false;
+            uint64_t total = elem->size;
+            for (const auto& r : spec->dims) {
+                if (r.star) { flexible = true; dims.push_back({0, -1}); continue; }
+                int64_t lo = 0, hi = 0;
+                bool ok = constIntExpr(r.lo.get(), lo, "an array bound") & constIntExpr(r.hi.get(), hi, "an array bound");
+                if (!ok) return nullptr;
+                if (hi < lo) {
+                    error(spec->loc, fmt::format("array upper bound {} is below lower bound {}", hi, lo));
+                    return nullptr;
+                }
+                uint64_t n = static_cast<uint64_t>(hi - lo) + 1;
+                total *= n;
+                if (n > kMaxStorage || total > kMaxStorage) {
+                    error(spec->loc, "array too large (more than 256 MiB)");
+                    return nullptr;
+                }
+                dims.push_back({lo, hi});
+            }
+            const Type* t = types().array(elem, std::move(dims), flexible);
+            return t;
+        }
+        case ast::TypeSpecKind::Pointer: {
+            const Type* target = resolveTypeSpec(spec->elem.get(), context);
+            return target ? types().pointer(target) : nullptr;
+        }
+        case ast::TypeSpecKind::Reference: {
+            const Type* target = resolveTypeSpec(spec->elem.get(), context);
+            return target ? types().reference(target) : nullptr;
+        }
+        case ast::TypeSpecKind::Subrange: {
+            const Type* base = resolveTypeSpec(spec->elem.get(), context);
+            if (!base) return nullptr;
+            if (!isInteger(base->kind)) {
+                error(spec->loc, "a subrange needs an integer base type");
+                return base;
+            }
+            int64_t lo = 0, hi = 0;
+            if (!constIntExpr(spec->lo.get(), lo, "a subrange bound") || !constIntExpr(spec->hi.get(), hi, "a subrange bound"))
+                return base;
+            Type t = *base;
+            t.isSubrange = true;
+            t.rangeLo = lo;
+            t.rangeHi = hi;
+            t.base = base;
+            t.name = fmt::format("{}({}..{})", base->name, lo, hi);
+            if (lo > 0 || hi < 0) {
+                t.defaultImage.assign(t.size, 0);
+                writeScalar(t.defaultImage.data(), base, constInt(lo, base, spec->loc));
+            }
+            return types().create(std::move(t));
+        }
+        case ast::TypeSpecKind::Enum: {
+            // Inline enumeration in a declaration: an anonymous enum type.
+            static int counter = 0;
+            std::string name = fmt::format("__ENUM_{}_{}", context, counter++);
+            auto decl = std::make_unique<ast::TypeDecl>();
+            decl->name = name;
+            decl->loc = spec->loc;
+            // Borrow the spec: the anonymous decl only lives during resolution.
+            ast::TypeSpec copy;
+            copy.kind = spec->kind;
+            copy.loc = spec->loc;
+            for (const auto& ev : spec->enumValues) {
+                ast::EnumValue v;
+                v.loc = ev.loc;
+                v.name = ev.name;
+                if (ev.value) {
+                    // Values of inline enumerations are evaluated now, so the AST stays untouched.
+                    int64_t iv = 0;
+                    if (constIntExpr(ev.value.get(), iv, "an enumeration value")) {
+                        v.value = std::make_unique<ast::Expr>();
+                        v.value->kind = ast::ExprKind::Literal;
+                        v.value->lit = ast::LitKind::Integer;
+                        v.value->text = std::to_string(iv < 0 ? -iv : iv);
+                        if (iv < 0) {
+                            auto neg = std::make_unique<ast::Expr>();
+                            neg->kind = ast::ExprKind::Unary;
+                            neg->op = ast::Op::Neg;
+                            neg->kids.push_back(std::move(v.value));
+                            v.value = std::move(neg);
+                        }
+                    }
+                }
+                copy.enumValues.push_back(std::move(v));
+            }
+            decl->spec = std::make_unique<ast::TypeSpec>(std::move(copy));
+            std::string key = upper(name);
+            typeDecls_[key] = decl.get();
+            const Type* t = resolveTypeDecl(key, spec->loc);
+            inlineEnumDecls_.push_back(std::move(decl));
+            return t;
+        }
+        case ast::TypeSpecKind::Struct:
+            error(spec->loc, "a STRUCT can only be declared in a TYPE");
+            return nullptr;
+    }
+    return nullptr;
+}
+
+bool Checker::constIntExpr(const ast::Expr* e, int64_t& out, const char* what) {
+    if (!e) return false;
+    Checked c = checkExpr(*e);
+    if (!c.ok) return false;
+    if (!c.isConst || !(isIntRep(c.type) || c.untypedInt)) {
+        error(e->loc, fmt::format("{} must be a constant integer expression", what));
+        return false;
+    }
+    out = c.constInt;
+    return true;
+}
+
+// ---------------------------------------------------------------- layout
+
+void Checker::layoutPou(PouInfo* pou) {
+    if (pou->laidOut) return;
+    if (pou->layingOut) {
+        error(pou->ast->loc, fmt::format("'{}' contains an instance of itself", pou->name));
+        return;
+    }
+    pou->layingOut = true;
+    PouInfo* savedPou = pou_;
+    pou_ = pou;
+    const bool hasInstance = pou->kind == ast::PouKind::Program || pou->kind == ast::PouKind::FunctionBlock;
+    uint32_t instOff = 0;
+    uint32_t frameOff = 0;
+    std::vector<Field> fields;
+    Type* inst = nullptr;
+    if (hasInstance) {
+        inst = types().create(Type{});
+        inst->kind = TK::FunctionBlock;
+        inst->name = pou->name;
+        inst->pou = pou;
+        pou->instanceType = inst;
+        if (pou->kind == ast::PouKind::FunctionBlock) instOff = kFbHeader;
+        if (!pou->ast->extends.empty() && pou->kind == ast::PouKind::FunctionBlock) {
+            auto it = pous_.find(upper(pou->ast->extends));
+            if (it == pous_.end() || it->second->kind != ast::PouKind::FunctionBlock) {
+                error(pou->ast->loc, fmt::format("unknown function block '{}' in EXTENDS", pou->ast->extends));
+            } else {
+                layoutPou(it->second);
+                pou->parent = it->second;
+                inst->parent = pou->parent->instanceType;
+                instOff = pou->parent->instanceType ? pou->parent->instanceType->size : kFbHeader;
+                pou->params = pou->parent->params;
+            }
+        }
+    }
+    if (pou->kind == ast::PouKind::Function || pou->kind == ast::PouKind::Method) {
+        if (pou->ast->returnType) {
+            pou->resultType = resolveTypeSpec(pou->ast->returnType.get(), pou->name);
+            if (pou->resultType) {
+                auto v = std::make_unique<VarSym>();
+                v->name = pou->name;
+                v->loc = pou->ast->loc;
+                v->type = pou->resultType;
+                v->section = ast::VarSection::Output;
+                v->storage = Storage::Frame;
+                v->offset = 0;
+                v->owner = pou;
+                frameOff = pou->resultType->size;
+                pou->result = v.get();
+                pou->vars[upper(pou->name)] = v.get();
+                pou->ownedVars.push_back(std::move(v));
+            }
+        }
+    }
+    declareVars(pou, pou->ast->vars, instOff, frameOff, hasInstance ? &fields : nullptr);
+    if (inst) {
+        uint32_t align = 8;
+        inst->fields = std::move(fields);
+        inst->size = alignUp(std::max<uint32_t>(instOff, 1), align);
+        inst->align = align;
+        // Initial image: parent image, then own members.
+        std::vector<uint8_t> image(inst->size, 0);
+        if (pou->parent && pou->parent->instanceType)
+            std::memcpy(image.data(), pou->parent->instanceInit.data(), pou->parent->instanceInit.size());
+        for (auto& v : pou->ownedVars) {
+            if (v->storage != Storage::Self || v->byRef) continue;
+            if (v->decl && v->decl->init) writeInitial(image.data() + v->offset, v->type, v->decl->init.get(), v->decl->loc);
+            else writeDefault(image.data() + v->offset, v->type);
+        }
+        pou->instanceInit = image;
+        inst->defaultImage = std::move(image);
+    }
+    pou->frameSize = alignUp(frameOff, 16);
+    pou->code->frameSize = pou->frameSize;
+    pou->code->resultOffset = 0;
+    pou->code->frameInit.assign(pou->frameSize, 0);
+    for (auto& v : pou->ownedVars) {
+        if (v->storage != Storage::Frame || v->byRef) continue;
+        uint8_t* p = pou->code->frameInit.data() + v->offset;
+        if (v->decl && v->decl->init) writeInitial(p, v->type, v->decl->init.get(), v->decl->loc);
+        else writeDefault(p, v->type);
+    }
+    pou->layingOut = false;
+    pou->laidOut = true;
+    pou_ = savedPou;
+    for (auto& [name, m] : pou->methods) layoutPou(m);
+}
+
+void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks, uint32_t& instOff, uint32_t& frameOff,
+                          std::vector<Field>* instanceFields) {
+    const bool hasInstance = instanceFields != nullptr;
+    for (const auto& block : blocks) {
+        for (const auto& decl : block.vars) {
+            const Type* t = nullptr;
+            bool isExternal = block.section == ast::VarSection::External;
+            if (decl.type) t = resolveTypeSpec(decl.type.get(), pou->name);
+            if (!t && !isExternal) continue;
+            for (size_t n = 0; n < decl.names.size(); ++n) {
+                const std::string& name = decl.names[n];
+                ast::Loc loc = n < decl.nameLocs.size() ? decl.nameLocs[n] : decl.loc;
+                std::string key = upper(name);
+                bool dup = pou->vars.count(key) != 0;
+                for (PouInfo* p = pou->parent; p && !dup; p = p->parent) dup = p->vars.count(key) != 0;
+                if (dup) {
+                    error(loc, fmt::format("duplicate variable '{}' in '{}'", name, pou->name));
+                    continue;
+                }
+                auto v = std::make_unique<VarSym>();
+                v->name = name;
+                v->loc = loc;
+                v->type = t;
+                v->section = block.section;
+                v->constant = block.constant;
+                v->retain = block.retain || block.persistent;
+                v->decl = &decl;
+                v->owner = pou;
+                if (isExternal) {
+                    auto g = globals_.find(key);
+                    if (g == globals_.end()) {
+                        error(loc, fmt::format("VAR_EXTERNAL '{}' names no global variable", name));
+                        continue;
+                    }
+                    if (t && !sameType(t, g->second->type))
+                        error(loc, fmt::format("VAR_EXTERNAL '{}' is declared {} but the global is {}", name, typeName(t), typeName(g->second->type)));
+                    v->global = g->second;
+                    v->type = g->second->type;
+                    v->storage = Storage::Abs;
+                    v->abs = g->second->abs;
+                    v->bit = g->second->bit;
+                    v->constant = v->constant || g->second->constant;
+                    pou->vars[key] = v.get();
+                    pou->ownedVars.push_back(std::move(v));
+                    continue;
+                }
+                if (t->kind == TK::Array && t->flexible && block.section != ast::VarSection::InOut)
+                    error(loc, "ARRAY[*] is only allowed in VAR_IN_OUT");
+                const bool byRef = block.section == ast::VarSection::InOut;
+                const uint32_t size = byRef ? 8 : t->size;
+                const uint32_t align = byRef ? 8 : t->align;
+                if (!decl.address.empty() && decl.address.find('*') == std::string::npos) {
+                    int bit = -1;
+                    v->abs = mapAddress(decl.address, t, loc, bit);
+                    v->bit = bit;
+                    v->storage = Storage::Abs;
+                    if (!v->abs) continue;
+                } else if (block.section == ast::VarSection::Temp || !hasInstance) {
+                    if (block.section == ast::VarSection::Stat) {
+                        v->storage = Storage::Abs;
+                        v->abs = model_.allocate(size);
+                        writeDefault(v->abs, t);
+                        if (decl.init) writeInitial(v->abs, t, decl.init.get(), decl.loc);
+                    } else {
+                        frameOff = alignUp(frameOff, align);
+                        v->storage = Storage::Frame;
+                        v->offset = frameOff;
+                        frameOff += size;
+                        if (frameOff > kMaxStorage) { error(loc, "too many local variables (frame above 256 MiB)"); frameOff = 0; }
+                    }
+                } else {
+                    instOff = alignUp(instOff, align);
+                    v->storage = Storage::Self;
+                    v->offset = instOff;
+                    instOff += size;
+                    if (instOff > kMaxStorage) { error(loc, "instance too large (above 256 MiB)"); instOff = 0; }
+                    instanceFields->push_back({name, byRef ? types().reference(t) : t, v->offset, loc});
+                }
+                v->byRef = byRef;
+                model_.largestType = std::max(model_.largestType, t->size);
+                if (block.section == ast::VarSection::Input || block.section == ast::VarSection::Output ||
+                    block.section == ast::VarSection::InOut)
+                    pou->params.push_back(v.get());
+                if (block.constant) {
+                    if (!decl.init) error(loc, fmt::format("CONSTANT '{}' needs an initial value", name));
+                    else if (decl.init->kind == ast::InitKind::Expr && (isIntRep(t) || isRealRep(t))) {
+                        Checked c = checkExpr(*decl.init->expr);
+                        if (c.ok && c.isConst) {
+                            c = coerce(c, t, decl.init->loc, "initial value");
+                            if (c.ok && c.isConst) {
+                                v->hasConstValue = true;
+                                v->constInt = c.constInt;
+                                v->constReal = c.constReal;
+                            }
+                        }
+                    }
+                }
+                pou->vars[key] = v.get();
+                pou->ownedVars.push_back(std::move(v));
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------- globals
+
+VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlock& block) {
+    const std::string& name = decl.names[n];
+    ast::Loc loc = n < decl.nameLocs.size() ? decl.nameLocs[n] : decl.loc;
+    std::string key = upper(name);
+    if (globals_.count(key)) {
+        error(loc, fmt::format("duplicate global variable '{}'", name));
+        return nullptr;
+    }
+    const Type* t = resolveTypeSpec(decl.type.get(), name);
+    if (!t) return nullptr;
+    auto v = std::make_unique<VarSym>();
+    v->name = name;
+    v->loc = loc;
+    v->type = t;
+    v->section = ast::VarSection::Global;
+    v->constant = block.constant;
+    v->retain = block.retain || block.persistent;
+    v->decl = &decl;
+    v->storage = Storage::Abs;
+    model_.largestType = std::max(model_.largestType, t->size);
+    if (!decl.address.empty() && decl.address.find('*') == std::string::npos) {
+        int bit = -1;
+        v->abs = mapAddress(decl.address, t, loc, bit);
+        v->bit = bit;
+        if (!v->abs) return nullptr;
+        if (decl.init) writeInitial(v->abs, t, decl.init.get(), decl.loc);
+    } else {
+        v->abs = model_.allocate(t->size);
+        writeDefault(v->abs, t);
+        if (decl.init) writeInitial(v->abs, t, decl.init.get(), decl.loc);
+    }
+    if (block.constant && decl.init && decl.init->kind == ast::InitKind::Expr && (isIntRep(t) || isRealRep(t))) {
+        Checked c = checkExpr(*decl.init->expr);
+        if (c.ok && c.isConst) {
+            c = coerce(c, t, decl.init->loc, "initial value");
+            if (c.ok && c.isConst) {
+                v->hasConstValue = true;
+                v->constInt = c.constInt;
+                v->constReal = c.constReal;
+            }
+        }
+    }
+    VarSym* raw = v.get();
+    globals_[key] = raw;
+    model_.globals.push_back(raw);
+    model_.globalStore.push_back(std::move(v));
+    return raw;
+}
+
+void Checker::declareGlobals() {
+    auto declareBlocks = [&](const std::vector<ast::VarBlock>& blocks) {
+        for (const auto& block : blocks) {
+            if (block.section != ast::VarSection::Global) continue;
+            for (const auto& decl : block.vars)
+                for (size_t n = 0; n < decl.names.size(); ++n) addGlobal(decl, n, block);
+        }
+    };
+    for (auto* list : globalLists_) declareBlocks(list->blocks);
+    for (auto* conf : configurations_) {
+        declareBlocks(conf->globals);
+        for (auto& res : conf->resources) declareBlocks(res.globals);
+    }
+}
+
+// ---------------------------------------------------------------- initial values
+
+void Checker::writeDefault(uint8_t* p, const Type* t) {
+    if (!t) return;
+    if (!t->defaultImage.empty()) {
+        std::memcpy(p, t->defaultImage.data(), std::min<size_t>(t->defaultImage.size(), t->size));
+        return;
+    }
+    if (t->kind == TK::Array && t->elem && !t->elem->defaultImage.empty()) {
+        for (uint64_t k = 0; k < t->elemCount; ++k) writeDefault(p + k * t->elem->size, t->elem);
+    }
+}
+
+void Checker::writeScalar(uint8_t* p, const Type* t, const Checked& v) {
+    const Type* st = t->kind == TK::Enum ? t->base : t;
+    switch (st->kind) {
+        case TK::Real: { float f = static_cast<float>(v.constReal); std::memcpy(p, &f, 4); return; }
+        case TK::LReal: std::memcpy(p, &v.constReal, 8); return;
+        default: break;
+    }
+    int64_t iv = v.constInt;
+    switch (st->size) {
+        case 1: { uint8_t b = static_cast<uint8_t>(st->kind == TK::Bool ? (iv != 0) : iv); std::memcpy(p, &b, 1); break; }
+        case 2: { uint16_t w = static_cast<uint16_t>(iv); std::memcpy(p, &w, 2); break; }
+        case 4: { uint32_t d = static_cast<uint32_t>(iv); std::memcpy(p, &d, 4); break; }
+        default: std::memcpy(p, &iv, 8); break;
+    }
+}
+
+void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, const ast::Loc& loc) {
+    if (!t || !init) return;
+    switch (init->kind) {
+        case ast::InitKind::Expr: {
+            if (!init->expr) return;
+            Checked c = checkExpr(*init->expr);
+            if (!c.ok) return;
+            if (t->kind == TK::Enum && c.type && c.type->kind == TK::Enum && c.type != t) {
+                error(init->loc, fmt::format("initial value of type {} for a variable of type {}", typeName(c.type), typeName(t)));
+                return;
+            }
+            c = coerce(c, t, init->expr->loc, "initial value");
+            if (!c.ok) return;
+            if (isIntRep(t) || isRealRep(t)) {
+                if (!c.isConst) {
+                    error(init->expr->loc, "an initial value must be a constant expression");
+                    return;
+                }
+                writeScalar(p, t, c);
+            } else if (isStringType(t->kind)) {
+                auto* bytes = dynamic_cast<exec::ConstBytes*>(c.node);
+                if (!bytes) { error(init->expr->loc, "an initial value must be a constant expression"); return; }
+                size_t n = std::min<size_t>(bytes->bytes.size(), t->size);
+                std::memcpy(p, bytes->bytes.data(), n);
+                p[t->size - 1] = 0;
+                if (t->kind == TK::WString) p[t->size - 2] = 0;
+            } else {
+                error(init->expr->loc, fmt::format("a value of type {} cannot be initialised with an expression", typeName(t)));
+            }
+            return;
+        }
+        case ast::InitKind::Array: {
+            if (t->kind != TK::Array || t->flexible) {
+                error(init->loc, fmt::format("an array initialiser for a variable of type {}", typeName(t)));
+                return;
+            }
+            uint64_t k = 0;
+            for (const auto& item : init->items) {
+                int64_t repeat = 1;
+                if (item.repeat && !constIntExpr(item.repeat.get(), repeat, "a repetition count")) repeat = 1;
+                if (repeat < 0) repeat = 0;
+                for (int64_t r = 0; r < repeat; ++r) {
+                    if (k >= t->elemCount) {
+                        error(init->loc, fmt::format("too many initial values for {} elements", t->elemCount));
+                        return;
+                    }
+                    if (item.value) writeInitial(p + k * t->elem->size, t->elem, item.value.get(), loc);
+                    ++k;
+                }
+            }
+            return;
+        }
+        case ast::InitKind::Struct: {
+            if (t->kind != TK::Struct && t->kind != TK::FunctionBlock) {
+                error(init->loc, fmt::format("a structure initialiser for a variable of type {}", typeName(t)));
+                return;
+            }
+            for (const auto& f : init->fields) {
+                const Field* fld = t->findField(upper(f.name));
+                if (!fld) {
+                    error(f.loc, fmt::format("'{}' has no member '{}'", typeName(t), f.name));
+                    continue;
+                }
+                const Type* ft = fld->type;
+                if (ft->kind == TK::Reference && t->kind == TK::FunctionBlock) continue;
+                writeInitial(p + fld->offset, ft, f.value.get(), f.loc);
+            }
+            return;
+        }
+    }
+}
+
+uint8_t* Checker::mapAddress(const std::string& address, const Type* t, const ast::Loc& loc, int& bit) {
+    // %<area><size><index>[.<bit>] — CODESYS addressing (see runtime/machine.h).
+    std::string a = upper(address);
+    bit = -1;
+    auto fail = [&](const std::string& why) -> uint8_t* {
+        error(loc, fmt::format("bad direct address '{}': {}", address, why));
+        return nullptr;
+    };
+    if (a.size() < 3 || a[0] != '%') return fail("expected %I, %Q or %M");
+    std::vector<uint8_t>* area = nullptr;
+    switch (a[1]) {
+        case 'I': area = &model_.machine.image.inputs; break;
+        case 'Q': area = &model_.machine.image.outputs; break;
+        case 'M': area = &model_.machine.image.memory; break;
+        default: return fail("expected %I, %Q or %M");
+    }
+    size_t pos = 2;
+    char size = 'X';
+    if (pos < a.size() && std::isalpha(static_cast<unsigned char>(a[pos]))) size = a[pos++];
+    uint64_t unit = 0;
+    switch (size) {
+        case 'X': unit = 0; break;
+        case 'B': unit = 1; break;
+        case 'W': unit = 2; break;
+        case 'D': unit = 4; break;
+        case 'L': unit = 8; break;
+        default: return fail("size must be X, B, W, D or L");
+    }
+    std::vector<uint64_t> parts;
+    uint64_t cur = 0;
+    bool any = false;
+    for (; pos < a.size(); ++pos) {
+        char ch = a[pos];
+        if (ch >= '0' && ch <= '9') {
+            cur = cur * 10 + static_cast<uint64_t>(ch - '0');
+            any = true;
+            if (cur > rt::ProcessImage::kSize * 8) return fail("address outside the process image");
+        } else if (ch == '.' && any) {
+            parts.push_back(cur);
+            cur = 0;
+            any = false;
+        } else {
+            return fail("malformed");
+        }
+    }
+    if (!any) return fail("malformed");
+    parts.push_back(cur);
+    uint64_t byte = 0;
+    if (unit == 0) {
+        if (parts.size() == 1) { byte = parts[0] / 8; bit = static_cast<int>(parts[0] % 8); }
+        else { byte = parts[parts.size() - 2]; bit = static_cast<int>(parts.back()); }
+        if (bit > 7) return fail("bit number above 7");
+        if (t->kind != TK::Bool) return fail("a bit address needs a BOOL variable");
+    } else {
+        if (parts.size() != 1) {
+            // %MW1.3: a bit of a word is not a storage location of its own.
+            return fail("a bit number only goes with X addresses");
+        }
+        byte = parts[0] * unit;
+        if (t->size > unit && t->kind != TK::Array && t->kind != TK::Struct && !isStringType(t->kind))
+            log_.warning(loc, fmt::format("{} is larger than the {}-byte address '{}'", typeName(t), unit, address));
+    }
+    if (byte + std::max<uint64_t>(t->size, 1) > area->size()) return fail("address outside the process image");
+    return area->data() + byte;
+}
+
+}  // namespace strun::sema

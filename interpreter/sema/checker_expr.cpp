@@ -1,0 +1,926 @@
+// Expressions: literals, names, members, subscripts, operators and the
+// implicit conversions of IEC 61131-3.
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "interpreter/sema/checker.h"
+#include "interpreter/sema/node_factory.h"
+#include "stdlib/literals.h"
+#include "stdlib/time_literals.h"
+
+namespace strun::sema {
+
+using exec::CmpOp;
+
+namespace {
+
+bool fitsIn(int64_t v, bool untypedUnsignedBig, const Type* t) {
+    TK k = t->kind == TK::Enum ? t->base->kind : t->kind;
+    if (k == TK::Bool) return !untypedUnsignedBig && (v == 0 || v == 1);
+    TK view = integerView(k);
+    int bits = bitWidth(view);
+    if (isSignedInt(view)) {
+        if (untypedUnsignedBig) return false;
+        if (bits >= 64) return true;
+        int64_t lo = -(int64_t(1) << (bits - 1)), hi = (int64_t(1) << (bits - 1)) - 1;
+        return v >= lo && v <= hi;
+    }
+    if (untypedUnsignedBig) return bits >= 64;
+    if (v < 0) return false;
+    if (bits >= 64) return true;
+    return static_cast<uint64_t>(v) <= ((uint64_t(1) << bits) - 1);
+}
+
+// Natural type of an untyped integer literal: DINT, LINT or ULINT.
+TK naturalIntKind(const Checked& c) {
+    if (c.constInt >= std::numeric_limits<int32_t>::min() && c.constInt <= std::numeric_limits<int32_t>::max()) return TK::DInt;
+    return TK::LInt;
+}
+
+int64_t wrapBits(int64_t v, const Type* t) {
+    TK k = t->kind == TK::Enum ? t->base->kind : t->kind;
+    if (k == TK::Bool) return v != 0;
+    int bits = bitWidth(integerView(k));
+    if (bits >= 64) return v;
+    uint64_t mask = (uint64_t(1) << bits) - 1;
+    uint64_t u = static_cast<uint64_t>(v) & mask;
+    if (isSignedInt(integerView(k)) && ((u >> (bits - 1)) & 1)) u |= ~mask;
+    return static_cast<int64_t>(u);
+}
+
+}  // namespace
+
+exec::Site Checker::site(const ast::Loc& loc) { return exec::Site{currentPouName_, loc.line}; }
+
+Checked Checker::constInt(int64_t v, const Type* t, const ast::Loc& loc) {
+    Checked c;
+    c.ok = true;
+    c.type = t;
+    c.isConst = true;
+    c.constInt = v;
+    c.constReal = static_cast<double>(v);
+    c.loc = loc;
+    c.node = pool().make<exec::ConstInt>(v);
+    c.node->type = t;
+    return c;
+}
+
+Checked Checker::constReal(double v, const Type* t, const ast::Loc& loc) {
+    Checked c;
+    c.ok = true;
+    c.type = t;
+    c.isConst = true;
+    if (t->kind == TK::Real) v = static_cast<double>(static_cast<float>(v));
+    c.constReal = v;
+    c.loc = loc;
+    c.node = pool().make<exec::ConstReal>(v);
+    c.node->type = t;
+    return c;
+}
+
+Checked Checker::settle(Checked e) {
+    if (e.untypedInt) {
+        e.untypedInt = false;
+        e.type = types().elementary(naturalIntKind(e));
+        e.node->type = e.type;
+    } else if (e.untypedReal) {
+        e.untypedReal = false;
+        e.type = types().elementary(TK::LReal);
+        e.node->type = e.type;
+    }
+    return e;
+}
+
+// ---------------------------------------------------------------- literals
+
+Checked Checker::checkLiteral(const ast::Expr& e) {
+    auto fail = [&](const std::string& why) {
+        error(e.loc, why);
+        return bad(e.loc);
+    };
+    switch (e.lit) {
+        case ast::LitKind::Integer: {
+            auto r = stdlib::parseIntegerLiteral(e.text);
+            if (!r) return fail(fmt::format("invalid integer literal '{}': {}", e.text.substr(0, 40), r.error()));
+            Checked c = constInt(static_cast<int64_t>(r.value()), types().elementary(TK::LInt), e.loc);
+            if (r.value() > static_cast<uint64_t>(std::numeric_limits<int64_t>::max())) {
+                c.type = types().elementary(TK::ULInt);
+                c.node->type = c.type;
+                c.constReal = static_cast<double>(r.value());
+                return c;  // only fits ULINT / LWORD
+            }
+            c.untypedInt = true;
+            c.type = types().elementary(naturalIntKind(c));
+            c.node->type = c.type;
+            return c;
+        }
+        case ast::LitKind::Real: {
+            auto r = stdlib::parseRealLiteral(e.text);
+            if (!r) return fail(fmt::format("invalid real literal '{}': {}", e.text.substr(0, 40), r.error()));
+            Checked c = constReal(r.value(), types().elementary(TK::LReal), e.loc);
+            c.untypedReal = true;
+            return c;
+        }
+        case ast::LitKind::Bool: {
+            bool v = upper(e.text) == "TRUE";
+            return constInt(v, types().elementary(TK::Bool), e.loc);
+        }
+        case ast::LitKind::String:
+        case ast::LitKind::WString: {
+            bool wide = e.lit == ast::LitKind::WString;
+            std::vector<uint8_t> bytes;
+            size_t len = 0;
+            if (wide) {
+                auto r = stdlib::parseWideStringLiteral(e.text);
+                if (!r) return fail(fmt::format("invalid string literal: {}", r.error()));
+                len = r.value().size();
+                bytes.resize((len + 1) * 2);
+                std::memcpy(bytes.data(), r.value().data(), len * 2);
+            } else {
+                auto r = stdlib::parseStringLiteral(e.text);
+                if (!r) return fail(fmt::format("invalid string literal: {}", r.error()));
+                len = r.value().size();
+                bytes.resize(len + 1);
+                std::memcpy(bytes.data(), r.value().data(), len);
+            }
+            if (len > 65535) return fail("string literal longer than 65535 characters");
+            Checked c;
+            c.ok = true;
+            c.isConst = true;
+            c.loc = e.loc;
+            c.type = types().string(static_cast<uint32_t>(std::max<size_t>(len, 1)), wide);
+            bytes.resize(c.type->size, 0);
+            c.node = pool().make<exec::ConstBytes>(std::move(bytes));
+            c.node->type = c.type;
+            return c;
+        }
+        case ast::LitKind::Duration: {
+            auto r = stdlib::parseDurationLiteral(e.text);
+            if (!r) return fail(fmt::format("invalid duration literal '{}': {}", e.text.substr(0, 40), r.error()));
+            std::string u = upper(e.text);
+            bool isLong = u.rfind("LT", 0) == 0;
+            if (isLong) return constInt(r.value(), types().elementary(TK::LTime), e.loc);
+            int64_t ms = r.value() / 1000000;
+            if (ms > std::numeric_limits<int32_t>::max() || ms < std::numeric_limits<int32_t>::min())
+                return fail(fmt::format("'{}' is outside the range of TIME (32-bit milliseconds); use LTIME", e.text));
+            return constInt(ms, types().elementary(TK::Time), e.loc);
+        }
+        case ast::LitKind::Date:
+        case ast::LitKind::TimeOfDay:
+        case ast::LitKind::DateTime: {
+            std::string u = upper(e.text);
+            bool isLong = u[0] == 'L';
+            stdlib::Result<int64_t> r = e.lit == ast::LitKind::Date ? stdlib::parseDateLiteral(e.text)
+                                        : e.lit == ast::LitKind::TimeOfDay ? stdlib::parseTimeOfDayLiteral(e.text)
+                                                                          : stdlib::parseDateTimeLiteral(e.text);
+            if (!r) return fail(fmt::format("invalid literal '{}': {}", e.text.substr(0, 40), r.error()));
+            if (isLong) {
+                TK k = e.lit == ast::LitKind::Date ? TK::LDate : e.lit == ast::LitKind::TimeOfDay ? TK::LTod : TK::LDt;
+                return constInt(r.value(), types().elementary(k), e.loc);
+            }
+            if (e.lit == ast::LitKind::TimeOfDay) return constInt(r.value() / 1000000, types().elementary(TK::Tod), e.loc);
+            int64_t secs = r.value() / 1000000000;
+            if (r.value() < 0 || secs > 0xFFFFFFFFll)
+                return fail(fmt::format("'{}' is outside the range of {} (1970..2106); use the L-form", e.text,
+                                        e.lit == ast::LitKind::Date ? "DATE" : "DT"));
+            return constInt(secs, types().elementary(e.lit == ast::LitKind::Date ? TK::Date : TK::Dt), e.loc);
+        }
+        case ast::LitKind::Typed: {
+            const Type* t = resolveNamedType(e.typePrefix, e.loc);
+            if (!t) return bad(e.loc);
+            const std::string& v = e.valueText;
+            if (t->kind == TK::Enum) {
+                for (const auto& en : t->enumerators)
+                    if (upper(en.name) == upper(v)) {
+                        Checked c = constInt(en.value, t, e.loc);
+                        return c;
+                    }
+                return fail(fmt::format("'{}' is not a value of enumeration '{}'", v, t->name));
+            }
+            if (t->kind == TK::Bool) {
+                std::string uv = upper(v);
+                if (uv == "1" || uv == "TRUE") return constInt(1, t, e.loc);
+                if (uv == "0" || uv == "FALSE") return constInt(0, t, e.loc);
+                return fail(fmt::format("invalid BOOL literal '{}'", v));
+            }
+            if (isReal(t->kind)) {
+                auto r = stdlib::parseRealLiteral(v);
+                if (!r) return fail(fmt::format("invalid real literal '{}': {}", v, r.error()));
+                return constReal(r.value(), t, e.loc);
+            }
+            if (isInteger(t->kind) || isBitString(t->kind)) {
+                bool neg = !v.empty() && v[0] == '-';
+                std::string_view body = v;
+                if (!body.empty() && (body[0] == '-' || body[0] == '+')) body.remove_prefix(1);
+                auto r = stdlib::parseIntegerLiteral(body);
+                if (!r) return fail(fmt::format("invalid integer literal '{}': {}", v, r.error()));
+                uint64_t mag = r.value();
+                bool big = mag > static_cast<uint64_t>(std::numeric_limits<int64_t>::max());
+                int64_t val = neg ? static_cast<int64_t>(0 - mag) : static_cast<int64_t>(mag);
+                if (neg && big && mag != (uint64_t(1) << 63)) return fail(fmt::format("'{}#{}' is out of range", e.typePrefix, v));
+                bool fits = fitsIn(val, big && !neg, t);
+                if (!fits) return fail(fmt::format("'{}#{}' is outside the range of {}", e.typePrefix, v, t->name));
+                return constInt(val, t, e.loc);
+            }
+            if (isStringType(t->kind) || isCharType(t->kind) || isTimeLike(t->kind) || isDateLike(t->kind)) {
+                ast::Expr inner;
+                inner.kind = ast::ExprKind::Literal;
+                inner.loc = e.loc;
+                inner.text = v;
+                if (isStringType(t->kind) || isCharType(t->kind)) inner.lit = (t->kind == TK::WString || t->kind == TK::WChar) ? ast::LitKind::WString : ast::LitKind::String;
+                else if (isTimeLike(t->kind)) { inner.lit = ast::LitKind::Duration; inner.text = (t->kind == TK::LTime ? "LTIME#" : "TIME#") + v; }
+                else if (t->kind == TK::Date || t->kind == TK::LDate) { inner.lit = ast::LitKind::Date; inner.text = (t->kind == TK::LDate ? "LDATE#" : "DATE#") + v; }
+                else if (t->kind == TK::Tod || t->kind == TK::LTod) { inner.lit = ast::LitKind::TimeOfDay; inner.text = (t->kind == TK::LTod ? "LTOD#" : "TOD#") + v; }
+                else { inner.lit = ast::LitKind::DateTime; inner.text = (t->kind == TK::LDt ? "LDT#" : "DT#") + v; }
+                if (isCharType(t->kind)) {
+                    Checked s = checkLiteral(inner);
+                    if (!s.ok) return s;
+                    auto* bytes = static_cast<exec::ConstBytes*>(s.node);
+                    int64_t ch = t->kind == TK::WChar ? (bytes->bytes[0] | (bytes->bytes[1] << 8)) : bytes->bytes[0];
+                    return constInt(ch, t, e.loc);
+                }
+                Checked s = checkLiteral(inner);
+                if (s.ok && isStringType(t->kind)) return coerce(s, t, e.loc, "literal");
+                return s;
+            }
+            return fail(fmt::format("'{}' cannot prefix a literal", e.typePrefix));
+        }
+    }
+    return bad(e.loc);
+}
+
+// ---------------------------------------------------------------- names
+
+VarSym* Checker::lookupVar(const std::string& key) {
+    if (pou_) {
+        for (PouInfo* p = pou_; p; p = p->parent) {
+            auto it = p->vars.find(key);
+            if (it != p->vars.end()) return it->second;
+        }
+        if (pou_->owner)
+            for (PouInfo* p = pou_->owner; p; p = p->parent) {
+                auto it = p->vars.find(key);
+                if (it != p->vars.end()) return it->second;
+            }
+    }
+    auto g = globals_.find(key);
+    return g == globals_.end() ? nullptr : g->second;
+}
+
+const Enumerator* Checker::lookupEnumValue(const std::string& key, const Type** enumType) {
+    auto it = enumValues_.find(key);
+    if (it == enumValues_.end()) return nullptr;
+    *enumType = it->second.first;
+    return it->second.second;
+}
+
+namespace {
+exec::Expr* directNode(exec::NodePool& pool, Checked::Direct d, uint32_t off, uint8_t* abs, const Type* t) {
+    Rep rep = isAggregate(t) ? Rep::Void : repOf(t);
+    switch (d) {
+        case Checked::Direct::Self: return makeByRep<exec::SelfVar>(pool, rep, off);
+        case Checked::Direct::Frame: return makeByRep<exec::FrameVar>(pool, rep, off);
+        case Checked::Direct::Pending: return makeByRep<exec::PendingVar>(pool, rep, off);
+        default: return makeByRep<exec::AbsVar>(pool, rep, abs + off);
+    }
+}
+}  // namespace
+
+exec::Expr* Checker::loadFrom(exec::Expr* place, const Type* t) {
+    if (isAggregate(t)) return place;
+    exec::Expr* n = makeByRep<exec::PlaceLoad>(pool(), repOf(t), place);
+    n->type = t;
+    return n;
+}
+
+Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
+    v->used = true;
+    if (v->global) v->global->used = true;
+    Checked c;
+    c.ok = true;
+    c.loc = loc;
+    c.var = v;
+    c.type = v->type;
+    c.isPlace = true;
+    if (v->constant) {
+        c.readOnly = true;
+        c.readOnlyWhy = fmt::format("'{}' is a CONSTANT", v->name);
+    }
+    if (v->hasConstValue) {
+        c.isConst = true;
+        c.constInt = v->constInt;
+        c.constReal = v->constReal;
+    }
+    if (v->type->kind == TK::FunctionBlock) c.fbInstanceOf = v->type->pou;
+    Checked::Direct d = v->storage == Storage::Self ? Checked::Direct::Self
+                        : v->storage == Storage::Frame ? Checked::Direct::Frame
+                                                       : Checked::Direct::Abs;
+    if (v->byRef) {
+        exec::Expr* slot = directNode(pool(), d, v->offset, v->abs, types().elementary(TK::Void));
+        exec::Expr* ref = pool().make<exec::RefSlotPlace>(slot, site(loc));
+        c.node = loadFrom(ref, v->type);
+    } else if (v->bit >= 0) {
+        exec::Expr* byte = directNode(pool(), Checked::Direct::Abs, 0, v->abs, types().elementary(TK::Void));
+        c.node = pool().make<exec::BitPlace<uint8_t>>(byte, v->bit);
+    } else {
+        c.direct = d;
+        c.directOffset = v->offset;
+        c.directAbs = v->abs;
+        c.node = directNode(pool(), d, v->offset, v->abs, v->type);
+    }
+    c.node->type = v->type;
+    return c;
+}
+
+Checked Checker::checkName(const ast::Expr& e) {
+    std::string key = upper(e.name);
+    if (VarSym* v = lookupVar(key)) {
+        return varAccess(v, e.loc, false);
+    }
+    if (!key.empty() && key[0] == '%') {
+        // A direct address used in code: a BOOL for bit addresses, else the address's size.
+        char size = key.size() > 2 && std::isalpha(static_cast<unsigned char>(key[2])) ? key[2] : 'X';
+        TK k = size == 'B' ? TK::Byte : size == 'W' ? TK::Word : size == 'D' ? TK::DWord : size == 'L' ? TK::LWord : TK::Bool;
+        const Type* t = types().elementary(k);
+        int bit = -1;
+        uint8_t* p = mapAddress(e.name, t, e.loc, bit);
+        if (!p) return bad(e.loc);
+        Checked c;
+        c.ok = true;
+        c.loc = e.loc;
+        c.type = t;
+        c.isPlace = true;
+        if (bit >= 0) {
+            exec::Expr* byte = directNode(pool(), Checked::Direct::Abs, 0, p, types().elementary(TK::Void));
+            c.node = pool().make<exec::BitPlace<uint8_t>>(byte, bit);
+        } else {
+            c.direct = Checked::Direct::Abs;
+            c.directAbs = p;
+            c.node = directNode(pool(), Checked::Direct::Abs, 0, p, t);
+        }
+        c.node->type = t;
+        return c;
+    }
+    const Type* et = nullptr;
+    if (const Enumerator* en = lookupEnumValue(key, &et)) {
+        if (ambiguousEnumValues_.count(key)) {
+            error(e.loc, fmt::format("'{}' is a value of several enumerations; qualify it (Type#{} or Type.{})", e.name, e.name, e.name));
+            return bad(e.loc);
+        }
+        return constInt(en->value, et, e.loc);
+    }
+    for (auto& prog : model_.programs)
+        if (upper(prog.name) == key) {
+            Checked c;
+            c.ok = true;
+            c.loc = e.loc;
+            c.type = prog.pou->instanceType;
+            c.isPlace = true;
+            c.direct = Checked::Direct::Abs;
+            c.directAbs = prog.memory;
+            c.node = directNode(pool(), Checked::Direct::Abs, 0, prog.memory, c.type);
+            c.node->type = c.type;
+            c.fbInstanceOf = prog.pou;
+            return c;
+        }
+    if (pous_.count(key)) {
+        error(e.loc, fmt::format("'{}' is a POU, not a variable", e.name));
+        return bad(e.loc);
+    }
+    error(e.loc, fmt::format("undeclared identifier '{}'", e.name));
+    return bad(e.loc);
+}
+
+Checked Checker::memberOf(Checked base, const std::string& member, const ast::Loc& loc) {
+    if (!base.ok) return base;
+    const Type* t = base.type;
+    // Auto-dereference of REFERENCE TO.
+    if (t->kind == TK::Reference) {
+        exec::Expr* place = pool().make<exec::DerefPlace>(base.node, site(loc));
+        Checked d;
+        d.ok = true;
+        d.loc = loc;
+        d.type = t->target;
+        d.isPlace = true;
+        d.node = loadFrom(place, t->target);
+        base = d;
+        t = t->target;
+    }
+    std::string key = upper(member);
+    if (!key.empty() && std::isdigit(static_cast<unsigned char>(key[0]))) {
+        // Bit access x.3
+        TK k = t->kind;
+        if (!(isInteger(k) || isBitString(k))) {
+            error(loc, fmt::format("bit access needs an integer or bit-string value, not {}", typeName(t)));
+            return bad(loc);
+        }
+        int bit = 0;
+        for (char ch : key) {
+            if (!std::isdigit(static_cast<unsigned char>(ch)) || bit > 64) { bit = 99; break; }
+            bit = bit * 10 + (ch - '0');
+        }
+        if (bit >= bitWidth(k)) {
+            error(loc, fmt::format("bit {} does not exist in {}", member, typeName(t)));
+            return bad(loc);
+        }
+        if (!base.isPlace) {
+            error(loc, "bit access needs a variable");
+            return bad(loc);
+        }
+        Checked c = base;
+        c.type = types().elementary(TK::Bool);
+        c.direct = Checked::Direct::None;
+        c.isConst = false;
+        c.var = nullptr;
+        c.loc = loc;
+        Rep rep = repOf(t);
+        exec::Expr* place = base.node;
+        switch (rep) {
+            case Rep::I8: case Rep::U8: c.node = pool().make<exec::BitPlace<uint8_t>>(place, bit); break;
+            case Rep::I16: case Rep::U16: c.node = pool().make<exec::BitPlace<uint16_t>>(place, bit); break;
+            case Rep::I32: case Rep::U32: c.node = pool().make<exec::BitPlace<uint32_t>>(place, bit); break;
+            default: c.node = pool().make<exec::BitPlace<uint64_t>>(place, bit); break;
+        }
+        c.node->type = c.type;
+        return c;
+    }
+    if (t->kind != TK::Struct && t->kind != TK::FunctionBlock) {
+        error(loc, fmt::format("'{}' is not a member: {} has no members", member, typeName(t)));
+        return bad(loc);
+    }
+    const Field* f = t->findField(key);
+    if (!f) {
+        error(loc, fmt::format("'{}' has no member '{}'", typeName(t), member));
+        return bad(loc);
+    }
+    Checked c;
+    c.ok = true;
+    c.loc = loc;
+    c.isPlace = base.isPlace;
+    c.readOnly = base.readOnly;
+    c.readOnlyWhy = base.readOnlyWhy;
+    c.hasCall = base.hasCall;
+    const Type* ft = f->type;
+    bool byRef = false;
+    if (t->kind == TK::FunctionBlock && t->pou) {
+        VarSym* mv = nullptr;
+        for (PouInfo* p = t->pou; p && !mv; p = p->parent) {
+            auto it = p->vars.find(key);
+            if (it != p->vars.end()) mv = it->second;
+        }
+        if (mv) {
+            mv->used = true;
+            byRef = mv->byRef;
+            if (byRef) ft = mv->type;
+            if (mv->section == ast::VarSection::Input) {
+                c.readOnly = true;
+                c.readOnlyWhy = fmt::format("'{}' is an input of '{}'; inputs are set in the call", mv->name, t->name);
+            }
+            if (mv->constant) {
+                c.readOnly = true;
+                c.readOnlyWhy = fmt::format("'{}' is a CONSTANT", mv->name);
+            }
+        }
+    }
+    c.type = ft;
+    if (ft->kind == TK::FunctionBlock) c.fbInstanceOf = ft->pou;
+    if (byRef) {
+        exec::Expr* slot = base.direct != Checked::Direct::None
+                               ? directNode(pool(), base.direct, base.directOffset + f->offset, base.directAbs, types().voidType())
+                               : pool().make<exec::OffsetPlace>(base.node, f->offset);
+        c.node = loadFrom(pool().make<exec::RefSlotPlace>(slot, site(loc)), ft);
+    } else if (base.direct != Checked::Direct::None) {
+        c.direct = base.direct;
+        c.directOffset = base.directOffset + f->offset;
+        c.directAbs = base.directAbs;
+        c.node = directNode(pool(), c.direct, c.directOffset, c.directAbs, ft);
+    } else {
+        c.node = loadFrom(pool().make<exec::OffsetPlace>(base.node, f->offset), ft);
+    }
+    c.node->type = ft;
+    return c;
+}
+
+Checked Checker::checkMember(const ast::Expr& e) {
+    const ast::Expr& baseExpr = *e.kids[0];
+    if (baseExpr.kind == ast::ExprKind::Name) {
+        std::string bkey = upper(baseExpr.name);
+        if (!lookupVar(bkey)) {
+            // Enum.Value
+            if (typeDecls_.count(bkey)) {
+                const Type* t = resolveTypeDecl(bkey, baseExpr.loc);
+                if (t && t->kind == TK::Enum) {
+                    for (const auto& en : t->enumerators)
+                        if (upper(en.name) == upper(e.name)) return constInt(en.value, t, e.loc);
+                    error(e.loc, fmt::format("'{}' is not a value of enumeration '{}'", e.name, t->name));
+                    return bad(e.loc);
+                }
+            }
+        }
+    }
+    Checked base = checkExpr(baseExpr);
+    return memberOf(base, e.name, e.loc);
+}
+
+Checked Checker::checkIndex(const ast::Expr& e) {
+    Checked base = checkExpr(*e.kids[0]);
+    if (!base.ok) return base;
+    const Type* t = base.type;
+    if (t->kind != TK::Array) {
+        error(e.loc, fmt::format("subscript on a value of type {}, which is not an array", typeName(t)));
+        return bad(e.loc);
+    }
+    size_t nsub = e.kids.size() - 1;
+    if (t->flexible) {
+        error(e.loc, "subscripts on ARRAY[*] are not supported yet");
+        return bad(e.loc);
+    }
+    if (nsub != t->dims.size()) {
+        error(e.loc, fmt::format("{} subscript(s) given, the array has {} dimension(s)", nsub, t->dims.size()));
+        return bad(e.loc);
+    }
+    std::vector<exec::IndexPlace::Dim> dims;
+    uint64_t stride = t->elem->size;
+    std::vector<uint64_t> strides(nsub);
+    for (size_t k = nsub; k-- > 0;) {
+        strides[k] = stride;
+        stride *= static_cast<uint64_t>(t->dims[k].count());
+    }
+    bool allConst = base.direct != Checked::Direct::None;
+    uint64_t constOffset = 0;
+    bool hasCall = base.hasCall;
+    for (size_t k = 0; k < nsub; ++k) {
+        Checked ix = checkExpr(*e.kids[k + 1]);
+        if (!ix.ok) return bad(e.loc);
+        hasCall = hasCall || ix.hasCall;
+        if (!(isInteger(ix.type->kind) || isBitString(ix.type->kind) || ix.type->kind == TK::Enum || ix.untypedInt)) {
+            error(e.kids[k + 1]->loc, fmt::format("an array subscript must be an integer, not {}", typeName(ix.type)));
+            return bad(e.loc);
+        }
+        ix = settle(ix);
+        if (ix.isConst) {
+            if (ix.constInt < t->dims[k].lo || ix.constInt > t->dims[k].hi) {
+                error(e.kids[k + 1]->loc, fmt::format("subscript {} is outside the array bounds {}..{}", ix.constInt, t->dims[k].lo, t->dims[k].hi));
+                return bad(e.loc);
+            }
+            constOffset += static_cast<uint64_t>(ix.constInt - t->dims[k].lo) * strides[k];
+        } else {
+            allConst = false;
+        }
+        dims.push_back({ix.node, t->dims[k].lo, t->dims[k].count(), strides[k]});
+    }
+    Checked c;
+    c.ok = true;
+    c.loc = e.loc;
+    c.type = t->elem;
+    c.isPlace = base.isPlace;
+    c.readOnly = base.readOnly;
+    c.readOnlyWhy = base.readOnlyWhy;
+    c.hasCall = hasCall;
+    if (t->elem->kind == TK::FunctionBlock) c.fbInstanceOf = t->elem->pou;
+    if (allConst) {
+        c.direct = base.direct;
+        c.directOffset = base.directOffset + static_cast<uint32_t>(constOffset);
+        c.directAbs = base.directAbs;
+        c.node = directNode(pool(), c.direct, c.directOffset, c.directAbs, c.type);
+    } else if (dims.size() == 1) {
+        auto* n = pool().make<exec::Index1Place>();
+        n->base = base.node;
+        n->index = dims[0].index;
+        n->lo = dims[0].lo;
+        n->count = dims[0].count;
+        n->stride = dims[0].stride;
+        n->site = site(e.loc);
+        c.node = loadFrom(n, c.type);
+    } else {
+        auto* n = pool().make<exec::IndexPlace>();
+        n->base = base.node;
+        n->dims = std::move(dims);
+        n->site = site(e.loc);
+        c.node = loadFrom(n, c.type);
+    }
+    c.node->type = c.type;
+    return c;
+}
+
+// ---------------------------------------------------------------- dispatch
+
+Checked Checker::checkExpr(const ast::Expr& e) {
+    switch (e.kind) {
+        case ast::ExprKind::Literal: return checkLiteral(e);
+        case ast::ExprKind::Name: return checkName(e);
+        case ast::ExprKind::Member: return checkMember(e);
+        case ast::ExprKind::Index: return checkIndex(e);
+        case ast::ExprKind::Unary: return checkUnary(e);
+        case ast::ExprKind::Binary: return checkBinary(e);
+        case ast::ExprKind::Call: return checkCall(e, false);
+        case ast::ExprKind::Deref: {
+            Checked p = checkExpr(*e.kids[0]);
+            if (!p.ok) return p;
+            if (p.type->kind != TK::Pointer && p.type->kind != TK::Reference) {
+                error(e.loc, fmt::format("'^' needs a POINTER, not {}", typeName(p.type)));
+                return bad(e.loc);
+            }
+            Checked c;
+            c.ok = true;
+            c.loc = e.loc;
+            c.type = p.type->target;
+            c.isPlace = true;
+            c.hasCall = p.hasCall;
+            if (c.type->kind == TK::FunctionBlock) c.fbInstanceOf = c.type->pou;
+            c.node = loadFrom(pool().make<exec::DerefPlace>(p.node, site(e.loc)), c.type);
+            c.node->type = c.type;
+            return c;
+        }
+        case ast::ExprKind::This:
+        case ast::ExprKind::Super:
+            error(e.loc, "THIS and SUPER are not supported yet");
+            return bad(e.loc);
+    }
+    return bad(e.loc);
+}
+
+Checked Checker::checkCondition(const ast::Expr& e, const char* what) {
+    Checked c = checkExpr(e);
+    if (!c.ok) return c;
+    if (c.type->kind != TK::Bool) {
+        error(e.loc, fmt::format("{} must be BOOL, not {}", what, typeName(c.type)));
+        return bad(e.loc);
+    }
+    return c;
+}
+
+// ---------------------------------------------------------------- conversions
+
+namespace {
+struct IntInfo { bool isSigned; int bits; };
+IntInfo intInfo(TK k) {
+    TK v = integerView(k);
+    return {isSignedInt(v), bitWidth(v)};
+}
+TK intKindOf(bool isSigned, int bits) {
+    switch (bits) {
+        case 8: return isSigned ? TK::SInt : TK::USInt;
+        case 16: return isSigned ? TK::Int : TK::UInt;
+        case 32: return isSigned ? TK::DInt : TK::UDInt;
+        default: return isSigned ? TK::LInt : TK::ULInt;
+    }
+}
+TK bitKindOf(int bits) {
+    switch (bits) {
+        case 8: return TK::Byte;
+        case 16: return TK::Word;
+        case 32: return TK::DWord;
+        default: return TK::LWord;
+    }
+}
+// Implicit conversion allowed from -> to (both elementary, not the same)?
+bool implicitOk(const Type* from, const Type* to) {
+    TK f = from->kind, t = to->kind;
+    if (f == t) return true;
+    if (isStringType(f) && f == t) return true;
+    if ((isInteger(f) || isBitString(f)) && (isInteger(t) || isBitString(t))) {
+        IntInfo a = intInfo(f), b = intInfo(t);
+        if (isBitString(f) && isBitString(t)) return b.bits >= a.bits;
+        if (isBitString(f) || isBitString(t)) return b.bits >= a.bits;  // CODESYS: integer <-> bit string, not narrowing
+        if (a.isSigned == b.isSigned) return b.bits >= a.bits;
+        if (!a.isSigned && b.isSigned) return b.bits > a.bits;
+        return false;  // signed -> unsigned
+    }
+    if (f == TK::Bool && isBitString(t)) return true;
+    if ((isInteger(f) || isBitString(f)) && isReal(t)) return isInteger(f);
+    if (f == TK::Real && t == TK::LReal) return true;
+    if (f == TK::Time && t == TK::LTime) return true;
+    if (f == TK::Char && t == TK::WChar) return false;
+    if (f == TK::Enum && (isInteger(t))) return true;  // CODESYS: an enumeration value is usable as its integer
+    return false;
+}
+}  // namespace
+
+struct ScaleConv final : exec::Expr {
+    exec::Expr* a;
+    int64_t mul, div;
+    ScaleConv(exec::Expr* x, int64_t m, int64_t d) : a(x), mul(m), div(d) {}
+    int64_t i(exec::Ctx& c) override {
+        int64_t v = a->i(c);
+        if (div > 1) {
+            int64_t q = v / div;
+            return q * mul;
+        }
+        return static_cast<int64_t>(static_cast<uint64_t>(v) * static_cast<uint64_t>(mul));
+    }
+};
+
+struct ModConv final : exec::Expr {  // DT -> TOD: seconds of the day in ms
+    exec::Expr* a;
+    int64_t mod, mul;
+    ModConv(exec::Expr* x, int64_t m, int64_t k) : a(x), mod(m), mul(k) {}
+    int64_t i(exec::Ctx& c) override {
+        int64_t v = a->i(c) % mod;
+        if (v < 0) v += mod;
+        return v * mul;
+    }
+};
+
+Checked Checker::convert(Checked e, const Type* target, const ast::Loc& loc, bool truncate) {
+    if (!e.ok) return e;
+    e = settle(e);
+    const Type* from = e.type;
+    if (sameType(from, target) && !isStringType(target->kind)) {
+        Checked r = e;
+        r.type = target;
+        return r;
+    }
+    TK f = from->kind == TK::Enum ? from->base->kind : from->kind;
+    TK t = target->kind == TK::Enum ? target->base->kind : target->kind;
+    Checked r;
+    r.ok = true;
+    r.loc = loc;
+    r.type = target;
+    r.hasCall = e.hasCall;
+    exec::Expr* n = nullptr;
+    auto intConv = [&](exec::Expr* src) { return makeIntByRep<exec::ConvIntInt>(pool(), repOf(target), src); };
+    // Time/date scaling between encodings (TIME ms, LTIME ns, DATE/DT s, TOD ms, L-forms ns).
+    auto scaleOf = [](TK k) -> int64_t {
+        switch (k) {
+            case TK::Time: case TK::Tod: return 1000000;
+            case TK::Date: case TK::Dt: return 1000000000;
+            default: return 1;
+        }
+    };
+    bool fTimeDate = isTimeLike(f) || isDateLike(f);
+    bool tTimeDate = isTimeLike(t) || isDateLike(t);
+    if (target->kind == TK::Bool) {
+        n = pool().make<exec::ConvToBool>(e.node, isReal(f));
+    } else if (isReal(t)) {
+        Rep rt = repOf(target);
+        if (isReal(f)) n = makeRealByRep<exec::ConvRealReal>(pool(), rt, e.node);
+        else {
+            bool u64 = repOf(from) == Rep::U64;
+            if (rt == Rep::F32) n = u64 ? static_cast<exec::Expr*>(pool().make<exec::ConvIntReal<float, uint64_t>>(e.node)) : pool().make<exec::ConvIntReal<float, int64_t>>(e.node);
+            else n = u64 ? static_cast<exec::Expr*>(pool().make<exec::ConvIntReal<double, uint64_t>>(e.node)) : pool().make<exec::ConvIntReal<double, int64_t>>(e.node);
+        }
+    } else if (isReal(f)) {
+        if (!(isIntRep(target))) {
+            error(loc, fmt::format("no conversion from {} to {}", typeName(from), typeName(target)));
+            return bad(loc);
+        }
+        IntInfo ii = intInfo(t);
+        n = pool().make<exec::ConvRealInt>(e.node, ii.bits, ii.isSigned, truncate);
+    } else if (fTimeDate && tTimeDate) {
+        if ((f == TK::Dt || f == TK::LDt) && (t == TK::Tod || t == TK::LTod)) {
+            int64_t perDay = f == TK::Dt ? 86400 : 86400000000000LL;
+            int64_t mul = (f == TK::Dt ? 1000000000 : 1) / scaleOf(t);
+            n = intConv(pool().make<ModConv>(e.node, perDay, mul));
+        } else if ((f == TK::Dt || f == TK::LDt) && (t == TK::Date || t == TK::LDate)) {
+            int64_t perDay = f == TK::Dt ? 86400 : 86400000000000LL;
+            exec::Expr* day = pool().make<ScaleConv>(e.node, perDay, perDay);
+            int64_t sf = scaleOf(f), st = scaleOf(t);
+            n = intConv(sf >= st ? static_cast<exec::Expr*>(pool().make<ScaleConv>(day, sf / st, 1)) : pool().make<ScaleConv>(day, 1, st / sf));
+        } else {
+            int64_t sf = scaleOf(f), st = scaleOf(t);
+            exec::Expr* s = sf >= st ? static_cast<exec::Expr*>(pool().make<ScaleConv>(e.node, sf / st, 1))
+                                     : static_cast<exec::Expr*>(pool().make<ScaleConv>(e.node, 1, st / sf));
+            n = intConv(s);
+        }
+    } else if (isIntRep(from) && isIntRep(target)) {
+        n = intConv(e.node);
+    } else {
+        error(loc, fmt::format("no conversion from {} to {}", typeName(from), typeName(target)));
+        return bad(loc);
+    }
+    n->type = target;
+    r.node = n;
+    if (e.isConst) return foldIfConst(r, {&e});
+    return r;
+}
+
+Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, const char* what) {
+    if (!e.ok || !target) return bad(loc);
+    const Type* from = e.type;
+    if (e.untypedInt) {
+        TK t = target->kind;
+        if (isInteger(t) || isBitString(t) || t == TK::Bool) {
+            if (!fitsIn(e.constInt, false, target)) {
+                error(loc, fmt::format("constant {} is outside the range of {}", e.constInt, typeName(target)));
+                return bad(loc);
+            }
+            Checked c = constInt(e.constInt, target, e.loc);
+            return c;
+        }
+        if (isReal(t)) return constReal(static_cast<double>(e.constInt), target, e.loc);
+        e = settle(e);
+        from = e.type;
+    }
+    if (e.untypedReal) {
+        if (isReal(target->kind)) return constReal(e.constReal, target, e.loc);
+        e = settle(e);
+        from = e.type;
+    }
+    if (sameType(from, target)) {
+        if (isStringType(target->kind)) { e.type = from; return e; }
+        e.type = target;
+        return e;
+    }
+    if (isStringType(from->kind) && isStringType(target->kind)) {
+        if (from->kind == target->kind) return e;
+    }
+    if (target->kind == TK::Pointer && (from->kind == TK::Pointer || (e.isConst && e.constInt == 0))) {
+        e.type = target;  // POINTER TO x := ADR(...), any pointer, or 0
+        return e;
+    }
+    if (target->kind == TK::Reference && from->kind == TK::Reference && sameType(from->target, target->target)) return e;
+    if (target->kind == TK::Interface && from->kind == TK::FunctionBlock) {
+        error(loc, "interface values are not supported yet");
+        return bad(loc);
+    }
+    if (target->kind == TK::Struct && from->kind == TK::Struct) {
+        for (const Type* p = from->parent; p; p = p->parent)
+            if (p == target) return e;  // derived struct to base: copies the base part
+    }
+    if (isElementary(from->kind) && isElementary(target->kind) && implicitOk(from, target)) return convert(e, target, loc);
+    if (from->kind == TK::Enum && isInteger(target->kind) && implicitOk(from, target)) return convert(e, target, loc);
+    std::string hint;
+    if (isElementary(from->kind) && isElementary(target->kind) && !isStringType(from->kind))
+        hint = fmt::format("; use {}_TO_{}", upper(from->name == "TIME_OF_DAY" ? "TOD" : from->name == "DATE_AND_TIME" ? "DT" : from->name),
+                           upper(target->name == "TIME_OF_DAY" ? "TOD" : target->name == "DATE_AND_TIME" ? "DT" : target->name));
+    error(loc, fmt::format("{}: cannot convert {} to {} implicitly{}", what, typeName(from), typeName(target), hint));
+    return bad(loc);
+}
+
+const Type* Checker::commonType(Checked& a, Checked& b, const ast::Loc& loc, bool report) {
+    auto fail = [&]() -> const Type* {
+        if (report) error(loc, fmt::format("operands of types {} and {} need an explicit conversion", typeName(a.type), typeName(b.type)));
+        return nullptr;
+    };
+    if ((a.untypedInt || a.untypedReal) && (b.untypedInt || b.untypedReal)) {
+        if (a.untypedReal || b.untypedReal) return types().elementary(TK::LReal);
+        return types().elementary(TK::LInt);
+    }
+    if (a.untypedInt || a.untypedReal) {
+        const Type* r = commonType(b, a, loc, report);
+        return r;
+    }
+    // from here a is typed
+    const Type* ta = a.type;
+    TK ka = ta->kind;
+    if (b.untypedInt) {
+        if (isInteger(ka) || isBitString(ka)) {
+            if (fitsIn(b.constInt, false, ta)) return ta;
+            Checked s = settle(b);
+            return commonType(a, s, loc, report);
+        }
+        if (isReal(ka)) return ta;
+        if (ka == TK::Enum) return fail();
+        return fail();
+    }
+    if (b.untypedReal) {
+        if (isReal(ka)) return ta;
+        if (isInteger(ka) || isBitString(ka)) return types().elementary(TK::Real);
+        return fail();
+    }
+    const Type* tb = b.type;
+    TK kb = tb->kind;
+    if (sameType(ta, tb)) return isStringType(ka) ? ta : ta;
+    if (isStringType(ka) && ka == kb) return ta;
+    if ((isInteger(ka) || isBitString(ka)) && (isInteger(kb) || isBitString(kb))) {
+        IntInfo ia = intInfo(ka), ib = intInfo(kb);
+        if (isBitString(ka) && isBitString(kb)) return types().elementary(bitKindOf(std::max(ia.bits, ib.bits)));
+        if (ia.isSigned == ib.isSigned) return types().elementary(intKindOf(ia.isSigned, std::max(ia.bits, ib.bits)));
+        IntInfo s = ia.isSigned ? ia : ib, u = ia.isSigned ? ib : ia;
+        if (s.bits > u.bits) return types().elementary(intKindOf(true, s.bits));
+        return types().elementary(intKindOf(true, std::min(64, u.bits * 2)));
+    }
+    if (isReal(ka) || isReal(kb)) {
+        bool otherOk = (isReal(ka) || isInteger(ka)) && (isReal(kb) || isInteger(kb));
+        if (!otherOk) return fail();
+        if (ka == TK::LReal || kb == TK::LReal) return types().elementary(TK::LReal);
+        return types().elementary(TK::Real);
+    }
+    if (ka == TK::Enum && kb == TK::Enum) return ta == tb ? ta : fail();
+    if (ka == kb && isElementary(ka)) return ta;
+    if (isTimeLike(ka) && isTimeLike(kb)) return types().elementary(TK::LTime);
+    return fail();
+}
+
+Checked Checker::foldIfConst(Checked r, std::initializer_list<const Checked*> operands) {
+    for (const Checked* o : operands)
+        if (!o->isConst) return r;
+    exec::Ctx dummy;
+    if (isRealRep(r.type)) {
+        double v = r.node->f(dummy);
+        Checked c = constReal(v, r.type, r.loc);
+        return c;
+    }
+    if (isIntRep(r.type)) {
+        int64_t v = r.node->i(dummy);
+        Checked c = constInt(v, r.type, r.loc);
+        return c;
+    }
+    return r;
+}
+
+}  // namespace strun::sema

@@ -1,0 +1,358 @@
+// Operators: operand types brought to a common type, the node specialised for
+// it, and constant operands folded at check time (except a division by a
+// constant zero, which keeps its runtime DIV_BY_ZERO rule).
+#include <fmt/format.h>
+
+#include "interpreter/sema/checker.h"
+#include "interpreter/sema/node_factory.h"
+
+namespace strun::sema {
+
+using exec::CmpOp;
+
+namespace {
+
+template <template <class> class N>
+exec::Expr* intOp(exec::NodePool& pool, Rep rep, exec::Expr* a, exec::Expr* b) {
+    return makeIntByRep<N>(pool, rep, a, b);
+}
+
+template <CmpOp OP>
+struct CmpIntBind {
+    template <class T>
+    using I = exec::CmpI<T, OP>;
+};
+
+template <CmpOp OP>
+exec::Expr* cmpNode(exec::NodePool& pool, const Type* t, exec::Expr* a, exec::Expr* b) {
+    Rep rep = repOf(t);
+    if (rep == Rep::F32) return pool.make<exec::CmpF<float, OP>>(a, b);
+    if (rep == Rep::F64) return pool.make<exec::CmpF<double, OP>>(a, b);
+    if (t->kind == TK::String) return pool.make<exec::CmpStr<char, OP>>(a, b);
+    if (t->kind == TK::WString) return pool.make<exec::CmpStr<char16_t, OP>>(a, b);
+    return makeIntByRep<CmpIntBind<OP>::template I>(pool, rep, a, b);
+}
+
+CmpOp cmpOpOf(ast::Op op) {
+    switch (op) {
+        case ast::Op::Eq: return CmpOp::Eq;
+        case ast::Op::Ne: return CmpOp::Ne;
+        case ast::Op::Lt: return CmpOp::Lt;
+        case ast::Op::Le: return CmpOp::Le;
+        case ast::Op::Gt: return CmpOp::Gt;
+        default: return CmpOp::Ge;
+    }
+}
+
+const char* opText(ast::Op op) {
+    switch (op) {
+        case ast::Op::Add: return "+";
+        case ast::Op::Sub: return "-";
+        case ast::Op::Mul: return "*";
+        case ast::Op::Div: return "/";
+        case ast::Op::Mod: return "MOD";
+        case ast::Op::Pow: return "**";
+        case ast::Op::Eq: return "=";
+        case ast::Op::Ne: return "<>";
+        case ast::Op::Lt: return "<";
+        case ast::Op::Le: return "<=";
+        case ast::Op::Gt: return ">";
+        case ast::Op::Ge: return ">=";
+        case ast::Op::And: return "AND";
+        case ast::Op::Or: return "OR";
+        case ast::Op::Xor: return "XOR";
+        case ast::Op::AndThen: return "AND_THEN";
+        case ast::Op::OrElse: return "OR_ELSE";
+        case ast::Op::Neg: return "-";
+        case ast::Op::Plus: return "+";
+        case ast::Op::Not: return "NOT";
+    }
+    return "?";
+}
+
+// TIME * number: computed in the time's unit.
+struct TimeMulReal final : exec::Expr {
+    exec::Expr *t, *k;
+    bool divide;
+    int bits;
+    TimeMulReal(exec::Expr* a, exec::Expr* b, bool d, int n) : t(a), k(b), divide(d), bits(n) {}
+    int64_t i(exec::Ctx& c) override {
+        double v = static_cast<double>(t->i(c));
+        double f = k->f(c);
+        double r = divide ? v / f : v * f;
+        return exec::realToIntRounded(r, bits, true);
+    }
+};
+
+}  // namespace
+
+Checked Checker::checkUnary(const ast::Expr& e) {
+    Checked a = checkExpr(*e.kids[0]);
+    if (!a.ok) return a;
+    Checked r;
+    r.ok = true;
+    r.loc = e.loc;
+    r.hasCall = a.hasCall;
+    if (e.op == ast::Op::Plus) {
+        if (!(isNumeric(a.type->kind) || a.untypedInt || a.untypedReal || isTimeLike(a.type->kind))) {
+            error(e.loc, fmt::format("unary '+' needs a number, not {}", typeName(a.type)));
+            return bad(e.loc);
+        }
+        a.isPlace = false;
+        a.var = nullptr;
+        return a;
+    }
+    if (e.op == ast::Op::Neg) {
+        if (a.untypedInt) { Checked c = constInt(-a.constInt, a.type, e.loc); c.untypedInt = true; return c; }
+        if (a.untypedReal) { Checked c = constReal(-a.constReal, a.type, e.loc); c.untypedReal = true; return c; }
+        TK k = a.type->kind;
+        if (!(isInteger(k) || isReal(k) || isTimeLike(k))) {
+            error(e.loc, fmt::format("unary '-' needs a number or a duration, not {}", typeName(a.type)));
+            return bad(e.loc);
+        }
+        r.type = a.type;
+        Rep rep = repOf(a.type);
+        r.node = isReal(k) ? makeRealByRep<exec::NegF>(pool(), rep, a.node) : makeIntByRep<exec::NegI>(pool(), rep, a.node);
+        r.node->type = r.type;
+        return foldIfConst(r, {&a});
+    }
+    // NOT
+    if (a.untypedInt) a = settle(a);
+    TK k = a.type->kind;
+    r.type = a.type;
+    if (k == TK::Bool) r.node = pool().make<exec::NotBool>(a.node);
+    else if (isBitString(k) || isInteger(k)) r.node = makeIntByRep<exec::NotBits>(pool(), repOf(a.type), a.node);
+    else {
+        error(e.loc, fmt::format("NOT needs a BOOL or a bit string, not {}", typeName(a.type)));
+        return bad(e.loc);
+    }
+    r.node->type = r.type;
+    return foldIfConst(r, {&a});
+}
+
+Checked Checker::checkBinary(const ast::Expr& e) {
+    Checked a = checkExpr(*e.kids[0]);
+    Checked b = checkExpr(*e.kids[1]);
+    if (!a.ok || !b.ok) return bad(e.loc);
+    switch (e.op) {
+        case ast::Op::Eq: case ast::Op::Ne: case ast::Op::Lt: case ast::Op::Le: case ast::Op::Gt: case ast::Op::Ge:
+            return makeCompare(e.op, a, b, e.loc);
+        case ast::Op::And: case ast::Op::Or: case ast::Op::Xor: case ast::Op::AndThen: case ast::Op::OrElse:
+            return makeLogic(e.op, a, b, e.loc);
+        default:
+            return makeArith(e.op, a, b, e.loc);
+    }
+}
+
+Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc) {
+    Checked r;
+    r.ok = true;
+    r.loc = loc;
+    r.hasCall = a.hasCall || b.hasCall;
+    TK ka = a.type->kind, kb = b.type->kind;
+    bool aNum = a.untypedInt || a.untypedReal || isNumeric(ka);
+    bool bNum = b.untypedInt || b.untypedReal || isNumeric(kb);
+    // ---- durations and dates (IEC table of time operations)
+    bool aTime = !a.untypedInt && !a.untypedReal && (isTimeLike(ka) || isDateLike(ka));
+    bool bTime = !b.untypedInt && !b.untypedReal && (isTimeLike(kb) || isDateLike(kb));
+    if (aTime || bTime) {
+        auto timeScale = [](TK k) -> int64_t {  // ns per unit of the encoding
+            switch (k) {
+                case TK::Time: case TK::Tod: return 1000000;
+                case TK::Date: case TK::Dt: return 1000000000;
+                default: return 1;
+            }
+        };
+        if ((op == ast::Op::Mul || op == ast::Op::Div) && aTime && isTimeLike(ka) && bNum) {
+            r.type = a.type;
+            if (b.untypedReal || isReal(kb)) {
+                Checked bb = b.untypedReal ? coerce(b, types().elementary(TK::LReal), loc, "operand") : b;
+                r.node = pool().make<TimeMulReal>(a.node, bb.node, op == ast::Op::Div, bitWidth(ka));
+            } else {
+                Checked bb = coerce(b, a.type, loc, "operand");
+                if (!bb.ok) return bad(loc);
+                if (op == ast::Op::Mul) r.node = intOp<exec::MulI>(pool(), repOf(a.type), a.node, bb.node);
+                else r.node = makeIntByRep<exec::DivI>(pool(), repOf(a.type), a.node, bb.node, site(loc));
+                r.node->type = r.type;
+                if (op == ast::Op::Div && bb.isConst && bb.constInt == 0) return r;
+                return foldIfConst(r, {&a, &bb});
+            }
+            r.node->type = r.type;
+            return r;
+        }
+        if (op == ast::Op::Mul && bTime && isTimeLike(kb) && aNum) return makeArith(op, b, a, loc);
+        if (op == ast::Op::Add || op == ast::Op::Sub) {
+            const Type* result = nullptr;
+            Checked x = a, y = b;
+            if (isTimeLike(ka) && isTimeLike(kb)) {
+                result = ka == TK::LTime || kb == TK::LTime ? types().elementary(TK::LTime) : a.type;
+            } else if (isDateLike(ka) && ka != TK::Date && ka != TK::LDate && isTimeLike(kb)) {
+                result = a.type;  // TOD/DT +- TIME
+            } else if (op == ast::Op::Add && isTimeLike(ka) && isDateLike(kb) && kb != TK::Date && kb != TK::LDate) {
+                return makeArith(op, b, a, loc);
+            } else if (op == ast::Op::Sub && isDateLike(ka) && ka == kb) {
+                result = (ka == TK::Date || ka == TK::Dt || ka == TK::Tod) ? types().elementary(TK::Time) : types().elementary(TK::LTime);
+            }
+            if (!result) {
+                error(loc, fmt::format("operator '{}' is not defined for {} and {}", opText(op), typeName(a.type), typeName(b.type)));
+                return bad(loc);
+            }
+            // Bring both operands to nanoseconds-or-unit of the result.
+            int64_t sr = timeScale(result->kind);
+            auto toUnit = [&](Checked v) -> exec::Expr* {
+                int64_t sv = timeScale(v.type->kind);
+                if (sv == sr) return v.node;
+                struct Scale final : exec::Expr {
+                    exec::Expr* a; int64_t mul, div;
+                    Scale(exec::Expr* x, int64_t m, int64_t d) : a(x), mul(m), div(d) {}
+                    int64_t i(exec::Ctx& c) override { int64_t q = a->i(c); return div > 1 ? q / div : q * mul; }
+                };
+                return sv > sr ? pool().make<Scale>(v.node, sv / sr, 1) : pool().make<Scale>(v.node, 1, sr / sv);
+            };
+            exec::Expr* xa = toUnit(x);
+            exec::Expr* yb = toUnit(y);
+            Rep rep = repOf(result);
+            r.type = result;
+            r.node = op == ast::Op::Add ? intOp<exec::AddI>(pool(), rep, xa, yb) : intOp<exec::SubI>(pool(), rep, xa, yb);
+            r.node->type = result;
+            return foldIfConst(r, {&a, &b});
+        }
+        error(loc, fmt::format("operator '{}' is not defined for {} and {}", opText(op), typeName(a.type), typeName(b.type)));
+        return bad(loc);
+    }
+    bool aInt = a.untypedInt || isInteger(ka) || isBitString(ka);
+    bool bInt = b.untypedInt || isInteger(kb) || isBitString(kb);
+    if (!(aNum || aInt) || !(bNum || bInt)) {
+        error(loc, fmt::format("operator '{}' needs numbers, not {} and {}", opText(op), typeName(a.type), typeName(b.type)));
+        return bad(loc);
+    }
+    if (op == ast::Op::Pow) {
+        const Type* rt = (ka == TK::LReal || kb == TK::LReal || (a.untypedReal && b.untypedReal)) ? types().elementary(TK::LReal)
+                                                                                                  : types().elementary(TK::Real);
+        if ((a.untypedInt || a.untypedReal) && (b.untypedInt || b.untypedReal)) rt = types().elementary(TK::LReal);
+        Checked x = convert(a, rt, loc), y = convert(b, rt, loc);
+        if (!x.ok || !y.ok) return bad(loc);
+        r.type = rt;
+        r.node = makeRealByRep<exec::PowF>(pool(), repOf(rt), x.node, y.node);
+        r.node->type = rt;
+        bool untyped = (a.untypedInt || a.untypedReal) && (b.untypedInt || b.untypedReal);
+        Checked f = foldIfConst(r, {&x, &y});
+        f.untypedReal = untyped;
+        return f;
+    }
+    const bool bothUntyped = (a.untypedInt || a.untypedReal) && (b.untypedInt || b.untypedReal);
+    const Type* t = commonType(a, b, loc);
+    if (!t) return bad(loc);
+    if (op == ast::Op::Mod && !(isInteger(t->kind) || isBitString(t->kind))) {
+        error(loc, fmt::format("MOD needs integers, not {}", typeName(t)));
+        return bad(loc);
+    }
+    Checked x = coerce(a, t, loc, "operand");
+    Checked y = coerce(b, t, loc, "operand");
+    if (!x.ok || !y.ok) return bad(loc);
+    r.type = t;
+    Rep rep = repOf(t);
+    bool real = isReal(t->kind);
+    switch (op) {
+        case ast::Op::Add: r.node = real ? makeRealByRep<exec::AddF>(pool(), rep, x.node, y.node) : intOp<exec::AddI>(pool(), rep, x.node, y.node); break;
+        case ast::Op::Sub: r.node = real ? makeRealByRep<exec::SubF>(pool(), rep, x.node, y.node) : intOp<exec::SubI>(pool(), rep, x.node, y.node); break;
+        case ast::Op::Mul: r.node = real ? makeRealByRep<exec::MulF>(pool(), rep, x.node, y.node) : intOp<exec::MulI>(pool(), rep, x.node, y.node); break;
+        case ast::Op::Div:
+            r.node = real ? makeRealByRep<exec::DivF>(pool(), rep, x.node, y.node)
+                          : makeIntByRep<exec::DivI>(pool(), rep, x.node, y.node, site(loc));
+            break;
+        case ast::Op::Mod: r.node = makeIntByRep<exec::ModI>(pool(), rep, x.node, y.node, site(loc)); break;
+        default: error(loc, "unsupported operator"); return bad(loc);
+    }
+    r.node->type = t;
+    if ((op == ast::Op::Div || op == ast::Op::Mod) && !real && y.isConst && y.constInt == 0) return r;  // runtime DIV_BY_ZERO
+    Checked f = foldIfConst(r, {&x, &y});
+    if (bothUntyped && f.isConst) {
+        if (real) f.untypedReal = true;
+        else f.untypedInt = true;
+        if (f.untypedInt) { f.type = types().elementary(f.constInt >= INT32_MIN && f.constInt <= INT32_MAX ? TK::DInt : TK::LInt); f.node->type = f.type; }
+    }
+    return f;
+}
+
+Checked Checker::makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& loc) {
+    Checked r;
+    r.ok = true;
+    r.loc = loc;
+    r.hasCall = a.hasCall || b.hasCall;
+    r.type = types().elementary(TK::Bool);
+    const Type* t = commonType(a, b, loc, false);
+    if (!t || t->kind == TK::Struct || t->kind == TK::FunctionBlock || t->kind == TK::Array) {
+        if (t && (op == ast::Op::Eq || op == ast::Op::Ne) && sameType(a.type, b.type)) {
+            r.node = op == ast::Op::Eq ? static_cast<exec::Expr*>(pool().make<exec::CmpBytes<true>>(a.node, b.node, t->size))
+                                       : pool().make<exec::CmpBytes<false>>(a.node, b.node, t->size);
+            r.node->type = r.type;
+            return r;
+        }
+        error(loc, fmt::format("cannot compare {} with {}", typeName(a.type), typeName(b.type)));
+        return bad(loc);
+    }
+    Checked x = isStringType(t->kind) ? a : coerce(a, t, loc, "operand");
+    Checked y = isStringType(t->kind) ? b : coerce(b, t, loc, "operand");
+    if (!x.ok || !y.ok) return bad(loc);
+    if (isStringType(t->kind) && a.type->kind != b.type->kind) {
+        error(loc, fmt::format("cannot compare {} with {}", typeName(a.type), typeName(b.type)));
+        return bad(loc);
+    }
+    switch (cmpOpOf(op)) {
+        case CmpOp::Eq: r.node = cmpNode<CmpOp::Eq>(pool(), t, x.node, y.node); break;
+        case CmpOp::Ne: r.node = cmpNode<CmpOp::Ne>(pool(), t, x.node, y.node); break;
+        case CmpOp::Lt: r.node = cmpNode<CmpOp::Lt>(pool(), t, x.node, y.node); break;
+        case CmpOp::Le: r.node = cmpNode<CmpOp::Le>(pool(), t, x.node, y.node); break;
+        case CmpOp::Gt: r.node = cmpNode<CmpOp::Gt>(pool(), t, x.node, y.node); break;
+        case CmpOp::Ge: r.node = cmpNode<CmpOp::Ge>(pool(), t, x.node, y.node); break;
+    }
+    r.node->type = r.type;
+    if (isStringType(t->kind)) return r;
+    return foldIfConst(r, {&x, &y});
+}
+
+Checked Checker::makeLogic(ast::Op op, Checked a, Checked b, const ast::Loc& loc) {
+    Checked r;
+    r.ok = true;
+    r.loc = loc;
+    r.hasCall = a.hasCall || b.hasCall;
+    if (op == ast::Op::AndThen || op == ast::Op::OrElse) {
+        if (a.type->kind != TK::Bool || b.type->kind != TK::Bool) {
+            error(loc, fmt::format("{} needs BOOL operands", opText(op)));
+            return bad(loc);
+        }
+        r.type = a.type;
+        r.node = op == ast::Op::AndThen ? static_cast<exec::Expr*>(pool().make<exec::AndThen>(a.node, b.node)) : pool().make<exec::OrElse>(a.node, b.node);
+        r.node->type = r.type;
+        return foldIfConst(r, {&a, &b});
+    }
+    const Type* t = nullptr;
+    if (a.type->kind == TK::Bool && b.type->kind == TK::Bool && !a.untypedInt && !b.untypedInt) t = a.type;
+    else if (a.type->kind == TK::Bool || b.type->kind == TK::Bool) {
+        error(loc, fmt::format("{} of {} and {}: both operands must be BOOL or both bit strings", opText(op), typeName(a.type), typeName(b.type)));
+        return bad(loc);
+    } else {
+        TK ka = a.untypedInt ? TK::Byte : a.type->kind, kb = b.untypedInt ? TK::Byte : b.type->kind;
+        if (!(isBitString(ka) || isInteger(ka)) || !(isBitString(kb) || isInteger(kb))) {
+            error(loc, fmt::format("{} needs BOOL or bit-string operands, not {} and {}", opText(op), typeName(a.type), typeName(b.type)));
+            return bad(loc);
+        }
+        t = commonType(a, b, loc);
+        if (!t) return bad(loc);
+    }
+    Checked x = coerce(a, t, loc, "operand");
+    Checked y = coerce(b, t, loc, "operand");
+    if (!x.ok || !y.ok) return bad(loc);
+    Rep rep = repOf(t);
+    r.type = t;
+    switch (op) {
+        case ast::Op::And: r.node = intOp<exec::AndI>(pool(), rep, x.node, y.node); break;
+        case ast::Op::Or: r.node = intOp<exec::OrI>(pool(), rep, x.node, y.node); break;
+        default: r.node = intOp<exec::XorI>(pool(), rep, x.node, y.node); break;
+    }
+    r.node->type = t;
+    return foldIfConst(r, {&x, &y});
+}
+
+}  // namespace strun::sema

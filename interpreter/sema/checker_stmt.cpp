@@ -1,0 +1,406 @@
+// Statements and POU bodies.
+#include <fmt/format.h>
+
+#include "interpreter/sema/checker.h"
+#include "interpreter/sema/node_factory.h"
+
+namespace strun::sema {
+
+namespace {
+uint32_t alignUp(uint32_t v, uint32_t a) { return a <= 1 ? v : (v + a - 1) / a * a; }
+
+template <class T, bool FRAME>
+exec::Stmt* makeLocal(exec::NodePool& pool, uint32_t off, exec::Expr* v) {
+    return pool.make<exec::AssignLocal<T, FRAME>>(off, v);
+}
+
+template <bool FRAME>
+exec::Stmt* assignLocal(exec::NodePool& pool, Rep rep, uint32_t off, exec::Expr* v) {
+    switch (rep) {
+        case Rep::I8: return makeLocal<int8_t, FRAME>(pool, off, v);
+        case Rep::I16: return makeLocal<int16_t, FRAME>(pool, off, v);
+        case Rep::I32: return makeLocal<int32_t, FRAME>(pool, off, v);
+        case Rep::I64: return makeLocal<int64_t, FRAME>(pool, off, v);
+        case Rep::U8: return makeLocal<uint8_t, FRAME>(pool, off, v);
+        case Rep::Bool: return makeLocal<bool, FRAME>(pool, off, v);
+        case Rep::U16: return makeLocal<uint16_t, FRAME>(pool, off, v);
+        case Rep::U32: return makeLocal<uint32_t, FRAME>(pool, off, v);
+        case Rep::U64: return makeLocal<uint64_t, FRAME>(pool, off, v);
+        case Rep::F32: return makeLocal<float, FRAME>(pool, off, v);
+        case Rep::F64: return makeLocal<double, FRAME>(pool, off, v);
+        default: return nullptr;
+    }
+}
+
+template <class T>
+exec::Stmt* assignBitTyped(exec::NodePool& pool, exec::Expr* place, exec::Expr* v) {
+    auto* bp = dynamic_cast<exec::BitPlace<T>*>(place);
+    return bp ? pool.make<exec::AssignBit<T>>(bp->base, bp->bit, v) : nullptr;
+}
+}  // namespace
+
+uint32_t Checker::allocTemp(uint32_t size) {
+    frameTop_ = alignUp(frameTop_, 8);
+    uint32_t off = frameTop_;
+    frameTop_ += std::max<uint32_t>(size, 1);
+    return off;
+}
+
+exec::Expr* Checker::tempPlace(const Type* t, uint32_t* offsetOut) {
+    uint32_t off = allocTemp(t->size);
+    if (offsetOut) *offsetOut = off;
+    exec::Expr* n = makeByRep<exec::FrameVar>(pool(), isAggregate(t) ? Rep::Void : repOf(t), off);
+    n->type = t;
+    return n;
+}
+
+exec::Stmt* Checker::storeTo(exec::Expr* place, const Type* t, exec::Expr* value, int bit) {
+    if (place->bitIndex() >= 0) {
+        if (auto* s = assignBitTyped<uint8_t>(pool(), place, value)) return s;
+        if (auto* s = assignBitTyped<uint16_t>(pool(), place, value)) return s;
+        if (auto* s = assignBitTyped<uint32_t>(pool(), place, value)) return s;
+        if (auto* s = assignBitTyped<uint64_t>(pool(), place, value)) return s;
+    }
+    if (t->kind == TK::String) return pool().make<exec::AssignString<char>>(place, value, t->maxLen);
+    if (t->kind == TK::WString) return pool().make<exec::AssignString<char16_t>>(place, value, t->maxLen);
+    if (isAggregate(t)) return pool().make<exec::AssignBytes>(place, value, t->size);
+    switch (repOf(t)) {
+        case Rep::I8: return pool().make<exec::Assign<int8_t>>(place, value);
+        case Rep::I16: return pool().make<exec::Assign<int16_t>>(place, value);
+        case Rep::I32: return pool().make<exec::Assign<int32_t>>(place, value);
+        case Rep::I64: return pool().make<exec::Assign<int64_t>>(place, value);
+        case Rep::U8: return pool().make<exec::Assign<uint8_t>>(place, value);
+        case Rep::Bool: return pool().make<exec::Assign<bool>>(place, value);
+        case Rep::U16: return pool().make<exec::Assign<uint16_t>>(place, value);
+        case Rep::U32: return pool().make<exec::Assign<uint32_t>>(place, value);
+        case Rep::U64: return pool().make<exec::Assign<uint64_t>>(place, value);
+        case Rep::F32: return pool().make<exec::Assign<float>>(place, value);
+        case Rep::F64: return pool().make<exec::Assign<double>>(place, value);
+        default: return pool().make<exec::NopStmt>();
+    }
+}
+
+exec::Stmt* Checker::assignChecked(Checked target, Checked value, const ast::Loc& loc) {
+    if (!target.ok || !value.ok) return nullptr;
+    if (!target.isPlace) {
+        error(target.loc, "the left side of ':=' is not a variable");
+        return nullptr;
+    }
+    if (target.readOnly) {
+        error(target.loc, fmt::format("cannot assign: {}", target.readOnlyWhy));
+        return nullptr;
+    }
+    const Type* t = target.type;
+    if (t->kind == TK::Enum && !(value.type == t)) {
+        error(value.loc, fmt::format("cannot assign {} to {} (an enumeration takes only its own values)", typeName(value.type), typeName(t)));
+        return nullptr;
+    }
+    Checked v = coerce(value, t, value.loc, "assignment");
+    if (!v.ok) return nullptr;
+    if (target.var && pou_ && target.var == pou_->result) assignedResult_ = true;
+    if (target.direct == Checked::Direct::Self && !isAggregate(t))
+        return assignLocal<false>(pool(), repOf(t), target.directOffset, v.node);
+    if (target.direct == Checked::Direct::Frame && !isAggregate(t))
+        return assignLocal<true>(pool(), repOf(t), target.directOffset, v.node);
+    return storeTo(target.node, t, v.node);
+}
+
+int Checker::labelId(const std::string& key) {
+    auto it = labels_.find(key);
+    if (it != labels_.end()) return it->second;
+    int id = static_cast<int>(labels_.size());
+    labels_[key] = id;
+    return id;
+}
+
+exec::Block* Checker::checkBlock(const ast::StmtList& list) {
+    auto* block = pool().make<exec::Block>();
+    for (const auto& s : list) {
+        if (!s) continue;
+        if (s->kind == ast::StmtKind::Label) {
+            std::string key = upper(s->name);
+            if (definedLabels_.count(key)) error(s->loc, fmt::format("duplicate label '{}'", s->name));
+            definedLabels_.insert(key);
+            block->labels.push_back({labelId(key), block->stmts.size()});
+            continue;
+        }
+        if (s->kind == ast::StmtKind::Empty) continue;
+        exec::Stmt* st = checkStmt(*s);
+        if (st) {
+            st->line = s->loc.line;
+            block->stmts.push_back(st);
+        }
+    }
+    return block;
+}
+
+exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
+    Checked target = checkExpr(*s.target);
+    Checked value = checkExpr(*s.expr);
+    if (!target.ok || !value.ok) return nullptr;
+    if (s.kind == ast::StmtKind::SetAssign || s.kind == ast::StmtKind::ResetAssign) {
+        if (target.type->kind != TK::Bool || value.type->kind != TK::Bool) {
+            error(s.loc, fmt::format("{} needs BOOL operands", s.kind == ast::StmtKind::SetAssign ? "S=" : "R="));
+            return nullptr;
+        }
+        exec::Stmt* set = assignChecked(target, constInt(s.kind == ast::StmtKind::SetAssign, types().elementary(TK::Bool), s.loc), s.loc);
+        if (!set) return nullptr;
+        return pool().make<exec::CondStmt>(value.node, set);
+    }
+    if (s.kind == ast::StmtKind::RefAssign || s.kind == ast::StmtKind::TryAssign) {
+        error(s.loc, fmt::format("{} is not supported yet", s.kind == ast::StmtKind::RefAssign ? "REF=" : "?="));
+        return nullptr;
+    }
+    exec::Stmt* st = assignChecked(target, value, s.loc);
+    if (st && (value.hasCall || target.hasCall)) {
+        // A call inside may have been aborted (watchdog / STOP): stop here too.
+        auto* wrap = pool().make<exec::Block>();
+        wrap->stmts.push_back(st);
+        struct AbortCheck final : exec::Stmt {
+            exec::Stmt* inner;
+            explicit AbortCheck(exec::Stmt* s) : inner(s) {}
+            exec::Flow exec(exec::Ctx& c) override {
+                exec::Flow f = inner->exec(c);
+                return c.aborting ? exec::Flow::Abort : f;
+            }
+        };
+        return pool().make<AbortCheck>(st);
+    }
+    return st;
+}
+
+exec::Stmt* Checker::checkFor(const ast::Stmt& s) {
+    ast::Expr varExpr;
+    varExpr.kind = ast::ExprKind::Name;
+    varExpr.name = s.name;
+    varExpr.loc = s.loc;
+    Checked var = checkExpr(varExpr);
+    Checked from = checkExpr(*s.from);
+    Checked to = checkExpr(*s.to);
+    Checked by;
+    if (s.by) by = checkExpr(*s.by);
+    if (!var.ok || !from.ok || !to.ok || (s.by && !by.ok)) return nullptr;
+    if (!(isInteger(var.type->kind) || isBitString(var.type->kind)) || !var.isPlace) {
+        error(s.loc, fmt::format("the FOR control variable '{}' must be an integer variable, not {}", s.name, typeName(var.type)));
+        return nullptr;
+    }
+    if (var.readOnly) {
+        error(s.loc, fmt::format("cannot use '{}' as FOR control variable: {}", s.name, var.readOnlyWhy));
+        return nullptr;
+    }
+    from = coerce(from, var.type, s.from->loc, "FOR start");
+    to = coerce(to, var.type, s.to->loc, "FOR end");
+    if (s.by) by = coerce(by, var.type, s.by->loc, "FOR step");
+    if (!from.ok || !to.ok || (s.by && !by.ok)) return nullptr;
+    ++loopDepth_;
+    exec::Block* body = checkBlock(s.body);
+    --loopDepth_;
+    auto fill = [&](auto* n) {
+        n->var = var.node;
+        n->from = from.node;
+        n->to = to.node;
+        n->by = s.by ? by.node : nullptr;
+        n->body = body;
+        return n;
+    };
+    switch (repOf(var.type)) {
+        case Rep::I8: return fill(pool().make<exec::ForStmt<int8_t>>());
+        case Rep::I16: return fill(pool().make<exec::ForStmt<int16_t>>());
+        case Rep::I32: return fill(pool().make<exec::ForStmt<int32_t>>());
+        case Rep::I64: return fill(pool().make<exec::ForStmt<int64_t>>());
+        case Rep::U8: return fill(pool().make<exec::ForStmt<uint8_t>>());
+        case Rep::U16: return fill(pool().make<exec::ForStmt<uint16_t>>());
+        case Rep::U32: return fill(pool().make<exec::ForStmt<uint32_t>>());
+        default: return fill(pool().make<exec::ForStmt<uint64_t>>());
+    }
+}
+
+exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
+    Checked sel = checkExpr(*s.expr);
+    if (!sel.ok) return nullptr;
+    sel = settle(sel);
+    const Type* st = sel.type;
+    if (!(isInteger(st->kind) || isBitString(st->kind) || st->kind == TK::Enum)) {
+        error(s.expr->loc, fmt::format("the CASE selector must be an integer or an enumeration, not {}", typeName(st)));
+        return nullptr;
+    }
+    auto* n = pool().make<exec::CaseStmt>();
+    n->selector = sel.node;
+    n->isUnsigned64 = repOf(st) == Rep::U64;
+    for (const auto& br : s.cases) {
+        size_t index = n->blocks.size();
+        for (const auto& lab : br.labels) {
+            auto one = [&](const ast::Expr* e, int64_t& out) -> bool {
+                Checked c = checkExpr(*e);
+                if (!c.ok) return false;
+                if (!c.isConst) {
+                    error(e->loc, "a CASE label must be a constant");
+                    return false;
+                }
+                if (st->kind == TK::Enum) {
+                    if (c.type != st) {
+                        error(e->loc, fmt::format("CASE label of type {} does not match the selector type {}", typeName(c.type), typeName(st)));
+                        return false;
+                    }
+                } else {
+                    if (!(c.untypedInt || isInteger(c.type->kind) || isBitString(c.type->kind))) {
+                        error(e->loc, fmt::format("CASE label of type {} does not match the selector type {}", typeName(c.type), typeName(st)));
+                        return false;
+                    }
+                    c = coerce(c, st, e->loc, "CASE label");
+                    if (!c.ok) return false;
+                }
+                out = c.constInt;
+                return true;
+            };
+            int64_t lo = 0, hi = 0;
+            if (!one(lab.lo.get(), lo)) continue;
+            hi = lo;
+            if (lab.hi && !one(lab.hi.get(), hi)) continue;
+            if (hi < lo) error(lab.lo->loc, fmt::format("empty CASE range {}..{}", lo, hi));
+            for (const auto& e : n->entries)
+                if (!(hi < e.lo || lo > e.hi)) {
+                    error(lab.lo->loc, fmt::format("CASE label {} is already used", lo == hi ? std::to_string(lo) : fmt::format("{}..{}", lo, hi)));
+                    break;
+                }
+            n->entries.push_back({lo, hi, index});
+        }
+        n->blocks.push_back(checkBlock(br.body));
+    }
+    if (s.elseBlock) n->elseBlock = checkBlock(*s.elseBlock);
+    return n;
+}
+
+exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
+    switch (s.kind) {
+        case ast::StmtKind::Assign:
+        case ast::StmtKind::SetAssign:
+        case ast::StmtKind::ResetAssign:
+        case ast::StmtKind::RefAssign:
+        case ast::StmtKind::TryAssign:
+            return checkAssign(s);
+        case ast::StmtKind::Call: {
+            if (!s.expr || s.expr->kind != ast::ExprKind::Call) {
+                error(s.loc, "this expression is not a statement");
+                return nullptr;
+            }
+            const ast::Expr& callee = *s.expr->kids[0];
+            // A function-block instance called as a statement?
+            bool maybeFb = callee.kind != ast::ExprKind::Name || lookupVar(upper(callee.name)) != nullptr;
+            if (maybeFb && !(callee.kind == ast::ExprKind::Member && false)) {
+                bool isMethod = false;
+                if (callee.kind == ast::ExprKind::Member) {
+                    // inst.Method(...) vs. structVar.fbMember(...)
+                    Checked base = checkExpr(*callee.kids[0]);
+                    if (base.ok && base.type->kind == TK::FunctionBlock && base.type->pou) {
+                        for (PouInfo* p = base.type->pou; p; p = p->parent)
+                            if (p->methods.count(upper(callee.name))) isMethod = true;
+                    }
+                }
+                if (!isMethod) {
+                    Checked inst = checkExpr(callee);
+                    if (!inst.ok) return nullptr;
+                    if (inst.type->kind == TK::FunctionBlock) return callFunctionBlock(inst, *s.expr);
+                }
+            }
+            Checked c = checkCall(*s.expr, true);
+            if (!c.ok) return nullptr;
+            auto rep = isRealRep(c.type) ? exec::EvalStmt::Rep::Real
+                       : isIntRep(c.type) ? exec::EvalStmt::Rep::Int
+                       : isAggregate(c.type) ? exec::EvalStmt::Rep::Addr : exec::EvalStmt::Rep::Int;
+            return pool().make<exec::EvalStmt>(c.node, rep);
+        }
+        case ast::StmtKind::If: {
+            auto* n = pool().make<exec::IfStmt>();
+            for (size_t k = 0; k < s.conds.size(); ++k) {
+                Checked c = checkCondition(*s.conds[k], "an IF condition");
+                exec::Block* b = checkBlock(s.blocks[k]);
+                if (!c.ok) continue;
+                n->conds.push_back(c.node);
+                n->blocks.push_back(b);
+            }
+            if (s.elseBlock) n->elseBlock = checkBlock(*s.elseBlock);
+            return n;
+        }
+        case ast::StmtKind::Case: return checkCase(s);
+        case ast::StmtKind::For: return checkFor(s);
+        case ast::StmtKind::While: {
+            Checked c = checkCondition(*s.expr, "a WHILE condition");
+            ++loopDepth_;
+            exec::Block* b = checkBlock(s.body);
+            --loopDepth_;
+            if (!c.ok) return nullptr;
+            auto* n = pool().make<exec::WhileStmt>();
+            n->cond = c.node;
+            n->body = b;
+            return n;
+        }
+        case ast::StmtKind::Repeat: {
+            ++loopDepth_;
+            exec::Block* b = checkBlock(s.body);
+            --loopDepth_;
+            Checked c = checkCondition(*s.expr, "an UNTIL condition");
+            if (!c.ok) return nullptr;
+            auto* n = pool().make<exec::RepeatStmt>();
+            n->cond = c.node;
+            n->body = b;
+            return n;
+        }
+        case ast::StmtKind::Exit:
+        case ast::StmtKind::Continue:
+            if (loopDepth_ == 0) {
+                error(s.loc, fmt::format("{} outside a loop", s.kind == ast::StmtKind::Exit ? "EXIT" : "CONTINUE"));
+                return nullptr;
+            }
+            return pool().make<exec::FlowStmt>(s.kind == ast::StmtKind::Exit ? exec::Flow::Exit : exec::Flow::Continue);
+        case ast::StmtKind::Return: return pool().make<exec::FlowStmt>(exec::Flow::Return);
+        case ast::StmtKind::Jmp: {
+            std::string key = upper(s.name);
+            pendingJumps_.push_back({s.loc, key});
+            return pool().make<exec::JumpStmt>(labelId(key));
+        }
+        case ast::StmtKind::Label:
+        case ast::StmtKind::Empty:
+            return nullptr;
+    }
+    return nullptr;
+}
+
+void Checker::checkBody(PouInfo* pou) {
+    if (pou->bodyChecked || !pou->ast->hasBody && pou->ast->body.empty()) {
+        if (!pou->code->body) pou->code->body = pool().make<exec::Block>();
+        pou->bodyChecked = true;
+        return;
+    }
+    pou->bodyChecked = true;
+    pou_ = pou;
+    model_.names.push_back(pou->code->name);
+    currentPouName_ = &model_.names.back();
+    frameTop_ = pou->frameSize;
+    loopDepth_ = 0;
+    labels_.clear();
+    definedLabels_.clear();
+    pendingJumps_.clear();
+    assignedResult_ = false;
+    pou->code->body = checkBlock(pou->ast->body);
+    for (const auto& [loc, key] : pendingJumps_)
+        if (!definedLabels_.count(key)) error(loc, fmt::format("JMP to undefined label '{}'", key));
+    if (pou->kind == ast::PouKind::Function && pou->result && !assignedResult_ && !libraryFiles_.count(pou->ast->loc.file))
+        log_.warning(pou->ast->loc, fmt::format("function '{}' never assigns its result", pou->name));
+    uint32_t size = alignUp(frameTop_, 16);
+    pou->code->frameSize = size;
+    pou->code->frameInit.resize(size, 0);
+    model_.maxFrameSize = std::max(model_.maxFrameSize, size);
+    pou_ = nullptr;
+    currentPouName_ = nullptr;
+}
+
+void Checker::checkBodies() {
+    for (PouInfo* p : pouOrder_) {
+        if (p->kind == ast::PouKind::Interface) continue;
+        checkBody(p);
+        for (auto& [name, m] : p->methods) checkBody(m);
+    }
+}
+
+}  // namespace strun::sema

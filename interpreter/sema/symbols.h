@@ -1,0 +1,94 @@
+// What the checker knows about declared names: variables with their storage
+// location, POUs with their layout, and the typed result of checking an
+// expression.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "interpreter/ast/ast.h"
+#include "interpreter/exec/call_nodes.h"
+#include "interpreter/sema/types.h"
+
+namespace strun::sema {
+
+// Where a variable lives at run time.
+enum class Storage : uint8_t {
+    Self,   // offset in the current PROGRAM / FB instance
+    Frame,  // offset in the current call frame
+    Abs,    // absolute address (globals, process image)
+};
+
+struct PouInfo;
+
+struct VarSym {
+    std::string name;  // as declared
+    ast::Loc loc;
+    const Type* type = nullptr;
+    ast::VarSection section = ast::VarSection::Var;
+    bool constant = false;
+    bool retain = false;
+    Storage storage = Storage::Self;
+    uint32_t offset = 0;
+    uint8_t* abs = nullptr;      // Storage::Abs
+    int bit = -1;                // BOOL at a bit address (%IX0.3)
+    bool byRef = false;          // VAR_IN_OUT / REFERENCE: the slot holds an address
+    const ast::VarDecl* decl = nullptr;
+    PouInfo* owner = nullptr;    // POU the variable belongs to (null for globals)
+    VarSym* global = nullptr;    // VAR_EXTERNAL: the global it names
+    bool used = false;
+    // CONSTANT with a constant initial value: folded into uses.
+    bool hasConstValue = false;
+    int64_t constInt = 0;
+    double constReal = 0;
+};
+
+struct PouInfo {
+    ast::Pou* ast = nullptr;
+    ast::PouKind kind = ast::PouKind::Program;
+    std::string name;
+    PouInfo* owner = nullptr;                 // METHOD: the FB / PROGRAM it belongs to
+    PouInfo* parent = nullptr;                // FB EXTENDS
+    std::vector<VarSym*> params;              // inputs, outputs, in-outs in declaration order
+    std::map<std::string, VarSym*> vars;      // upper-case name -> variable (own, not inherited)
+    std::vector<std::unique_ptr<VarSym>> ownedVars;
+    VarSym* result = nullptr;                 // FUNCTION / METHOD result variable
+    const Type* resultType = nullptr;
+    Type* instanceType = nullptr;             // PROGRAM / FB: the instance layout as a struct-like type
+    std::map<std::string, PouInfo*> methods;  // upper-case name -> method
+    exec::PouCode* code = nullptr;
+    bool laidOut = false;
+    bool layingOut = false;
+    bool bodyChecked = false;
+    uint32_t frameSize = 0;
+    std::vector<uint8_t> instanceInit;        // initial image of an instance
+};
+
+// An expression after checking: its node, type, and what the checker knows
+// statically about it.
+struct Checked {
+    exec::Expr* node = nullptr;
+    const Type* type = nullptr;
+    bool ok = false;           // false after an error (already reported)
+    bool isConst = false;      // value known at compile time (constInt / constReal / node is ConstBytes)
+    int64_t constInt = 0;
+    double constReal = 0;
+    bool untypedInt = false;   // integer literal not yet given a type (ANY_INT)
+    bool untypedReal = false;  // real literal not yet given a type (ANY_REAL)
+    bool isPlace = false;      // designates storage (can be assigned / passed by reference)
+    bool readOnly = false;     // CONSTANT, or an input seen from outside its POU
+    std::string readOnlyWhy;
+    VarSym* var = nullptr;     // the variable, when the expression is a plain variable
+    PouInfo* fbInstanceOf = nullptr;  // FB-typed place: its FB
+    bool hasCall = false;
+    ast::Loc loc;
+    // A variable place at a statically known location (member accesses fold into it).
+    enum class Direct : uint8_t { None, Self, Frame, Abs, Pending } direct = Direct::None;
+    uint32_t directOffset = 0;
+    uint8_t* directAbs = nullptr;
+};
+
+}  // namespace strun::sema

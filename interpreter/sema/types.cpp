@@ -1,0 +1,200 @@
+#include "interpreter/sema/types.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace strun::sema {
+
+std::string upper(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+const Field* Type::findField(const std::string& upperName) const {
+    for (const Type* t = this; t; t = t->parent)
+        for (const auto& f : t->fields)
+            if (upper(f.name) == upperName) return &f;
+    return nullptr;
+}
+
+bool isInteger(TK k) { return k >= TK::SInt && k <= TK::ULInt; }
+bool isSignedInt(TK k) { return k >= TK::SInt && k <= TK::LInt; }
+bool isUnsignedInt(TK k) { return k >= TK::USInt && k <= TK::ULInt; }
+bool isBitString(TK k) { return k >= TK::Byte && k <= TK::LWord; }
+bool isAnyBit(TK k) { return k == TK::Bool || isBitString(k); }
+bool isReal(TK k) { return k == TK::Real || k == TK::LReal; }
+bool isNumeric(TK k) { return isInteger(k) || isReal(k); }
+bool isTimeLike(TK k) { return k == TK::Time || k == TK::LTime; }
+bool isDateLike(TK k) { return k >= TK::Date && k <= TK::LDt; }
+bool isStringType(TK k) { return k == TK::String || k == TK::WString; }
+bool isCharType(TK k) { return k == TK::Char || k == TK::WChar; }
+bool isElementary(TK k) { return k <= TK::WString; }
+
+int bitWidth(TK k) {
+    switch (k) {
+        case TK::Bool: return 1;
+        case TK::SInt: case TK::USInt: case TK::Byte: case TK::Char: return 8;
+        case TK::Int: case TK::UInt: case TK::Word: case TK::WChar: return 16;
+        case TK::DInt: case TK::UDInt: case TK::DWord: case TK::Real: case TK::Time:
+        case TK::Date: case TK::Tod: case TK::Dt: return 32;
+        default: return 64;
+    }
+}
+
+TK integerView(TK k) {
+    switch (k) {
+        case TK::Byte: case TK::Char: return TK::USInt;
+        case TK::Word: case TK::WChar: return TK::UInt;
+        case TK::DWord: case TK::Date: case TK::Tod: case TK::Dt: return TK::UDInt;
+        case TK::LWord: return TK::ULInt;
+        case TK::Time: return TK::DInt;
+        case TK::LTime: case TK::LDate: case TK::LTod: case TK::LDt: return TK::LInt;
+        case TK::Bool: return TK::USInt;
+        default: return k;
+    }
+}
+
+bool isIntRep(const Type* t) {
+    TK k = t->kind;
+    return k == TK::Bool || isInteger(k) || isBitString(k) || isTimeLike(k) || isDateLike(k) || isCharType(k) ||
+           k == TK::Enum;
+}
+bool isRealRep(const Type* t) { return isReal(t->kind); }
+bool isAggregate(const Type* t) {
+    TK k = t->kind;
+    return isStringType(k) || k == TK::Array || k == TK::Struct || k == TK::FunctionBlock;
+}
+
+TypeTable::TypeTable() {
+    struct E { TK k; const char* name; uint32_t size; };
+    static const E elems[] = {
+        {TK::Bool, "BOOL", 1},   {TK::SInt, "SINT", 1},   {TK::Int, "INT", 2},       {TK::DInt, "DINT", 4},
+        {TK::LInt, "LINT", 8},   {TK::USInt, "USINT", 1}, {TK::UInt, "UINT", 2},     {TK::UDInt, "UDINT", 4},
+        {TK::ULInt, "ULINT", 8}, {TK::Byte, "BYTE", 1},   {TK::Word, "WORD", 2},     {TK::DWord, "DWORD", 4},
+        {TK::LWord, "LWORD", 8}, {TK::Real, "REAL", 4},   {TK::LReal, "LREAL", 8},   {TK::Time, "TIME", 4},
+        {TK::LTime, "LTIME", 8}, {TK::Date, "DATE", 4},   {TK::Tod, "TIME_OF_DAY", 4}, {TK::Dt, "DATE_AND_TIME", 4},
+        {TK::LDate, "LDATE", 8}, {TK::LTod, "LTIME_OF_DAY", 8}, {TK::LDt, "LDATE_AND_TIME", 8},
+        {TK::Char, "CHAR", 1},   {TK::WChar, "WCHAR", 2}, {TK::String, "STRING", 81}, {TK::WString, "WSTRING", 162},
+        {TK::Enum, "ENUM", 2},   {TK::Array, "ARRAY", 0}, {TK::Struct, "STRUCT", 0}, {TK::FunctionBlock, "FB", 0},
+        {TK::Pointer, "POINTER", 8}, {TK::Reference, "REFERENCE", 8}, {TK::Interface, "INTERFACE", 8},
+        {TK::Void, "VOID", 0},
+    };
+    elementary_.resize(static_cast<size_t>(TK::Void) + 1);
+    for (const auto& e : elems) {
+        Type t;
+        t.kind = e.k;
+        t.name = e.name;
+        t.size = e.size;
+        t.align = std::min<uint32_t>(std::max<uint32_t>(e.size, 1), 8);
+        if (e.k == TK::String) { t.maxLen = 80; t.align = 1; }
+        if (e.k == TK::WString) { t.maxLen = 80; t.align = 2; }
+        storage_.push_back(t);
+        elementary_[static_cast<size_t>(e.k)] = &storage_.back();
+        names_[e.name] = &storage_.back();
+    }
+    strings_[{80, false}] = elementary(TK::String);
+    strings_[{80, true}] = elementary(TK::WString);
+    names_["TOD"] = elementary(TK::Tod);
+    names_["DT"] = elementary(TK::Dt);
+    names_["LTOD"] = elementary(TK::LTod);
+    names_["LDT"] = elementary(TK::LDt);
+    names_.erase("ENUM");
+    names_.erase("ARRAY");
+    names_.erase("STRUCT");
+    names_.erase("FB");
+    names_.erase("POINTER");
+    names_.erase("REFERENCE");
+    names_.erase("INTERFACE");
+    names_.erase("VOID");
+}
+
+const Type* TypeTable::byName(const std::string& upperName) const {
+    auto it = names_.find(upperName);
+    return it == names_.end() ? nullptr : it->second;
+}
+
+const Type* TypeTable::string(uint32_t maxLen, bool wide) {
+    auto key = std::make_pair(maxLen, wide);
+    auto it = strings_.find(key);
+    if (it != strings_.end()) return it->second;
+    Type t;
+    t.kind = wide ? TK::WString : TK::String;
+    t.name = (wide ? "WSTRING[" : "STRING[") + std::to_string(maxLen) + "]";
+    t.maxLen = maxLen;
+    t.size = (maxLen + 1) * (wide ? 2 : 1);
+    t.align = wide ? 2 : 1;
+    storage_.push_back(t);
+    strings_[key] = &storage_.back();
+    return &storage_.back();
+}
+
+const Type* TypeTable::array(const Type* elem, std::vector<ArrayDim> dims, bool flexible) {
+    Type t;
+    t.kind = TK::Array;
+    t.elem = elem;
+    t.flexible = flexible;
+    uint64_t count = 1;
+    std::string name = "ARRAY[";
+    for (size_t i = 0; i < dims.size(); ++i) {
+        count *= static_cast<uint64_t>(std::max<int64_t>(dims[i].count(), 0));
+        if (i) name += ",";
+        name += std::to_string(dims[i].lo) + ".." + std::to_string(dims[i].hi);
+    }
+    if (flexible) name += "*";
+    name += "] OF " + elem->name;
+    t.name = name;
+    t.dims = std::move(dims);
+    t.elemCount = flexible ? 0 : count;
+    t.size = flexible ? 0 : static_cast<uint32_t>(count * elem->size);
+    t.align = elem->align;
+    storage_.push_back(t);
+    return &storage_.back();
+}
+
+const Type* TypeTable::pointer(const Type* target) {
+    auto it = pointers_.find(target);
+    if (it != pointers_.end()) return it->second;
+    Type t;
+    t.kind = TK::Pointer;
+    t.name = "POINTER TO " + target->name;
+    t.target = target;
+    t.size = 8;
+    t.align = 8;
+    storage_.push_back(t);
+    pointers_[target] = &storage_.back();
+    return &storage_.back();
+}
+
+const Type* TypeTable::reference(const Type* target) {
+    auto it = references_.find(target);
+    if (it != references_.end()) return it->second;
+    Type t;
+    t.kind = TK::Reference;
+    t.name = "REFERENCE TO " + target->name;
+    t.target = target;
+    t.size = 8;
+    t.align = 8;
+    storage_.push_back(t);
+    references_[target] = &storage_.back();
+    return &storage_.back();
+}
+
+Type* TypeTable::create(Type t) {
+    storage_.push_back(std::move(t));
+    return &storage_.back();
+}
+
+std::string typeName(const Type* t) { return t ? t->name : std::string("?"); }
+
+bool sameType(const Type* a, const Type* b) {
+    if (a == b) return true;
+    if (!a || !b) return false;
+    if (isElementary(a->kind) && isElementary(b->kind)) return a->kind == b->kind;
+    if (a->kind == TK::Pointer && b->kind == TK::Pointer) return sameType(a->target, b->target);
+    if (a->kind == TK::Reference && b->kind == TK::Reference) return sameType(a->target, b->target);
+    if (a->kind == TK::Array && b->kind == TK::Array)
+        return sameType(a->elem, b->elem) && a->elemCount == b->elemCount;
+    return false;
+}
+
+}  // namespace strun::sema

@@ -1,0 +1,600 @@
+#include "runtime/scheduler.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <iostream>
+#include <numeric>
+#include <stdexcept>
+#include <thread>
+
+#include "runtime/duration_text.h"
+#include "runtime/real_clock.h"
+#include "runtime/realtime.h"
+#include "runtime/time_event.h"
+
+namespace strun::rt {
+
+std::atomic<bool> Scheduler::stopRequested_{false};
+std::atomic<Machine*> Scheduler::runningMachine_{nullptr};
+
+namespace {
+
+// The real clock's idle sleep never exceeds this, so a stop request that
+// arrives as a signal on another thread is seen within this time.
+constexpr PlcTime kMaxIdleSleep = 20 * kMillisecond;
+// SCHED_FIFO priorities for --realtime: the timer must preempt the PLC thread.
+constexpr int kPlcThreadPriority = 80;
+constexpr int kTimerThreadPriority = 90;
+
+bool equalsIgnoreCase(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+// Start-up order among tasks of equal priority released at the same moment
+// (seed 000, 4.6.1.5): event-like tasks, then cyclic ones by shorter period,
+// then freewheeling ones; declaration order last.
+int kindRank(TaskKind kind) {
+    switch (kind) {
+    case TaskKind::Startup:
+    case TaskKind::ProgramError:
+    case TaskKind::ExecTimeout: return 0;
+    case TaskKind::Event:
+    case TaskKind::Status:
+    case TaskKind::TimeEvent: return 1;
+    case TaskKind::Cyclic: return 2;
+    case TaskKind::Freewheeling: return 3;
+    }
+    return 3;
+}
+
+// --dump reports durations in microseconds; whole numbers stay integers.
+nlohmann::json micros(PlcTime nanos) {
+    if (nanos % 1000 == 0) return nanos / 1000;
+    return double(nanos) / 1000.0;
+}
+
+}  // namespace
+
+const char* plcStateName(PlcState state) {
+    switch (state) {
+    case PlcState::Run: return "RUN";
+    case PlcState::Stop: return "STOP";
+    case PlcState::Halt: return "HALT";
+    }
+    return "STOP";
+}
+
+bool Scheduler::hasTask(const std::vector<TaskSpec>& tasks, std::string_view name) {
+    return std::any_of(tasks.begin(), tasks.end(), [&](const TaskSpec& t) { return equalsIgnoreCase(t.name, name); });
+}
+
+Scheduler::Scheduler(Machine& machine, std::vector<TaskSpec> tasks, std::vector<TaskBody*> bodies, RunOptions options)
+    : machine_(machine),
+      options_(std::move(options)),
+      profile_(options_.profile ? *options_.profile : defaultProfile()),
+      diagnostics_(options_.diagnosticCapacity) {
+    if (tasks.size() != bodies.size()) throw std::invalid_argument("scheduler: one task body per task is required");
+    tasks_.resize(tasks.size());
+    for (size_t i = 0; i < tasks.size(); ++i) {
+        TaskRun& run = tasks_[i];
+        run.spec = std::move(tasks[i]);
+        run.body = bodies[i];
+        run.isFaultTask = run.spec.kind == TaskKind::ProgramError || run.spec.kind == TaskKind::ExecTimeout;
+        if (run.spec.kind == TaskKind::Startup && !startup_) startup_ = &run;
+        if (run.spec.kind == TaskKind::ProgramError && !errorTask_) errorTask_ = &run;
+        if (run.spec.kind == TaskKind::ExecTimeout && !timeoutTask_) timeoutTask_ = &run;
+    }
+    std::vector<size_t> order(tasks_.size());
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        const TaskSpec& x = tasks_[a].spec;
+        const TaskSpec& y = tasks_[b].spec;
+        if (kindRank(x.kind) != kindRank(y.kind)) return kindRank(x.kind) < kindRank(y.kind);
+        if (x.kind == TaskKind::Cyclic && y.kind == TaskKind::Cyclic) return x.interval < y.interval;
+        return false;
+    });
+    for (size_t rank = 0; rank < order.size(); ++rank) tasks_[order[rank]].tieRank = int(rank);
+
+    if (options_.cycles) {
+        if (tasks_.empty()) throw std::invalid_argument("--cycles: the project has no task");
+        const std::string& name = options_.cyclesTask.empty() ? tasks_.front().spec.name : options_.cyclesTask;
+        for (TaskRun& run : tasks_)
+            if (equalsIgnoreCase(run.spec.name, name)) {
+                cyclesTask_ = &run;
+                break;
+            }
+        if (!cyclesTask_) throw std::invalid_argument("--task: no task named '" + name + "'");
+    }
+    stack_.reserve(tasks_.size() + 1);
+}
+
+Scheduler::~Scheduler() = default;
+
+void Scheduler::requestStop() {
+    stopRequested_.store(true);
+    // Lock-free atomics only: this runs inside a signal handler.
+    if (Machine* machine = runningMachine_.load()) machine->deadline.store(std::numeric_limits<PlcTime>::min());
+}
+
+// ---------------------------------------------------------------- the run
+
+PlcState Scheduler::run() {
+    // The stop flag is cleared when a run ends, not here: a Ctrl-C that comes
+    // between installing the handler and this call still stops the run.
+    runningMachine_.store(&machine_);
+    machine_.handler = this;
+    machine_.now = 0;
+    machine_.deadline.store(kNever);
+    forEnd_ = options_.duration.value_or(kNever);
+    if (options_.virtualClock) {
+        machine_.stmtCost = std::max<PlcTime>(options_.stmtCost, 1);
+        calendarBase_ = options_.startCalendarNanos;
+    } else {
+        machine_.stmtCost = 0;
+        calendarBase_ = realtimeNanos();
+        monotonicOrigin_ = monotonicNanos();
+        timer_ = std::make_unique<AttentionTimer>(machine_, monotonicOrigin_);
+    }
+    if (options_.realtime) {
+        std::ostream& out = options_.warnings ? *options_.warnings : std::cerr;
+        if (options_.virtualClock) {
+            out << "strun: warning: --realtime has no effect on the virtual clock\n";
+        } else {
+            std::vector<std::string> notes = enableRealtimeForThisThread(kPlcThreadPriority);
+            if (std::string note = enableRealtimeForThread(timer_->thread(), kTimerThreadPriority); !note.empty())
+                notes.push_back(note);
+            for (const std::string& note : notes) out << "strun: warning: --realtime: " << note << '\n';
+        }
+    }
+
+    for (TaskRun& task : tasks_) {
+        // Event tasks react to rising edges after RUN: a BOOL already TRUE at RUN is no edge.
+        if (task.spec.kind == TaskKind::Event) task.lastTrigger = task.spec.trigger.byte && task.spec.trigger.read();
+        // Time events follow the calendar from RUN on; one due during the startup task waits for its end.
+        if (task.spec.kind == TaskKind::TimeEvent) {
+            task.nextOccurrence = nextTimeEventOccurrence(task.spec.atCalendarNanos, task.spec.repeat, calendarBase_);
+            task.nextRelease = calendarToPlc(task.nextOccurrence);
+        }
+    }
+    recomputeEarliestRelease();
+    if (startup_) release(*startup_, 0, false);
+    else startRegularTasks();
+    if (options_.cycles && *options_.cycles == 0) ending_ = true;
+
+    mainLoop();
+
+    // A fault stop ends the run at the fault, not at the statement boundary where the task unwound.
+    endTime_ = state_ == PlcState::Run ? machine_.now : stopTime_;
+    timer_.reset();
+    runningMachine_.store(nullptr);
+    stopRequested_.store(false);
+    machine_.deadline.store(kNever);
+    return state_;
+}
+
+void Scheduler::mainLoop() {
+    for (;;) {
+        refreshNow();
+        if (stopRequested_.load()) ending_ = true;
+        if (ending_) return;
+        if (machine_.now >= forEnd_) return;
+        processDue();
+        if (TaskRun* next = pickReady(nullptr)) {
+            runActivation(*next);
+            continue;
+        }
+        idle();
+    }
+}
+
+// Nothing is ready: wait for the next moment anything can happen.
+void Scheduler::idle() {
+    PlcTime next = std::min(earliestRelease_, forEnd_);
+    if (hasTriggers_) next = std::min(next, nextSample_);
+    if (options_.virtualClock) {
+        if (next != kNever) {
+            machine_.now = std::max(machine_.now, next);
+            return;
+        }
+        // Nothing can ever happen again: wait (without spinning) to be stopped.
+        while (!stopRequested_.load()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        return;
+    }
+    timer_->arm(kNever);
+    PlcTime wake = std::min(next, machine_.now + kMaxIdleSleep);
+    sleepUntilMonotonic(monotonicOrigin_ + wake);
+}
+
+void Scheduler::refreshNow() {
+    if (!options_.virtualClock) machine_.now = monotonicNanos() - monotonicOrigin_;
+}
+
+// ---------------------------------------------------------------- releases
+
+// STOP -> RUN is over (no startup task, or it has ended): the other tasks
+// begin, cyclic grids and the first samples counting from this moment.
+void Scheduler::startRegularTasks() {
+    regularStarted_ = true;
+    PlcTime now = machine_.now;
+    for (TaskRun& task : tasks_) {
+        switch (task.spec.kind) {
+        case TaskKind::Cyclic:
+            release(task, now, true);
+            task.nextRelease = task.spec.interval > 0 ? now + task.spec.interval : kNever;
+            break;
+        case TaskKind::Freewheeling: release(task, now, false); break;
+        case TaskKind::Event: {
+            // The reference was sampled at RUN: an edge made by the startup task counts.
+            hasTriggers_ = true;
+            bool value = task.spec.trigger.byte && task.spec.trigger.read();
+            if (value && !task.lastTrigger) release(task, now, true);
+            task.lastTrigger = value;
+            break;
+        }
+        case TaskKind::Status:
+            hasTriggers_ = true;
+            if (task.spec.trigger.byte && task.spec.trigger.read()) release(task, now, false);
+            break;
+        case TaskKind::TimeEvent:  // scheduled at RUN (run()): they follow the calendar
+        case TaskKind::Startup:
+        case TaskKind::ProgramError:
+        case TaskKind::ExecTimeout: break;
+        }
+    }
+    if (hasTriggers_) nextSample_ = (now / profile_.schedulerTick + 1) * profile_.schedulerTick;
+    recomputeEarliestRelease();
+}
+
+PlcTime Scheduler::calendarToPlc(int64_t calendar) const {
+    if (calendar == kNever) return kNever;
+    return std::max<PlcTime>(calendar - calendarBase_, machine_.now);
+}
+
+// Releases everything whose moment has come, in time order (ties: declaration order).
+void Scheduler::processDue() {
+    PlcTime now = machine_.now;
+    if (earliestRelease_ <= now) {
+        for (;;) {
+            TaskRun* due = nullptr;
+            for (TaskRun& task : tasks_)
+                if (task.nextRelease <= now && (!due || task.nextRelease < due->nextRelease)) due = &task;
+            if (!due) break;
+            PlcTime nominal = due->nextRelease;
+            scheduleNext(*due);
+            release(*due, nominal, true);
+        }
+        recomputeEarliestRelease();
+    }
+    if (hasTriggers_ && nextSample_ <= now) {
+        // Missed ticks are not caught up: sampling twice at one moment sees the same values.
+        nextSample_ = (now / profile_.schedulerTick + 1) * profile_.schedulerTick;
+        sampleTriggers();
+    }
+}
+
+void Scheduler::scheduleNext(TaskRun& task) {
+    if (task.spec.kind == TaskKind::Cyclic) {
+        task.nextRelease += task.spec.interval;  // the grid, whatever happened to this activation
+    } else if (task.spec.kind == TaskKind::TimeEvent) {
+        task.nextOccurrence = nextTimeEventOccurrence(task.spec.atCalendarNanos, task.spec.repeat, task.nextOccurrence + 1);
+        task.nextRelease = calendarToPlc(task.nextOccurrence);
+    } else {
+        task.nextRelease = kNever;
+    }
+}
+
+void Scheduler::recomputeEarliestRelease() {
+    earliestRelease_ = kNever;
+    for (const TaskRun& task : tasks_) earliestRelease_ = std::min(earliestRelease_, task.nextRelease);
+}
+
+// Makes the task ready. A task already ready or running drops the new
+// activation; for the kinds that have a release of their own (cyclic,
+// event, time event) that is an OVERRUN.
+bool Scheduler::release(TaskRun& task, PlcTime nominal, bool reportOverrun) {
+    if (task.phase != Phase::Idle) {
+        if (reportOverrun) {
+            ++task.overruns;
+            trace(&task, "overrun");
+            record(DiagCode::Overrun, &task, "", 0,
+                   "task '" + task.spec.name + "' released at " + formatDuration(nominal) + " while its previous activation is still " +
+                       (task.phase == Phase::Ready ? "waiting" : "running") + "; the activation is dropped");
+        }
+        return false;
+    }
+    task.phase = Phase::Ready;
+    task.releasedAt = nominal;
+    trace(&task, "release");
+    return true;
+}
+
+// Event tasks: one release per rising edge between two samples. Status
+// tasks: a release whenever the BOOL is TRUE and the task is idle.
+void Scheduler::sampleTriggers() {
+    if (!regularStarted_) return;
+    PlcTime now = machine_.now;
+    for (TaskRun& task : tasks_) {
+        if (task.spec.kind != TaskKind::Event && task.spec.kind != TaskKind::Status) continue;
+        bool value = task.spec.trigger.byte && task.spec.trigger.read();
+        if (task.spec.kind == TaskKind::Event) {
+            if (value && !task.lastTrigger) release(task, now, true);
+            task.lastTrigger = value;
+        } else if (value && task.phase == Phase::Idle) {
+            release(task, now, false);
+        }
+    }
+}
+
+// ---------------------------------------------------------------- dispatch
+
+// The ready task that should run now: highest priority, then the longest
+// waiting, then the start-up order. With `running`, only one allowed to
+// preempt it (strictly higher priority; the startup task yields only to the
+// program-error and execution-timeout tasks, but to those whatever their priority).
+Scheduler::TaskRun* Scheduler::pickReady(const TaskRun* running) const {
+    TaskRun* best = nullptr;
+    for (const TaskRun& candidate : tasks_) {
+        if (candidate.phase != Phase::Ready) continue;
+        // Until the startup task has ended, only it and the fault tasks may run.
+        if (!regularStarted_ && !candidate.isFaultTask && &candidate != startup_) continue;
+        if (best) {
+            const TaskSpec& a = candidate.spec;
+            const TaskSpec& b = best->spec;
+            if (a.priority != b.priority) {
+                if (a.priority > b.priority) continue;
+            } else if (candidate.releasedAt != best->releasedAt) {
+                if (candidate.releasedAt > best->releasedAt) continue;
+            } else if (candidate.tieRank > best->tieRank) {
+                continue;
+            }
+        }
+        best = const_cast<TaskRun*>(&candidate);
+    }
+    if (!best || !running) return best;
+    if (best->spec.priority < running->spec.priority) return best;
+    if (running == startup_ && best->isFaultTask) return best;
+    return nullptr;
+}
+
+void Scheduler::runActivation(TaskRun& task) {
+    refreshNow();
+    PlcTime start = machine_.now;
+    task.phase = Phase::Active;
+    task.startedAt = start;
+    task.watchdogAt = task.spec.watchdog > 0 ? start + task.spec.watchdog : kNever;
+    PlcTime latency = start - task.releasedAt;
+    task.minLatency = std::min(task.minLatency, latency);
+    task.maxLatency = std::max(task.maxLatency, latency);
+    ++task.started;
+    ++activations_;
+    stack_.push_back(&task);
+    trace(&task, "start");
+
+    ProcessImage& image = machine_.image;
+    std::memcpy(image.inputs.data(), image.physicalInputs.data(), std::min(image.inputExtent, ProcessImage::kSize));
+    armNextAttention();
+
+    bool completed = task.body ? task.body->runActivation() : true;
+
+    // An activation costs at least one statement, even an empty one, so a
+    // freewheeling task can never spin at a standstill on the virtual clock.
+    if (options_.virtualClock && machine_.now == start) machine_.now += machine_.stmtCost;
+    refreshNow();
+    stack_.pop_back();
+    task.phase = Phase::Idle;
+    task.watchdogAt = kNever;
+    finishActivation(task, completed);
+}
+
+void Scheduler::finishActivation(TaskRun& task, bool completed) {
+    PlcTime now = machine_.now;
+    if (task.abortRequested) {
+        task.abortRequested = false;
+        if (!ending_) trace(&task, "abort");  // after a STOP the "stop" line says it all
+    } else if (completed) {
+        PlcTime exec = now - task.startedAt;
+        ++task.cycles;
+        task.lastExec = exec;
+        task.minExec = std::min(task.minExec, exec);
+        task.maxExec = std::max(task.maxExec, exec);
+        task.sumExec += exec;
+        ProcessImage& image = machine_.image;
+        std::memcpy(image.physicalOutputs.data(), image.outputs.data(), std::min(image.outputExtent, ProcessImage::kSize));
+        trace(&task, "end");
+        if (&task == cyclesTask_ && task.cycles >= *options_.cycles) ending_ = true;
+    }
+    if (ending_) return;
+    if (&task == startup_ && !regularStarted_) startRegularTasks();
+    if (task.spec.kind == TaskKind::Freewheeling) release(task, now, false);
+    if (hasTriggers_) sampleTriggers();
+}
+
+bool Scheduler::onAttention() {
+    if (options_.virtualClock) {
+        machine_.deadline.store(kNever, std::memory_order_relaxed);
+    } else {
+        // Raise the deadline BEFORE reading the clock: a timer poke that lands
+        // after this exchange calls us again, one before it is covered below.
+        machine_.deadline.exchange(kNever, std::memory_order_acq_rel);
+        refreshNow();
+    }
+    if (stack_.empty()) return ending_;  // not from a task body: nothing to decide
+    TaskRun& current = *stack_.back();
+    bool preempted = false;
+    for (;;) {
+        if (stopRequested_.load()) ending_ = true;
+        if (machine_.now >= forEnd_) ending_ = true;
+        if (ending_) {
+            machine_.requestAttention();  // every level below unwinds too
+            return true;
+        }
+        processDue();
+        checkWatchdogs();
+        if (ending_) continue;
+        if (current.abortRequested) {
+            armNextAttention();
+            return true;
+        }
+        TaskRun* next = pickReady(&current);
+        if (!next) break;
+        if (!preempted) trace(&current, "preempt");
+        preempted = true;
+        runActivation(*next);
+    }
+    if (preempted) trace(&current, "resume");
+    armNextAttention();
+    return false;
+}
+
+// ---------------------------------------------------------------- watchdog and faults
+
+// Execution time counts from the activation's start, preemptions included.
+void Scheduler::checkWatchdogs() {
+    for (TaskRun* task : stack_)
+        if (machine_.now >= task->watchdogAt) tripWatchdog(*task);
+}
+
+void Scheduler::tripWatchdog(TaskRun& task) {
+    task.watchdogAt = kNever;
+    task.abortRequested = true;
+    ++task.watchdogTrips;
+    trace(&task, "watchdog");
+    bool timeoutTaskTripped = &task == timeoutTask_;
+    record(DiagCode::Watchdog, &task, "", 0,
+           std::string(timeoutTaskTripped ? "the execution-timeout task '" : "task '") + task.spec.name +
+               "' reached its watchdog of " + formatDuration(task.spec.watchdog) + " (running for " +
+               formatDuration(machine_.now - task.startedAt) + ", preemptions included); the activation is aborted");
+    PlcState reaction = profile_.watchdogReaction == WatchdogReaction::Halt ? PlcState::Halt : PlcState::Stop;
+    if (timeoutTaskTripped || !timeoutTask_) faultStop(&task, DiagCode::Watchdog, reaction);
+    else release(*timeoutTask_, machine_.now, false);
+}
+
+void Scheduler::faultStop(const TaskRun* task, DiagCode code, PlcState state) {
+    if (state_ == PlcState::Run) {
+        state_ = state;
+        stopTime_ = machine_.now;
+    }
+    ending_ = true;
+    trace(task, state == PlcState::Halt ? "halt" : "stop", diagCodeName(code));
+    machine_.requestAttention();
+}
+
+void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::string message) {
+    refreshNow();
+    TaskRun* current = stack_.empty() ? nullptr : stack_.back();
+    trace(current, "error", diagCodeName(code));
+    record(code, current, pou, line, std::move(message));
+    switch (code) {
+    case DiagCode::DivByZero:
+    case DiagCode::Overrun:
+    case DiagCode::Watchdog: return;  // recorded; execution goes on
+    case DiagCode::ArrayBounds:
+    case DiagCode::NullPointer:
+        // A program error inside the program-error task itself stops the PLC,
+        // as a watchdog trip of the execution-timeout task does.
+        if (errorTask_ && current != errorTask_) {
+            release(*errorTask_, machine_.now, false);
+            machine_.requestAttention();  // it may preempt at the next statement boundary
+            return;
+        }
+        faultStop(current, code, PlcState::Stop);
+        return;
+    case DiagCode::CallDepth:
+    case DiagCode::TaskError: faultStop(current, code, PlcState::Stop); return;
+    }
+}
+
+void Scheduler::record(DiagCode code, const TaskRun* task, std::string_view pou, int line, std::string message) {
+    diagnostics_.add({machine_.now, code, task ? task->spec.name : std::string(), std::string(pou), line, std::move(message)});
+}
+
+// ---------------------------------------------------------------- attention
+
+// The next moment onAttention must run: the earliest release, sampling tick,
+// end of --for, or watchdog expiry of an active activation.
+void Scheduler::armNextAttention() {
+    PlcTime at = std::min(earliestRelease_, forEnd_);
+    if (hasTriggers_) at = std::min(at, nextSample_);
+    for (const TaskRun* task : stack_) at = std::min(at, task->watchdogAt);
+    if (options_.virtualClock) {
+        machine_.deadline.store(at);
+        // requestStop() may have lowered the deadline just before the store above.
+        if (stopRequested_.load() || ending_) machine_.requestAttention();
+    } else {
+        timer_->arm(at);
+    }
+}
+
+PlcTime Scheduler::currentTime() {
+    refreshNow();
+    return machine_.now;
+}
+
+int64_t Scheduler::calendarNanos() {
+    if (options_.virtualClock) return calendarBase_ + machine_.now;
+    return realtimeNanos();
+}
+
+std::string Scheduler::currentTaskName() const { return stack_.empty() ? std::string() : stack_.back()->spec.name; }
+
+// ---------------------------------------------------------------- output
+
+// One line per event: "<PLC time> <task> <event>[ <detail>]" (decision 0011).
+void Scheduler::trace(const TaskRun* task, const char* event, const char* detail) {
+    if (!options_.trace) return;
+    traceLine_.clear();
+    appendDuration(traceLine_, machine_.now);
+    traceLine_ += ' ';
+    traceLine_ += task ? task->spec.name : std::string("-");
+    traceLine_ += ' ';
+    traceLine_ += event;
+    if (detail) {
+        traceLine_ += ' ';
+        traceLine_ += detail;
+    }
+    traceLine_ += '\n';
+    options_.trace->write(traceLine_.data(), std::streamsize(traceLine_.size()));
+}
+
+nlohmann::json Scheduler::tasksJson() const {
+    nlohmann::json array = nlohmann::json::array();
+    for (const TaskRun& task : tasks_) {
+        bool ran = task.cycles > 0;
+        bool started = task.started > 0;
+        array.push_back({
+            {"name", task.spec.name},
+            {"kind", taskKindName(task.spec.kind)},
+            {"priority", task.spec.priority},
+            {"cycles", task.cycles},
+            {"overruns", task.overruns},
+            {"watchdog_trips", task.watchdogTrips},
+            {"last_exec_us", micros(task.lastExec)},
+            {"min_exec_us", micros(ran ? task.minExec : 0)},
+            {"max_exec_us", micros(task.maxExec)},
+            {"avg_exec_us", micros(ran ? task.sumExec / PlcTime(task.cycles) : 0)},
+            {"min_latency_us", micros(started ? task.minLatency : 0)},
+            {"max_latency_us", micros(task.maxLatency)},
+        });
+    }
+    return array;
+}
+
+nlohmann::json Scheduler::diagnosticsJson() const {
+    nlohmann::json array = nlohmann::json::array();
+    for (const DiagEntry& entry : diagnostics_.entries()) {
+        array.push_back({
+            {"time", formatDuration(entry.time)},
+            {"code", diagCodeName(entry.code)},
+            {"task", entry.task},
+            {"pou", entry.pou},
+            {"line", entry.line},
+            {"message", entry.message},
+        });
+    }
+    return array;
+}
+
+}  // namespace strun::rt

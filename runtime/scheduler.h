@@ -1,0 +1,157 @@
+// The task scheduler: runs the configured tasks on one CPU by priority, with
+// preemption at statement boundaries, on the virtual or the real clock.
+//
+// How it runs the interpreter: the interpreter calls Machine::tick() at every
+// statement boundary; when PLC time reaches Machine::deadline, tick() calls
+// onAttention(). The deadline is the earliest moment the scheduler must look
+// again: the next release, the watchdog expiry of an active activation, the
+// next event/status sampling tick, the end of --for. Preemption is nesting:
+// inside onAttention() a ready task of strictly higher priority runs right
+// there, on the same C++ stack, and the preempted task resumes when it
+// returns. The rules are in docs/decisions/0010..0017 and docs/diagnostics.md.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "runtime/diag_buffer.h"
+#include "runtime/machine.h"
+#include "runtime/plc_profile.h"
+#include "runtime/task_spec.h"
+
+namespace strun::rt {
+
+class AttentionTimer;
+
+struct RunOptions {
+    bool virtualClock = true;
+    PlcTime stmtCost = 1000;  // ns per statement, virtual clock only (values < 1 count as 1)
+    std::optional<uint64_t> cycles;  // stop after this many completed cycles of cyclesTask
+    std::string cyclesTask;          // "" = the first task of the list
+    std::optional<PlcTime> duration;  // --for: stop when PLC time reaches it
+    int64_t startCalendarNanos = 0;   // --start, virtual clock only
+    std::ostream* trace = nullptr;    // --trace: one line per task event
+    bool realtime = false;            // --realtime: SCHED_FIFO + mlockall where permitted
+    // Additions to the interface the brief fixed:
+    const PlcProfile* profile = nullptr;  // nullptr: defaultProfile()
+    size_t diagnosticCapacity = 1000;     // entries kept; older ones are dropped and counted
+    std::ostream* warnings = nullptr;     // --realtime notes ("strun: warning: ..."); nullptr: std::cerr
+};
+
+enum class PlcState { Run, Stop, Halt };
+const char* plcStateName(PlcState state);  // "RUN", "STOP", "HALT"
+
+class Scheduler : public AttentionHandler {
+public:
+    // `bodies` is parallel to `tasks`. Throws std::invalid_argument when they
+    // differ in size or when options.cycles names no task (the CLI checks
+    // --task first with hasTask()).
+    Scheduler(Machine& machine, std::vector<TaskSpec> tasks, std::vector<TaskBody*> bodies, RunOptions options);
+    ~Scheduler() override;
+    Scheduler(const Scheduler&) = delete;
+    Scheduler& operator=(const Scheduler&) = delete;
+
+    // Runs until --cycles / --for is reached, the PLC goes to STOP/HALT, or
+    // requestStop() is called. Ends in RUN unless a fault stopped the PLC.
+    PlcState run();
+    // Async-signal-safe (a SIGINT handler may call it): the running run()
+    // returns cleanly at the next statement boundary or idle point.
+    static void requestStop();
+    static bool hasTask(const std::vector<TaskSpec>& tasks, std::string_view name);  // case-insensitive
+
+    PlcState state() const { return state_; }
+    PlcTime endTime() const { return endTime_; }
+    nlohmann::json tasksJson() const;        // the --dump "tasks" array
+    nlohmann::json diagnosticsJson() const;  // the --dump "diagnostics" array
+    const std::vector<DiagEntry>& diagnostics() const { return diagnostics_.entries(); }
+    uint64_t droppedDiagnostics() const { return diagnostics_.dropped(); }
+    std::string currentTaskName() const;
+    // Activations started, all tasks together (the benchmark's task switches).
+    uint64_t activations() const { return activations_; }
+
+    // AttentionHandler (called by the interpreter).
+    bool onAttention() override;
+    void onFault(DiagCode code, std::string_view pou, int line, std::string message) override;
+    PlcTime currentTime() override;
+    int64_t calendarNanos() override;
+
+private:
+    enum class Phase : uint8_t { Idle, Ready, Active };
+
+    struct TaskRun {
+        TaskSpec spec;
+        TaskBody* body = nullptr;
+        int tieRank = 0;  // order among equal priority and equal waiting time
+        bool isFaultTask = false;  // program-error or execution-timeout task
+        Phase phase = Phase::Idle;
+        bool abortRequested = false;  // its watchdog tripped; abort at its next statement boundary
+        bool lastTrigger = false;     // event tasks: the BOOL at the previous sample
+        PlcTime releasedAt = 0;       // the pending or running activation's nominal release
+        PlcTime startedAt = 0;
+        PlcTime watchdogAt = kNever;  // while active
+        PlcTime nextRelease = kNever;  // cyclic grid point / next time event, PLC time
+        int64_t nextOccurrence = kNever;  // time events: calendar ns of nextRelease
+        // Statistics for --dump.
+        uint64_t cycles = 0, overruns = 0, watchdogTrips = 0, started = 0;
+        PlcTime lastExec = 0, minExec = kNever, maxExec = 0, sumExec = 0;
+        PlcTime minLatency = kNever, maxLatency = 0;
+    };
+
+    void mainLoop();
+    void idle();
+    void refreshNow();
+    void startRegularTasks();
+    void processDue();
+    void recomputeEarliestRelease();
+    void scheduleNext(TaskRun& task);
+    bool release(TaskRun& task, PlcTime nominal, bool reportOverrun);
+    void sampleTriggers();
+    TaskRun* pickReady(const TaskRun* running) const;
+    void runActivation(TaskRun& task);
+    void finishActivation(TaskRun& task, bool completed);
+    void checkWatchdogs();
+    void tripWatchdog(TaskRun& task);
+    void faultStop(const TaskRun* task, DiagCode code, PlcState state);
+    void armNextAttention();
+    void record(DiagCode code, const TaskRun* task, std::string_view pou, int line, std::string message);
+    void trace(const TaskRun* task, const char* event, const char* detail = nullptr);
+    PlcTime calendarToPlc(int64_t calendar) const;
+
+    Machine& machine_;
+    std::vector<TaskRun> tasks_;
+    RunOptions options_;
+    const PlcProfile& profile_;
+    DiagBuffer diagnostics_;
+    std::vector<TaskRun*> stack_;  // active activations, the running one last
+    TaskRun* startup_ = nullptr;
+    TaskRun* errorTask_ = nullptr;
+    TaskRun* timeoutTask_ = nullptr;
+    TaskRun* cyclesTask_ = nullptr;
+    PlcState state_ = PlcState::Run;
+    bool ending_ = false;          // the run is over: every level unwinds
+    bool regularStarted_ = false;  // false while the startup task has not finished
+    bool hasTriggers_ = false;     // event or status tasks exist
+    PlcTime nextSample_ = kNever;  // next scheduler tick that samples event/status BOOLs
+    PlcTime earliestRelease_ = kNever;
+    PlcTime forEnd_ = kNever;
+    PlcTime endTime_ = 0;
+    PlcTime stopTime_ = 0;
+    int64_t calendarBase_ = 0;  // calendar ns at PLC time 0
+    int64_t monotonicOrigin_ = 0;
+    uint64_t activations_ = 0;
+    std::unique_ptr<AttentionTimer> timer_;
+    std::string traceLine_;
+
+    static std::atomic<bool> stopRequested_;
+    static std::atomic<Machine*> runningMachine_;
+};
+
+}  // namespace strun::rt

@@ -1,0 +1,31 @@
+// The configuration rules every PLC family shares (task names, one startup /
+// program-error / execution-timeout task) and the limits of the chosen
+// profile (plc_profile.h). The checker reports each violation as a compile
+// error at the task's location.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "interpreter/ast/ast.h"
+#include "runtime/plc_profile.h"
+#include "runtime/task_spec.h"
+
+namespace strun::rt {
+
+struct TaskRuleViolation {
+    ast::Loc loc;
+    std::string message;
+};
+
+// Violations in declaration order of the offending task; empty when the
+// configuration is valid for `profile`.
+std::vector<TaskRuleViolation> checkTaskRules(const PlcProfile& profile, const std::vector<TaskSpec>& tasks);
+
+// The name rules alone (seed 000, 4.6.1.4): not empty, ASCII letters, digits
+// and underscores only, not starting with a digit, no consecutive
+// underscores, no trailing underscore. Returns "" when `name` is valid, else
+// why not.
+std::string taskNameProblem(const std::string& name);
+
+}  // namespace strun::rt

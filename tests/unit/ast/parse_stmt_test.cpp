@@ -1,0 +1,81 @@
+// Statements: assignments of every kind, calls, control flow, labels.
+#include <catch2/catch.hpp>
+
+#include "parse_test_support.h"
+
+using namespace strun::ast;
+using strun::ast::test::parse;
+using strun::ast::test::stmts;
+
+TEST_CASE("statements: assignments", "[parser][stmt]") {
+    CHECK(stmts("x := 1;") == "{(:= x 1)}");
+    CHECK(stmts("a.b[1] := c;") == "{(:= ([] (. a b) 1) c)}");
+    CHECK(stmts("p^ := 5;") == "{(:= (^ p) 5)}");
+    CHECK(stmts("q S= a;") == "{(S= q a)}");
+    CHECK(stmts("q R= a;") == "{(R= q a)}");
+    CHECK(stmts("q s= a; q r= b;") == "{(S= q a) (R= q b)}");
+    CHECK(stmts("itf ?= obj;") == "{(?= itf obj)}");
+    CHECK(stmts("r REF= x;") == "{(REF= r x)}");
+    // Variables called S and R still work everywhere else.
+    CHECK(stmts("IF S=1 THEN R := S; END_IF") == "{(if (= S 1) {(:= R S)})}");
+    CHECK(stmts("S := R = 2;") == "{(:= S (= R 2))}");
+    CHECK(stmts("x.3 := TRUE;") == "{(:= (. x 3) TRUE)}");
+    CHECK(stmts("%QX0.1 := TRUE;") == "{(:= %QX0.1 TRUE)}");
+}
+
+TEST_CASE("statements: calls", "[parser][stmt]") {
+    CHECK(stmts("f();") == "{(call-stmt (call f))}");
+    CHECK(stmts("fb(IN := x, PT := T#5s, Q => done);") == "{(call-stmt (call fb IN:=x PT:=T#5s Q=>done))}");
+    CHECK(stmts("obj.m(1);") == "{(call-stmt (call (. obj m) 1))}");
+    CHECK(stmts("THIS^.m();") == "{(call-stmt (call (. (^ THIS) m)))}");
+    CHECK(stmts("SUPER^();") == "{(call-stmt (call (^ SUPER)))}");
+    CHECK(stmts("arr[i].m();") == "{(call-stmt (call (. ([] arr i) m)))}");
+    CHECK(stmts("fb(NOT q => x);") == "{(call-stmt (call fb NOT q=>x))}");
+}
+
+TEST_CASE("statements: IF / ELSIF / ELSE", "[parser][stmt]") {
+    CHECK(stmts("IF a THEN x := 1; END_IF;") == "{(if a {(:= x 1)})}");
+    CHECK(stmts("IF a THEN x := 1; ELSIF b THEN x := 2; ELSIF c THEN ELSE x := 3; END_IF") ==
+          "{(if a {(:= x 1)} b {(:= x 2)} c {} else {(:= x 3)})}");
+    CHECK(stmts("if a then if b then x := 1; end_if end_if") == "{(if a {(if b {(:= x 1)})})}");
+    CHECK(stmts("IF a THEN ELSE END_IF") == "{(if a {} else {})}");
+}
+
+TEST_CASE("statements: CASE", "[parser][stmt]") {
+    CHECK(stmts("CASE x OF 1, 2: y := 1; 3..5: y := 2; z := 3; Red: y := 4; Color.Red: ; ELSE y := 0; END_CASE") ==
+          "{(case x [1,2: {(:= y 1)}] [3..5: {(:= y 2) (:= z 3)}] [Red: {(:= y 4)}] [(. Color Red): {;}] else "
+          "{(:= y 0)})}");
+    CHECK(stmts("CASE x OF -1: y := 1; 10, 20..30, k: END_CASE") == "{(case x [(neg 1): {(:= y 1)}] [10,20..30,k: {}])}");
+    CHECK(stmts("CASE s OF Idle: IF go THEN s := Run; END_IF Run: s := Idle; END_CASE") ==
+          "{(case s [Idle: {(if go {(:= s Run)})}] [Run: {(:= s Idle)}])}");
+    CHECK(stmts("CASE x OF 1: CASE y OF 2: z := 1; END_CASE 3: z := 2; END_CASE") ==
+          "{(case x [1: {(case y [2: {(:= z 1)}])}] [3: {(:= z 2)}])}");
+    CHECK(stmts("CASE x OF ELSE y := 1; END_CASE") == "{(case x else {(:= y 1)})}");
+    CHECK(stmts("CASE x OF INT#1: y := 1; END_CASE") == "{(case x [INT#1: {(:= y 1)}])}");
+}
+
+TEST_CASE("statements: loops and jumps", "[parser][stmt]") {
+    CHECK(stmts("FOR i := 1 TO 10 DO s := s + i; END_FOR") == "{(for i 1 10 {(:= s (+ s i))})}");
+    CHECK(stmts("FOR i := n TO 0 BY -1 DO EXIT; END_FOR;") == "{(for i n 0 (neg 1) {EXIT})}");
+    CHECK(stmts("WHILE a < 10 DO a := a + 1; CONTINUE; END_WHILE") == "{(while (< a 10) {(:= a (+ a 1)) CONTINUE})}");
+    CHECK(stmts("REPEAT a := a + 1; UNTIL a > 5 END_REPEAT") == "{(repeat {(:= a (+ a 1))} (> a 5))}");
+    CHECK(stmts("RETURN;") == "{RETURN}");
+    CHECK(stmts("JMP done; x := 1; done: x := 2;") == "{(jmp done) (:= x 1) (label done) (:= x 2)}");
+    CHECK(stmts("lbl: ; ;") == "{(label lbl) ; ;}");
+    CHECK(stmts(";") == "{;}");
+    CHECK(stmts("") == "{}");
+}
+
+TEST_CASE("statements: locations", "[parser][stmt]") {
+    auto p = parse("PROGRAM P\nIF a THEN\n    x := 1;\nELSIF b THEN\n  y := 2;\nEND_IF\nEND_PROGRAM");
+    REQUIRE(p->errors() == "");
+    const Pou& pou = *p->unit.pous[0];
+    const Stmt& s = *pou.body.at(0);
+    CHECK(s.loc.line == 2);
+    CHECK(s.loc.col == 1);
+    CHECK(s.blocks.at(0).at(0)->loc.line == 3);
+    CHECK(s.blocks.at(0).at(0)->loc.col == 5);
+    CHECK(s.conds.at(1)->loc.line == 4);
+    CHECK(s.conds.at(1)->loc.col == 7);
+    CHECK(pou.endLoc.line == 7);
+}
