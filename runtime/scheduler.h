@@ -61,6 +61,8 @@ public:
 
     // Runs until --cycles / --for is reached, the PLC goes to STOP/HALT, or
     // requestStop() is called. Ends in RUN unless a fault stopped the PLC.
+    // Call it once per Scheduler; it installs itself as machine.handler and
+    // sets machine.stmtCost (the statement cost on the virtual clock, 0 on the real one).
     PlcState run();
     // Async-signal-safe (a SIGINT handler may call it): the running run()
     // returns cleanly at the next statement boundary or idle point.

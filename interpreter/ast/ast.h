@@ -93,6 +93,7 @@ struct Expr {
     std::string valueText;   // Literal Typed: text after the '#'
     // Name / Member
     std::string name;
+    Loc nameLoc;  // Member: the member name after the dot (errors about the member point here)
     // Unary / Binary
     Op op = Op::Add;
     std::vector<ExprPtr> kids;
@@ -232,6 +233,7 @@ struct Stmt {
     ExprPtr target;  // assignments
     ExprPtr expr;    // assignment value; call; CASE selector; WHILE / REPEAT condition
     std::string name;  // FOR control variable; JMP / Label name
+    Loc nameLoc;       // where `name` is written
     ExprPtr from, to, by;
     std::vector<ExprPtr> conds;       // IF / ELSIF conditions
     std::vector<StmtList> blocks;     // IF / ELSIF blocks (same size as conds)
@@ -265,6 +267,7 @@ struct Pou {
     Loc loc;
     Loc endLoc;  // location of the END_xxx keyword
     std::string name;
+    Loc nameLoc;  // where the name is written
     std::string nameSpace;        // enclosing NAMESPACE path "A.B", "" at top level
     TypeSpecPtr returnType;       // FUNCTION / METHOD / interface method (null if none)
     Access access = Access::Default;
@@ -284,6 +287,7 @@ struct Pou {
 struct TypeDecl {
     Loc loc;
     std::string name;
+    Loc nameLoc;
     std::string nameSpace;
     std::string extends;  // STRUCT EXTENDS base
     TypeSpecPtr spec;

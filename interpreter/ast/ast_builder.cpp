@@ -122,6 +122,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
     if (auto* prog = dynamic_cast<P::ProgramDeclContext*>(c)) {
         out->kind = PouKind::Program;
         out->name = text(prog->identifier());
+        out->nameLoc = loc(prog->identifier());
         addElements(prog->pouElement());
         stmtList(prog->stmtList(), out->body);
         for (auto* m : prog->memberDecl()) member(m, *out, false);
@@ -129,6 +130,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
     } else if (auto* fn = dynamic_cast<P::FunctionDeclContext*>(c)) {
         out->kind = PouKind::Function;
         out->name = text(fn->identifier());
+        out->nameLoc = loc(fn->identifier());
         if (fn->typeSpec()) out->returnType = typeSpec(fn->typeSpec());
         for (auto* v : fn->varBlock()) out->vars.push_back(varBlock(v));
         stmtList(fn->stmtList(), out->body);
@@ -136,6 +138,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
     } else if (auto* fb = dynamic_cast<P::FunctionBlockDeclContext*>(c)) {
         out->kind = PouKind::FunctionBlock;
         out->name = text(fb->identifier());
+        out->nameLoc = loc(fb->identifier());
         modifiers(fb->modifier(), out->access, out->abstract, out->final);
         auto names = fb->qualifiedName();
         size_t next = 0;
@@ -148,6 +151,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
     } else if (auto* itf = dynamic_cast<P::InterfaceDeclContext*>(c)) {
         out->kind = PouKind::Interface;
         out->name = text(itf->identifier());
+        out->nameLoc = loc(itf->identifier());
         out->hasBody = false;
         for (auto* base : itf->qualifiedName()) out->extendsList.push_back(text(base));
         if (!out->extendsList.empty()) out->extends = out->extendsList.front();
@@ -171,6 +175,7 @@ std::unique_ptr<Pou> AstBuilder::method(P::MethodDeclContext* c, const std::stri
     out->nameSpace = nameSpace;
     out->pragmas = pragmasBefore(c->getStart());
     out->name = text(c->identifier());
+    out->nameLoc = loc(c->identifier());
     modifiers(c->modifier(), out->access, out->abstract, out->final);
     if (c->typeSpec()) out->returnType = typeSpec(c->typeSpec());
     for (auto* v : c->varBlock()) out->vars.push_back(varBlock(v));
@@ -242,6 +247,7 @@ void AstBuilder::typeDecl(P::TypeDeclContext* c, const std::string& nameSpace, C
         TypeDecl decl;
         decl.loc = loc(e);
         decl.name = text(e->identifier());
+        decl.nameLoc = loc(e->identifier());
         decl.nameSpace = nameSpace;
         if (e->qualifiedName()) decl.extends = text(e->qualifiedName());
         // Pragmas in front of TYPE belong to its first entry.

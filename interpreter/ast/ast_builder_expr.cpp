@@ -108,6 +108,7 @@ ExprPtr AstBuilder::postfix(P::PostfixExprContext* c) {
         if (auto* m = dynamic_cast<P::MemberOpContext*>(op)) {
             next = makeExpr(ExprKind::Member, at);
             next->name = text(m->memberName());
+            next->nameLoc = loc(m->memberName());
         } else if (auto* i = dynamic_cast<P::IndexOpContext*>(op)) {
             next = makeExpr(ExprKind::Index, at);
             next->kids.push_back(std::move(current));

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include <fmt/format.h>
+
 #include "grammar/STLexer.h"
 
 namespace strun::ast {
@@ -83,6 +85,7 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
     if (auto* f = dynamic_cast<P::ForStmtContext*>(c)) {
         auto s = makeStmt(StmtKind::For, at);
         s->name = text(f->identifier());
+        s->nameLoc = loc(f->identifier());
         s->from = f->expression(0) ? expr(f->expression(0)) : placeholder(at);
         s->to = f->expression(1) ? expr(f->expression(1)) : placeholder(at);
         if (f->BY()) s->by = f->expression(2) ? expr(f->expression(2)) : placeholder(at);
@@ -107,6 +110,7 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
     if (auto* j = dynamic_cast<P::JmpStmtContext*>(c)) {
         auto s = makeStmt(StmtKind::Jmp, at);
         s->name = text(j->identifier());
+        s->nameLoc = loc(j->identifier());
         return s;
     }
     if (dynamic_cast<P::EmptyStmtContext*>(c)) return makeStmt(StmtKind::Empty, at);
@@ -122,8 +126,9 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
         if (c->ASSIGN() || c->TRY_ASSIGN() || c->EQ()) return nullptr;  // right side missing: reported
         if (e->kind != ExprKind::Call) {
             const bool comparison = e->kind == ExprKind::Binary && e->op == Op::Eq;
-            error(at, "'" + sourceText(operands[0]) + "' is not a statement: expected ':=' or a call with '(...)'" +
-                          (comparison ? " (for an assignment write ':=', not '=')" : ""));
+            error(at, fmt::format("'{}' is not a statement: expected ':=' or a call with '(...)'{}",
+                                  sourceText(operands[0]),
+                                  comparison ? " (for an assignment write ':=', not '=')" : ""));
             return nullptr;
         }
         auto s = makeStmt(StmtKind::Call, at);

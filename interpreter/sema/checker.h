@@ -121,6 +121,13 @@ private:
     exec::Stmt* assignChecked(Checked target, Checked value, const ast::Loc& loc);
     void markWritten(const Checked& target, const ast::Loc& loc);
     int labelId(const std::string& upperName);
+    // True while checking the body or a method of `fb` (or of an FB derived from it).
+    bool insideOwnInstance(const PouInfo* fb) const {
+        const PouInfo* p = pou_ && pou_->owner ? pou_->owner : pou_;
+        for (; p; p = p->parent)
+            if (p == fb) return true;
+        return false;
+    }
     void warnUnused();
 
     ProgramModel& model_;

@@ -33,6 +33,17 @@ bool bindArguments(Checker& ck, const std::string& callee, const std::vector<Var
     for (VarSym* p : params)
         if (p->section != ast::VarSection::Output) inputsInOrder.push_back(p);
     std::set<VarSym*> seen;
+    size_t positionalCount = 0;
+    for (const auto& a : call.args) positionalCount += a.name.empty() ? 1 : 0;
+    if (positionalCount > inputsInOrder.size()) {
+        ck.error(call.kids[0]->loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
+        return false;
+    }
+    if (positionalCount > 0 && positionalCount < inputsInOrder.size() && positionalCount == call.args.size()) {
+        // A non-formal call lists every input (IEC 61131-3); formal calls may leave inputs out.
+        ck.error(call.kids[0]->loc, fmt::format("too few arguments for '{}' ({} given, it takes {})", callee, positionalCount, inputsInOrder.size()));
+        return false;
+    }
     for (const auto& a : call.args) {
         VarSym* param = nullptr;
         if (a.name.empty()) {
@@ -129,7 +140,9 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
     const ast::Expr& callee = *e.kids[0];
     if (callee.kind == ast::ExprKind::Name) {
         std::string key = upper(callee.name);
-        if (VarSym* v = lookupVar(key)) {
+        VarSym* v = lookupVar(key);
+        if (v && pou_ && v == pou_->result && pous_.count(key)) v = nullptr;  // recursion: F(...) inside F
+        if (v) {
             if (v->type->kind == TK::FunctionBlock) {
                 error(e.loc, fmt::format("'{}' is a function-block instance: call it as a statement and read its outputs as {}.Q", callee.name, callee.name));
             } else {

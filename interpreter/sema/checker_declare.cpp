@@ -16,13 +16,16 @@ constexpr uint32_t kMaxStorage = 256u * 1024u * 1024u;  // per block: keeps absu
 constexpr uint32_t kFbHeader = 8;                        // every FB instance starts with its class pointer
 }  // namespace
 
-Checker::Checker(ProgramModel& model, CompileLog& log) : model_(model), log_(log) {}
+Checker::Checker(ProgramModel& model, CompileLog& log) : model_(model), log_(log) {
+    model_.machine.image.inputExtent = 0;
+    model_.machine.image.outputExtent = 0;
+}
 
 void Checker::collect(ast::CompilationUnit& unit) {
     for (auto& t : unit.types) {
         std::string key = upper(t.name);
         if (typeDecls_.count(key) || types().byName(key)) {
-            error(t.loc, fmt::format("duplicate type name '{}'", t.name));
+            error(t.nameLoc.line ? t.nameLoc : t.loc, fmt::format("duplicate type name '{}'", t.name));
             continue;
         }
         typeDecls_[key] = &t;
@@ -44,12 +47,12 @@ void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
     PouInfo* raw = info.get();
     std::string key = upper(pou->name);
     if (owner) {
-        if (owner->methods.count(key)) error(pou->loc, fmt::format("duplicate method '{}' in '{}'", pou->name, owner->name));
+        if (owner->methods.count(key)) error(pou->nameLoc.line ? pou->nameLoc : pou->loc, fmt::format("duplicate method '{}' in '{}'", pou->name, owner->name));
         owner->methods[key] = raw;
         model_.pouStore.push_back(std::move(info));
     } else {
         if (pous_.count(key) || typeDecls_.count(key) || types().byName(key)) {
-            error(pou->loc, fmt::format("duplicate declaration of '{}'", pou->name));
+            error(pou->nameLoc.line ? pou->nameLoc : pou->loc, fmt::format("duplicate declaration of '{}'", pou->name));
             model_.pouStore.push_back(std::move(info));  // keep it alive, unreachable by name
         } else {
             pous_[key] = raw;
@@ -148,8 +151,8 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
             for (const auto& f : spec->fields)
                 for (const auto& n : f.names)
                     if (upper(n) == upper(fld.name)) fd = &f;
+            writeDefault(image.data() + fld.offset, fld.type);
             if (fd && fd->init) writeInitial(image.data() + fld.offset, fld.type, fd->init.get(), fd->loc);
-            else writeDefault(image.data() + fld.offset, fld.type);
         }
         if (t->parent && !t->parent->defaultImage.empty()) nonZero = true;
         for (uint8_t b : image) nonZero = nonZero || b != 0;
@@ -409,8 +412,8 @@ void Checker::layoutPou(PouInfo* pou) {
             std::memcpy(image.data(), pou->parent->instanceInit.data(), pou->parent->instanceInit.size());
         for (auto& v : pou->ownedVars) {
             if (v->storage != Storage::Self || v->byRef) continue;
+            writeDefault(image.data() + v->offset, v->type);
             if (v->decl && v->decl->init) writeInitial(image.data() + v->offset, v->type, v->decl->init.get(), v->decl->loc);
-            else writeDefault(image.data() + v->offset, v->type);
         }
         pou->instanceInit = image;
         inst->defaultImage = std::move(image);
@@ -422,8 +425,8 @@ void Checker::layoutPou(PouInfo* pou) {
     for (auto& v : pou->ownedVars) {
         if (v->storage != Storage::Frame || v->byRef) continue;
         uint8_t* p = pou->code->frameInit.data() + v->offset;
+        writeDefault(p, v->type);
         if (v->decl && v->decl->init) writeInitial(p, v->type, v->decl->init.get(), v->decl->loc);
-        else writeDefault(p, v->type);
     }
     pou->layingOut = false;
     pou->laidOut = true;
@@ -764,7 +767,12 @@ uint8_t* Checker::mapAddress(const std::string& address, const Type* t, const as
         if (t->size > unit && t->kind != TK::Array && t->kind != TK::Struct && !isStringType(t->kind))
             log_.warning(loc, fmt::format("{} is larger than the {}-byte address '{}'", typeName(t), unit, address));
     }
-    if (byte + std::max<uint64_t>(t->size, 1) > area->size()) return fail("address outside the process image");
+    uint64_t end = byte + std::max<uint64_t>(t->size, 1);
+    if (end > area->size()) return fail("address outside the process image");
+    // Tasks copy only the addressed part of %I / %Q at their start and end.
+    auto& image = model_.machine.image;
+    if (area == &image.inputs) image.inputExtent = std::max<size_t>(image.inputExtent, end);
+    if (area == &image.outputs) image.outputExtent = std::max<size_t>(image.outputExtent, end);
     return area->data() + byte;
 }
 

@@ -315,6 +315,14 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
         c.constReal = v->constReal;
     }
     if (v->type->kind == TK::FunctionBlock) c.fbInstanceOf = v->type->pou;
+    if (v->hasConstValue && (isIntRep(v->type) || isRealRep(v->type))) {
+        // A CONSTANT with a constant initial value is its value everywhere.
+        exec::Expr* k = isRealRep(v->type) ? static_cast<exec::Expr*>(pool().make<exec::ConstReal>(v->constReal))
+                                           : pool().make<exec::ConstInt>(v->constInt);
+        k->type = v->type;
+        c.node = k;
+        return c;
+    }
     Checked::Direct d = v->storage == Storage::Self ? Checked::Direct::Self
                         : v->storage == Storage::Frame ? Checked::Direct::Frame
                                                        : Checked::Direct::Abs;
@@ -471,6 +479,12 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
             auto it = p->vars.find(key);
             if (it != p->vars.end()) mv = it->second;
         }
+        if (mv && (mv->section == ast::VarSection::Var || mv->section == ast::VarSection::Temp ||
+                   mv->section == ast::VarSection::Stat || mv->section == ast::VarSection::Inst) &&
+            t->pou->kind == ast::PouKind::FunctionBlock && !insideOwnInstance(t->pou)) {
+            error(loc, fmt::format("'{}' is an internal variable of '{}'; only its inputs and outputs are visible outside", mv->name, t->name));
+            return bad(loc);
+        }
         if (mv) {
             mv->used = true;
             byRef = mv->byRef;
@@ -515,14 +529,14 @@ Checked Checker::checkMember(const ast::Expr& e) {
                 if (t && t->kind == TK::Enum) {
                     for (const auto& en : t->enumerators)
                         if (upper(en.name) == upper(e.name)) return constInt(en.value, t, e.loc);
-                    error(e.loc, fmt::format("'{}' is not a value of enumeration '{}'", e.name, t->name));
+                    error(e.nameLoc.line ? e.nameLoc : e.loc, fmt::format("'{}' is not a value of enumeration '{}'", e.name, t->name));
                     return bad(e.loc);
                 }
             }
         }
     }
     Checked base = checkExpr(baseExpr);
-    return memberOf(base, e.name, e.loc);
+    return memberOf(base, e.name, e.nameLoc.line ? e.nameLoc : e.loc);
 }
 
 Checked Checker::checkIndex(const ast::Expr& e) {

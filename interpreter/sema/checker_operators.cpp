@@ -104,6 +104,12 @@ Checked Checker::checkUnary(const ast::Expr& e) {
     }
     if (e.op == ast::Op::Neg) {
         if (a.untypedInt) { Checked c = constInt(-a.constInt, a.type, e.loc); c.untypedInt = true; return c; }
+        if (a.isConst && a.type->kind == TK::ULInt && static_cast<uint64_t>(a.constInt) == (uint64_t(1) << 63)) {
+            // -9223372036854775808: the magnitude alone only fits ULINT.
+            Checked c = constInt(a.constInt, types().elementary(TK::LInt), e.loc);
+            c.untypedInt = true;
+            return c;
+        }
         if (a.untypedReal) { Checked c = constReal(-a.constReal, a.type, e.loc); c.untypedReal = true; return c; }
         TK k = a.type->kind;
         if (!(isInteger(k) || isReal(k) || isTimeLike(k))) {
@@ -169,8 +175,12 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
                 Checked bb = b.untypedReal ? coerce(b, types().elementary(TK::LReal), loc, "operand") : b;
                 r.node = pool().make<TimeMulReal>(a.node, bb.node, op == ast::Op::Div, bitWidth(ka));
             } else {
-                Checked bb = coerce(b, a.type, loc, "operand");
-                if (!bb.ok) return bad(loc);
+                // TIME * ANY_INT: the count multiplies the time's own unit.
+                Checked bb = settle(b);
+                if (!(isInteger(bb.type->kind) || isBitString(bb.type->kind))) {
+                    error(loc, fmt::format("a duration can be multiplied or divided only by a number, not {}", typeName(bb.type)));
+                    return bad(loc);
+                }
                 if (op == ast::Op::Mul) r.node = intOp<exec::MulI>(pool(), repOf(a.type), a.node, bb.node);
                 else r.node = makeIntByRep<exec::DivI>(pool(), repOf(a.type), a.node, bb.node, site(loc));
                 r.node->type = r.type;

@@ -83,11 +83,11 @@ exec::Stmt* Checker::storeTo(exec::Expr* place, const Type* t, exec::Expr* value
 exec::Stmt* Checker::assignChecked(Checked target, Checked value, const ast::Loc& loc) {
     if (!target.ok || !value.ok) return nullptr;
     if (!target.isPlace) {
-        error(target.loc, "the left side of ':=' is not a variable");
+        error(loc, "the left side of ':=' is not a variable");
         return nullptr;
     }
     if (target.readOnly) {
-        error(target.loc, fmt::format("cannot assign: {}", target.readOnlyWhy));
+        error(loc, fmt::format("cannot assign: {}", target.readOnlyWhy));
         return nullptr;
     }
     const Type* t = target.type;
@@ -173,7 +173,7 @@ exec::Stmt* Checker::checkFor(const ast::Stmt& s) {
     ast::Expr varExpr;
     varExpr.kind = ast::ExprKind::Name;
     varExpr.name = s.name;
-    varExpr.loc = s.loc;
+    varExpr.loc = s.nameLoc.line ? s.nameLoc : s.loc;
     Checked var = checkExpr(varExpr);
     Checked from = checkExpr(*s.from);
     Checked to = checkExpr(*s.to);
@@ -356,7 +356,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
         case ast::StmtKind::Return: return pool().make<exec::FlowStmt>(exec::Flow::Return);
         case ast::StmtKind::Jmp: {
             std::string key = upper(s.name);
-            pendingJumps_.push_back({s.loc, key});
+            pendingJumps_.push_back({s.nameLoc.line ? s.nameLoc : s.loc, s.name});
             return pool().make<exec::JumpStmt>(labelId(key));
         }
         case ast::StmtKind::Label:
@@ -383,8 +383,8 @@ void Checker::checkBody(PouInfo* pou) {
     pendingJumps_.clear();
     assignedResult_ = false;
     pou->code->body = checkBlock(pou->ast->body);
-    for (const auto& [loc, key] : pendingJumps_)
-        if (!definedLabels_.count(key)) error(loc, fmt::format("JMP to undefined label '{}'", key));
+    for (const auto& [loc, name] : pendingJumps_)
+        if (!definedLabels_.count(upper(name))) error(loc, fmt::format("JMP to undefined label '{}'", name));
     if (pou->kind == ast::PouKind::Function && pou->result && !assignedResult_ && !libraryFiles_.count(pou->ast->loc.file))
         log_.warning(pou->ast->loc, fmt::format("function '{}' never assigns its result", pou->name));
     uint32_t size = alignUp(frameTop_, 16);

@@ -550,3 +550,33 @@ type e : (a, b); end_type
     CHECK(p->unit.pous.size() == 1);
     CHECK(p->unit.pous.at(0)->body.size() == 5);
 }
+
+TEST_CASE("declarations: element order inside a FUNCTION_BLOCK, top-level methods", "[parser][decl]") {
+    auto p = parse(R"(
+FUNCTION_BLOCK F
+METHOD First
+END_METHOD
+VAR x : INT; END_VAR
+PROPERTY P : INT
+GET P := x; END_GET
+END_PROPERTY
+VAR_OUTPUT y : INT; END_VAR
+x := 1;
+METHOD Last : INT
+Last := x;
+END_METHOD
+END_FUNCTION_BLOCK
+METHOD Loose : BOOL
+Loose := TRUE;
+END_METHOD
+)");
+    REQUIRE(p->errors() == "");
+    REQUIRE(p->unit.pous.size() == 2);
+    const Pou& fb = *p->unit.pous[0];
+    CHECK(fb.vars.size() == 2);
+    CHECK(fb.methods.size() == 2);
+    CHECK(fb.properties.size() == 1);
+    CHECK(dump(fb.body) == "{(:= x 1)}");
+    CHECK(p->unit.pous[1]->kind == PouKind::Method);
+    CHECK(p->unit.pous[1]->name == "Loose");
+}

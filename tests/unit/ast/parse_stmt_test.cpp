@@ -79,3 +79,19 @@ TEST_CASE("statements: locations", "[parser][stmt]") {
     CHECK(s.conds.at(1)->loc.col == 7);
     CHECK(pou.endLoc.line == 7);
 }
+
+TEST_CASE("statements: the error-recovery parse gives the same tree", "[parser][stmt]") {
+    // A syntax error anywhere makes the whole file go through the slower
+    // full-LL parse; the parts without errors must come out the same.
+    const std::string caseText =
+        "CASE s OF Idle: x := 1; Color.Red, 3..4: y S= z; ELSE lbl: JMP lbl; END_CASE\n"
+        "IF S=1 THEN R := S; END_IF\n";
+    auto clean = parse("PROGRAM P\n" + caseText + "END_PROGRAM\n");
+    auto broken = parse("PROGRAM P\n" + caseText + "END_PROGRAM\nPROGRAM Q\nx := ;\nEND_PROGRAM\n");
+    REQUIRE(clean->errors() == "");
+    REQUIRE(broken->errors() == "6:6: syntax error: unexpected ';', expected an expression\n");
+    CHECK(dump(broken->unit.pous.at(0)->body) == dump(clean->unit.pous.at(0)->body));
+    CHECK(dump(clean->unit.pous.at(0)->body) ==
+          "{(case s [Idle: {(:= x 1)}] [(. Color Red),3..4: {(S= y z)}] else {(label lbl) (jmp lbl)}) "
+          "(if (= S 1) {(:= R S)})}");
+}

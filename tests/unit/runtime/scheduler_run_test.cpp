@@ -14,7 +14,7 @@
 using namespace strun::rt;
 using namespace strun::rt::test;
 
-TEST_CASE("--cycles counts completed cycles of the default (first) task", "[scheduler]") {
+TEST_CASE("option --cycles counts completed cycles of the default (first) task", "[scheduler]") {
     Scenario s;
     s.add(ofKind("MainTask", TaskKind::Freewheeling, 30, 200 * ms), 10);
     RunOptions options;
@@ -26,7 +26,7 @@ TEST_CASE("--cycles counts completed cycles of the default (first) task", "[sche
     CHECK(s.trace.str().substr(s.trace.str().rfind("T#4")) == "T#40us MainTask start\nT#50us MainTask end\n");
 }
 
-TEST_CASE("--cycles of a named task ends the run at its Nth end, unwinding a preempted task", "[scheduler]") {
+TEST_CASE("option --cycles of a named task ends the run at its Nth end, unwinding a preempted task", "[scheduler]") {
     Scenario s;
     s.add(ofKind("Background", TaskKind::Freewheeling, 30), 10).loopForever = true;
     s.add(cyclic("Fast", 5, 1 * ms), 100);
@@ -40,7 +40,7 @@ TEST_CASE("--cycles of a named task ends the run at its Nth end, unwinding a pre
     CHECK(s.bodies[0]->aborted == 1);  // Background was unwound, not completed
 }
 
-TEST_CASE("--cycles 0 and --for 0 end the run at once", "[scheduler]") {
+TEST_CASE("option --cycles 0 and --for 0 end the run at once", "[scheduler]") {
     Scenario a;
     a.add(ofKind("MainTask", TaskKind::Freewheeling, 30), 10);
     RunOptions cycles;
@@ -66,7 +66,7 @@ TEST_CASE("an unknown --task is rejected with a clear message", "[scheduler]") {
     CHECK_FALSE(Scheduler::hasTask(specs, "Slow"));
 }
 
-TEST_CASE("--for stops at the first statement boundary at or after the duration; the state stays RUN", "[scheduler]") {
+TEST_CASE("option --for stops at the first statement boundary at or after the duration; the state stays RUN", "[scheduler]") {
     Scenario s;
     s.add(ofKind("MainTask", TaskKind::Freewheeling, 30), 1).loopForever = true;
     s.run(virtualFor(1 * ms + 500, 1 * us));  // 1 ms 500 ns: the boundary after it is 1 ms 1 us

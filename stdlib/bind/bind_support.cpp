@@ -1,0 +1,296 @@
+#include "stdlib/bind/bind_support.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "interpreter/exec/value_nodes.h"
+
+namespace strun::stdlib::bind {
+
+namespace {
+
+bool matchesFormal(const char* names, const std::string& upperName) {
+    std::string_view all(names);
+    while (!all.empty()) {
+        size_t bar = all.find('|');
+        std::string_view one = all.substr(0, bar);
+        if (one == upperName) return true;
+        if (bar == std::string_view::npos) break;
+        all.remove_prefix(bar + 1);
+    }
+    return false;
+}
+
+std::string firstName(const char* names) {
+    std::string_view all(names);
+    return std::string(all.substr(0, all.find('|')));
+}
+
+bool rejectOutputs(Checker& ck, CallArgs& call) {
+    for (size_t k = 0; k < call.args.size(); ++k) {
+        const ast::Arg& a = call.call->args[k];
+        if (a.output) {
+            ck.error(a.loc, fmt::format("'{}' has no output '{}'", call.name, a.name));
+            return false;
+        }
+    }
+    return true;
+}
+
+bool isScalarConst(const Checked& a) {
+    if (!a.isConst || !a.type) return false;
+    if (sema::isIntRep(a.type) || sema::isRealRep(a.type)) return true;
+    return dynamic_cast<exec::ConstBytes*>(a.node) != nullptr;
+}
+
+}  // namespace
+
+bool bindFixed(Checker& ck, CallArgs& call, std::initializer_list<Formal> formals, std::vector<Checked>& out) {
+    if (!rejectOutputs(ck, call)) return false;
+    const size_t n = formals.size();
+    const Formal* f = formals.begin();
+    out.assign(n, Checked{});
+    std::vector<bool> given(n, false);
+    size_t positional = 0;
+    for (size_t k = 0; k < call.args.size(); ++k) {
+        const ast::Arg& a = call.call->args[k];
+        size_t idx = n;
+        if (call.names[k].empty()) {
+            if (positional >= n) {
+                ck.error(call.loc, fmt::format("too many arguments for '{}' (it takes {})", call.name, n));
+                return false;
+            }
+            idx = positional++;
+        } else {
+            for (size_t j = 0; j < n; ++j)
+                if (matchesFormal(f[j].names, call.names[k])) idx = j;
+            if (idx == n) {
+                ck.error(a.loc, fmt::format("'{}' has no parameter '{}'", call.name, a.name));
+                return false;
+            }
+        }
+        if (given[idx]) {
+            ck.error(a.loc, fmt::format("parameter '{}' of '{}' given twice", firstName(f[idx].names), call.name));
+            return false;
+        }
+        given[idx] = true;
+        out[idx] = call.args[k];
+    }
+    for (size_t j = 0; j < n; ++j)
+        if (!given[j]) {
+            ck.error(call.loc, fmt::format("'{}' needs {} input(s); '{}' is missing", call.name, n, firstName(f[j].names)));
+            return false;
+        }
+    return true;
+}
+
+bool bindExtensible(Checker& ck, CallArgs& call, std::initializer_list<Formal> leading, const char* prefix, int firstIndex,
+                    size_t minCount, std::vector<Checked>& out) {
+    if (!rejectOutputs(ck, call)) return false;
+    const size_t nLead = leading.size();
+    const Formal* f = leading.begin();
+    std::vector<Checked> lead(nLead);
+    std::vector<bool> leadGiven(nLead, false);
+    std::map<long, Checked> named;
+    std::vector<Checked> positional;
+    const std::string pre = prefix;
+    for (size_t k = 0; k < call.args.size(); ++k) {
+        const ast::Arg& a = call.call->args[k];
+        const std::string& nm = call.names[k];
+        if (nm.empty()) {
+            positional.push_back(call.args[k]);
+            continue;
+        }
+        bool placed = false;
+        for (size_t j = 0; j < nLead && !placed; ++j)
+            if (matchesFormal(f[j].names, nm)) {
+                if (leadGiven[j]) {
+                    ck.error(a.loc, fmt::format("parameter '{}' of '{}' given twice", nm, call.name));
+                    return false;
+                }
+                lead[j] = call.args[k];
+                leadGiven[j] = true;
+                placed = true;
+            }
+        if (placed) continue;
+        bool numbered = nm.size() > pre.size() && nm.compare(0, pre.size(), pre) == 0 && nm.size() - pre.size() <= 4 &&
+                        std::all_of(nm.begin() + static_cast<long>(pre.size()), nm.end(), [](char c) { return c >= '0' && c <= '9'; });
+        if (!numbered) {
+            ck.error(a.loc, fmt::format("'{}' has no parameter '{}'", call.name, a.name));
+            return false;
+        }
+        long index = std::stol(nm.substr(pre.size())) - firstIndex;
+        if (index < 0 || named.count(index)) {
+            ck.error(a.loc, index < 0 ? fmt::format("'{}' has no parameter '{}'", call.name, a.name)
+                                      : fmt::format("parameter '{}' of '{}' given twice", a.name, call.name));
+            return false;
+        }
+        named[index] = call.args[k];
+    }
+    // Positional arguments fill the leading formals first, then IN<first>, IN<first+1>, ...
+    size_t p = 0;
+    for (size_t j = 0; j < nLead; ++j)
+        if (!leadGiven[j]) {
+            if (p >= positional.size()) {
+                ck.error(call.loc, fmt::format("'{}' is missing its input '{}'", call.name, firstName(f[j].names)));
+                return false;
+            }
+            lead[j] = positional[p++];
+        }
+    out = lead;
+    if (!named.empty() && p < positional.size()) {
+        ck.error(call.loc, fmt::format("'{}': give the inputs either all by position or all by name", call.name));
+        return false;
+    }
+    if (!named.empty()) {
+        long expect = 0;
+        for (auto& [index, value] : named) {
+            if (index != expect) {
+                ck.error(call.loc, fmt::format("'{}' is missing its input '{}{}'", call.name, pre, expect + firstIndex));
+                return false;
+            }
+            out.push_back(value);
+            ++expect;
+        }
+    } else {
+        for (; p < positional.size(); ++p) out.push_back(positional[p]);
+    }
+    if (out.size() - nLead < minCount) {
+        ck.error(call.loc, fmt::format("'{}' needs at least {} inputs", call.name, minCount + nLead));
+        return false;
+    }
+    return true;
+}
+
+bool isIntegerArg(const Checked& a) { return a.untypedInt || sema::isInteger(a.type->kind); }
+bool isBitArg(const Checked& a) { return !a.untypedInt && sema::isBitString(a.type->kind); }
+bool isNumArg(const Checked& a) { return a.untypedInt || a.untypedReal || sema::isNumeric(a.type->kind); }
+bool isStringArg(const Checked& a, bool wide) { return a.type && a.type->kind == (wide ? TK::WString : TK::String); }
+
+const Type* stringResultType(Checker& ck, bool wide, int64_t maxLen) {
+    maxLen = std::clamp<int64_t>(maxLen, 1, 65535);
+    return ck.types().string(static_cast<uint32_t>(maxLen), wide);
+}
+
+const Type* commonTypeOf(Checker& ck, std::vector<Checked>& args, const ast::Loc& loc, const std::string& fn) {
+    bool anyString = false;
+    for (const auto& a : args) anyString = anyString || sema::isStringType(a.type->kind);
+    if (anyString) {
+        TK kind = args[0].type->kind;
+        int64_t maxLen = 0;
+        for (const auto& a : args) {
+            if (a.type->kind != kind) {
+                ck.error(a.loc, fmt::format("{}: cannot mix {} and {}", fn, sema::typeName(args[0].type), sema::typeName(a.type)));
+                return nullptr;
+            }
+            maxLen = std::max<int64_t>(maxLen, a.type->maxLen);
+        }
+        return stringResultType(ck, kind == TK::WString, maxLen);
+    }
+    if (allUntyped(args)) {
+        bool real = false, wide = false;
+        for (const auto& a : args) {
+            real = real || a.untypedReal;
+            wide = wide || a.constInt < std::numeric_limits<int32_t>::min() || a.constInt > std::numeric_limits<int32_t>::max();
+        }
+        return ck.types().elementary(real ? TK::LReal : wide ? TK::LInt : TK::DInt);
+    }
+    Checked probe = args[0];
+    for (size_t k = 1; k < args.size(); ++k) {
+        Checked next = args[k];
+        const Type* t = ck.commonType(probe, next, loc, false);
+        if (!t) {
+            ck.error(args[k].loc, fmt::format("{}: arguments of types {} and {} need an explicit conversion", fn,
+                                              sema::typeName(probe.type), sema::typeName(args[k].type)));
+            return nullptr;
+        }
+        bool bothUntyped = (probe.untypedInt || probe.untypedReal) && (next.untypedInt || next.untypedReal);
+        if (bothUntyped) {
+            if (next.untypedReal) probe = next;
+            continue;
+        }
+        Checked typed;
+        typed.ok = true;
+        typed.type = t;
+        typed.loc = loc;
+        probe = typed;
+    }
+    if (probe.untypedInt || probe.untypedReal) probe = ck.settle(probe);
+    return probe.type;
+}
+
+bool coerceAll(Checker& ck, std::vector<Checked>& args, const Type* t, const std::string& fn) {
+    std::string what = fmt::format("argument of {}", fn);
+    for (auto& a : args) {
+        if (sema::isStringType(t->kind)) continue;
+        a = ck.coerce(a, t, a.loc, what.c_str());
+        if (!a.ok) return false;
+    }
+    return true;
+}
+
+const Type* realTypeFor(Checker& ck, const Checked& a) {
+    if (a.untypedReal || a.untypedInt) return ck.types().elementary(TK::LReal);
+    TK k = a.type->kind;
+    if (sema::isReal(k)) return a.type;
+    if (sema::isInteger(k) && sema::bitWidth(k) <= 16) return ck.types().elementary(TK::Real);
+    return ck.types().elementary(TK::LReal);
+}
+
+bool allConst(const std::vector<Checked>& args) {
+    for (const auto& a : args)
+        if (!isScalarConst(a)) return false;
+    return true;
+}
+
+bool allUntyped(const std::vector<Checked>& args) {
+    for (const auto& a : args)
+        if (!(a.untypedInt || a.untypedReal)) return false;
+    return !args.empty();
+}
+
+Checked makeResult(Checker& ck, exec::Expr* node, const Type* t, const CallArgs& call, const std::vector<Checked>& args,
+                   bool fold) {
+    node->type = t;
+    Checked r;
+    r.ok = true;
+    r.loc = call.loc;
+    r.type = t;
+    r.node = node;
+    for (const auto& a : args) r.hasCall = r.hasCall || a.hasCall;
+    if (!fold || args.empty() || !allConst(args)) return r;
+    exec::Ctx dummy;
+    if (sema::isRealRep(t)) {
+        Checked c = ck.constReal(node->f(dummy), t, call.loc);
+        if (allUntyped(args)) {
+            c = ck.constReal(c.constReal, ck.types().elementary(TK::LReal), call.loc);
+            c.untypedReal = true;
+        }
+        return c;
+    }
+    if (sema::isIntRep(t) && t->kind != TK::Void) {
+        Checked c = ck.constInt(node->i(dummy), t, call.loc);
+        if (allUntyped(args) && sema::isInteger(t->kind)) {
+            c.untypedInt = true;
+            bool narrow = c.constInt >= std::numeric_limits<int32_t>::min() && c.constInt <= std::numeric_limits<int32_t>::max();
+            c.type = ck.types().elementary(narrow ? TK::DInt : TK::LInt);
+            c.node->type = c.type;
+        }
+        return c;
+    }
+    return r;
+}
+
+Checked argError(Checker& ck, const Checked& a, const std::string& fn, const std::string& what) {
+    ck.error(a.loc, fmt::format("{}: {}, not {}", fn, what, sema::typeName(a.type)));
+    return ck.bad(a.loc);
+}
+
+void addAll(Checker& ck, std::initializer_list<const char*> names, const sema::BuiltinFn& fn) {
+    for (const char* n : names) ck.addBuiltin(n, fn);
+}
+
+}  // namespace strun::stdlib::bind
