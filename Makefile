@@ -3,7 +3,8 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 DEBIAN_PACKAGES = cmake make g++ antlr4 default-jre-headless libantlr4-runtime-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
-EXAMPLE ?= programs/traffic_light.st
+EXAMPLE ?= programs/bottle_counter.st
+RUN_ARGS ?= --virtual --cycles 2000 --dump
 
 .PHONY: deps build run test bench clean
 
@@ -20,7 +21,7 @@ build: deps
 	cmake --build $(BUILD) -j$(JOBS)
 
 run: build
-	$(BUILD)/strun run --virtual --for T#10s --dump $(EXAMPLE)
+	$(BUILD)/strun run $(RUN_ARGS) $(EXAMPLE)
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)

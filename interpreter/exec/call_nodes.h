@@ -11,6 +11,24 @@ namespace strun::exec {
 
 constexpr int kMaxCallDepth = 16;
 
+struct PouCode;
+
+// The run-time class of a FUNCTION_BLOCK instance: every FB instance starts
+// with a pointer to its ClassDesc, so methods called through THIS, SUPER's
+// callers, pointers, references and interfaces reach the override of the
+// instance's actual type. `methods` is indexed by the project-wide method
+// slot of a method name; `interfaces` lists the INTERFACEs the class implements.
+struct ClassDesc {
+    std::string name;
+    std::vector<PouCode*> methods;
+    std::vector<const void*> interfaces;
+    bool implements(const void* itf) const {
+        for (const void* i : interfaces)
+            if (i == itf) return true;
+        return false;
+    }
+};
+
 // The executable form of one POU (program, function, FB body, method).
 struct PouCode {
     std::string name;
@@ -63,11 +81,17 @@ struct CallPou final : Expr {
     ResultRep rep = ResultRep::None;
     uint32_t resultSize = 0;         // aggregates: bytes copied to the caller's temporary
     uint32_t tempOffset = 0;         // aggregates: caller-frame temporary receiving the result
+    int virtualSlot = -1;            // >= 0: the method is looked up in the instance's ClassDesc
 
     // Runs the call; returns the (already popped) callee frame, or nullptr if it did not run.
     uint8_t* run(Ctx& c) {
         uint8_t* inst = instance ? instance->addr(c) : c.self;
-        uint8_t* f = pushFrame(c, *callee, site);
+        PouCode* code = callee;
+        if (virtualSlot >= 0) {
+            code = dispatch(c, inst);
+            if (!code) return nullptr;
+        }
+        uint8_t* f = pushFrame(c, *code, site);
         if (!f) return nullptr;
         uint8_t* savedPending = c.pending;
         c.pending = f;
@@ -77,7 +101,7 @@ struct CallPou final : Expr {
         c.self = inst;
         c.frame = f;
         ++c.depth;
-        callee->body->exec(c);
+        code->body->exec(c);
         --c.depth;
         c.self = savedSelf;
         c.frame = savedFrame;
@@ -86,6 +110,7 @@ struct CallPou final : Expr {
         c.stackTop = f;
         return f;
     }
+    PouCode* dispatch(Ctx& c, uint8_t* inst);  // faults.cpp: NULL_POINTER when unbound
     int64_t i(Ctx& c) override {
         uint8_t* f = run(c);
         return f ? loadIntRep(f + callee->resultOffset, rep) : 0;
@@ -131,6 +156,36 @@ struct CallFbStmt final : Stmt {
         if (c.aborting) return Flow::Abort;
         for (Stmt* s : outputs) s->exec(c);
         return Flow::Next;
+    }
+};
+
+// THIS: the address of the current instance, as a pointer value.
+struct SelfAddress final : Expr {
+    int64_t i(Ctx& c) override { return static_cast<int64_t>(reinterpret_cast<intptr_t>(c.self)); }
+};
+
+// An interface or pointer value used as an instance: the address it holds.
+struct AddressValuePlace final : Expr {
+    Expr* value;
+    Site site;
+    AddressValuePlace(Expr* v, Site s) : value(v), site(s) {}
+    uint8_t* addr(Ctx& c) override {
+        auto p = reinterpret_cast<uint8_t*>(static_cast<intptr_t>(value->i(c)));
+        return p;
+    }
+};
+
+// itf ?= instance-or-interface: the address when the instance's class
+// implements the interface, else 0.
+struct TryCastInterface final : Expr {
+    Expr* source;  // yields an instance address (0 allowed)
+    const void* itf;
+    TryCastInterface(Expr* s, const void* i) : source(s), itf(i) {}
+    int64_t i(Ctx& c) override {
+        auto p = reinterpret_cast<uint8_t*>(static_cast<intptr_t>(source->i(c)));
+        if (!p) return 0;
+        auto* desc = loadAs<const ClassDesc*>(p);
+        return desc && desc->implements(itf) ? static_cast<int64_t>(reinterpret_cast<intptr_t>(p)) : 0;
     }
 };
 

@@ -53,6 +53,17 @@ uint8_t* DerefPlace::nullTarget(Ctx& c) {
     return sink(c);
 }
 
+PouCode* CallPou::dispatch(Ctx& c, uint8_t* inst) {
+    const ClassDesc* desc = inst ? loadAs<const ClassDesc*>(inst) : nullptr;
+    PouCode* code = desc && static_cast<size_t>(virtualSlot) < desc->methods.size() ? desc->methods[static_cast<size_t>(virtualSlot)] : nullptr;
+    if (!code) {
+        c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line,
+                              inst ? fmt::format("method {} not implemented by the instance", callee->name)
+                                   : fmt::format("call of {} through an unbound interface or pointer", callee->name));
+    }
+    return code;
+}
+
 // Rounding rule and out-of-range behaviour: docs/decisions/0031 (stdlib/conversions.h).
 int64_t realToIntRounded(double v, int bits, bool isSigned) {
     return static_cast<int64_t>(stdlib::realToInteger(v, bits, isSigned));

@@ -54,7 +54,10 @@ json arrayJson(const Type* t, const uint8_t* p, size_t dim, uint64_t stride) {
     return arr;
 }
 
-bool omitted(const Type* t) { return t->kind == TK::Pointer || t->kind == TK::Reference || t->kind == TK::Interface; }
+bool omitted(const Type* t) {
+    if (t->kind == TK::Array) return omitted(t->elem);  // an array of pointers is as opaque as one pointer
+    return t->kind == TK::Pointer || t->kind == TK::Reference || t->kind == TK::Interface;
+}
 
 void membersJson(json& obj, const Type* t, const uint8_t* p) {
     if (t->parent) membersJson(obj, t->parent, p);

@@ -85,6 +85,20 @@ private:
     void writeScalar(uint8_t* p, const Type* t, const Checked& v);
     uint8_t* mapAddress(const std::string& address, const Type* t, const ast::Loc& loc, int& bit);
 
+    // ---- object orientation (checker_oop.cpp)
+    int methodSlot(const std::string& upperName);
+    void buildClasses();
+    void collectInterfaces(PouInfo* itf, std::vector<PouInfo*>& out);
+    PouInfo* findMethod(PouInfo* owner, const std::string& upperName);
+    Checked methodCall(Checked base, PouInfo* method, const ast::Expr& call);
+    Checked checkThis(const ast::Expr& e, bool deref);
+    Checked propertyAccess(Checked base, const std::string& upperName, const ast::Loc& loc, bool& found);
+    exec::Stmt* assignProperty(Checked target, Checked value, const ast::Loc& loc);
+    Checked autoDeref(Checked c);
+    Checked addressOf(const ast::Expr& e, const char* fn);
+    std::map<std::string, int> methodSlots_;
+    bool suppressAutoDeref_ = false;
+
     // ---- configuration (checker_config.cpp)
     void buildConfiguration();
     void buildDefaultConfiguration();
@@ -97,6 +111,7 @@ private:
     exec::Stmt* checkStmt(const ast::Stmt& s);
     exec::Stmt* checkAssign(const ast::Stmt& s);
     exec::Stmt* checkFor(const ast::Stmt& s);
+    exec::Stmt* checkRefAssign(const ast::Stmt& s);
     exec::Stmt* checkCase(const ast::Stmt& s);
     Checked checkExpr(const ast::Expr& e);
     Checked checkCondition(const ast::Expr& e, const char* what);

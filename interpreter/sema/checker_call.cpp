@@ -150,6 +150,75 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             }
             return bad(e.loc);
         }
+        // A method of the function block being checked, called without THIS^.
+        if (pou_) {
+            PouInfo* fb = pou_->owner ? pou_->owner : pou_;
+            if (fb->kind == ast::PouKind::FunctionBlock || fb->kind == ast::PouKind::Program) {
+                if (PouInfo* m = findMethod(fb, key)) {
+                    ast::Expr thisExpr;
+                    thisExpr.kind = ast::ExprKind::This;
+                    thisExpr.loc = e.loc;
+                    Checked self = checkThis(thisExpr, true);
+                    if (!self.ok) return self;
+                    return methodCall(self, m, e);
+                }
+            }
+        }
+        if (key == "ADR" || key == "REF") {
+            if (e.args.size() != 1 || !e.args[0].value) {
+                error(e.loc, fmt::format("{} takes one variable", key));
+                return bad(e.loc);
+            }
+            Checked a = addressOf(*e.args[0].value, key.c_str());
+            if (a.ok && key == "REF") { a.type = types().reference(a.type->target); a.node->type = a.type; }
+            return a;
+        }
+        if (key == "SIZEOF") {
+            if (e.args.size() != 1 || !e.args[0].value) {
+                error(e.loc, "SIZEOF takes one argument");
+                return bad(e.loc);
+            }
+            const Type* t = nullptr;
+            const ast::Expr& a = *e.args[0].value;
+            if (a.kind == ast::ExprKind::Name && !lookupVar(upper(a.name))) {
+                CompileLog quiet;
+                t = types().byName(upper(a.name));
+                if (!t && (typeDecls_.count(upper(a.name)) || pous_.count(upper(a.name)))) t = resolveNamedType(a.name, a.loc);
+            }
+            if (!t) {
+                bool saved = suppressAutoDeref_;
+                Checked v = checkExpr(a);
+                suppressAutoDeref_ = saved;
+                if (!v.ok) return v;
+                t = v.type;
+            }
+            // A constant like a literal: it fits whatever integer it is assigned to.
+            Checked size = constInt(t->size, types().elementary(TK::DInt), e.loc);
+            size.untypedInt = true;
+            return size;
+        }
+        if (key == "__ISVALIDREF") {
+            if (e.args.size() != 1 || !e.args[0].value) {
+                error(e.loc, "__ISVALIDREF takes one reference");
+                return bad(e.loc);
+            }
+            bool saved = suppressAutoDeref_;
+            suppressAutoDeref_ = true;
+            Checked v = checkExpr(*e.args[0].value);
+            suppressAutoDeref_ = saved;
+            if (!v.ok) return v;
+            if (v.type->kind != TK::Reference && v.type->kind != TK::Pointer && v.type->kind != TK::Interface) {
+                error(e.args[0].value->loc, "__ISVALIDREF needs a REFERENCE");
+                return bad(e.loc);
+            }
+            Checked r;
+            r.ok = true;
+            r.loc = e.loc;
+            r.type = types().elementary(TK::Bool);
+            r.node = pool().make<exec::ConvToBool>(v.node, false);
+            r.node->type = r.type;
+            return r;
+        }
         auto it = pous_.find(key);
         if (it != pous_.end() && it->second->kind == ast::PouKind::Function) {
             return callUserFunction(it->second, e, nullptr);
@@ -191,12 +260,8 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
     if (callee.kind == ast::ExprKind::Member) {
         Checked base = checkExpr(*callee.kids[0]);
         if (!base.ok) return base;
-        if (base.type->kind == TK::FunctionBlock && base.type->pou) {
-            std::string key = upper(callee.name);
-            for (PouInfo* p = base.type->pou; p; p = p->parent) {
-                auto m = p->methods.find(key);
-                if (m != p->methods.end()) return callUserFunction(m->second, e, base.node);
-            }
+        if ((base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou) {
+            if (PouInfo* m = findMethod(base.type->pou, upper(callee.name))) return methodCall(base, m, e);
         }
         error(callee.loc, fmt::format("'{}' is not a method of {}", callee.name, typeName(base.type)));
         return bad(e.loc);

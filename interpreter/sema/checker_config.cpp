@@ -231,6 +231,7 @@ void Checker::run(std::vector<ast::CompilationUnit>& units, bool) {
     declareGlobals();
     for (PouInfo* p : pouOrder_)
         if (p->kind != ast::PouKind::Interface) layoutPou(p);
+    buildClasses();
     buildConfiguration();
     checkBodies();
     if (log_.hasErrors()) return;

@@ -47,6 +47,7 @@ void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
     PouInfo* raw = info.get();
     std::string key = upper(pou->name);
     if (owner) {
+        info->slot = methodSlot(key);
         if (owner->methods.count(key)) error(pou->nameLoc.line ? pou->nameLoc : pou->loc, fmt::format("duplicate method '{}' in '{}'", pou->name, owner->name));
         owner->methods[key] = raw;
         model_.pouStore.push_back(std::move(info));
@@ -61,6 +62,28 @@ void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
         }
     }
     for (auto& m : pou->methods) declarePou(m.get(), raw);
+    // A PROPERTY is a pair of accessor methods: __GET_<name> returns it, __SET_<name> receives it.
+    for (auto& prop : pou->properties) {
+        for (int setter = 0; setter < 2; ++setter) {
+            ast::Pou* acc = setter ? prop.setter.get() : prop.getter.get();
+            if (!acc) continue;
+            auto a = std::make_unique<PouInfo>();
+            a->ast = acc;
+            a->kind = ast::PouKind::Method;
+            a->name = (setter ? "__SET_" : "__GET_") + prop.name;
+            a->owner = raw;
+            a->property = &prop;
+            a->isSetter = setter != 0;
+            model_.codes.emplace_back();
+            a->code = &model_.codes.back();
+            a->code->name = raw->name + "." + prop.name + (setter ? ".SET" : ".GET");
+            std::string akey = upper(a->name);
+            a->slot = methodSlot(akey);
+            if (raw->methods.count(akey)) error(prop.loc, fmt::format("duplicate property '{}' in '{}'", prop.name, raw->name));
+            raw->methods[akey] = a.get();
+            model_.pouStore.push_back(std::move(a));
+        }
+    }
 }
 
 // ---------------------------------------------------------------- types
@@ -381,12 +404,31 @@ void Checker::layoutPou(PouInfo* pou) {
             }
         }
     }
+    if (pou->property && pou->isSetter) {
+        // The setter receives the new value in a variable named like the property.
+        const Type* pt = resolveTypeSpec(pou->property->type.get(), pou->name);
+        if (pt) {
+            auto v = std::make_unique<VarSym>();
+            v->name = pou->property->name;
+            v->loc = pou->property->loc;
+            v->type = pt;
+            v->section = ast::VarSection::Input;
+            v->storage = Storage::Frame;
+            v->owner = pou;
+            frameOff = pt->size;
+            pou->params.push_back(v.get());
+            pou->vars[upper(v->name)] = v.get();
+            pou->ownedVars.push_back(std::move(v));
+        }
+    }
     if (pou->kind == ast::PouKind::Function || pou->kind == ast::PouKind::Method) {
-        if (pou->ast->returnType) {
-            pou->resultType = resolveTypeSpec(pou->ast->returnType.get(), pou->name);
+        const ast::TypeSpec* resultSpec = pou->ast->returnType.get();
+        if (pou->property) resultSpec = pou->isSetter ? nullptr : pou->property->type.get();
+        if (resultSpec) {
+            pou->resultType = resolveTypeSpec(resultSpec, pou->name);
             if (pou->resultType) {
                 auto v = std::make_unique<VarSym>();
-                v->name = pou->name;
+                v->name = pou->property ? pou->property->name : pou->name;
                 v->loc = pou->ast->loc;
                 v->type = pou->resultType;
                 v->section = ast::VarSection::Output;
@@ -395,7 +437,7 @@ void Checker::layoutPou(PouInfo* pou) {
                 v->owner = pou;
                 frameOff = pou->resultType->size;
                 pou->result = v.get();
-                pou->vars[upper(pou->name)] = v.get();
+                pou->vars[upper(v->name)] = v.get();
                 pou->ownedVars.push_back(std::move(v));
             }
         }
@@ -414,6 +456,16 @@ void Checker::layoutPou(PouInfo* pou) {
             if (v->storage != Storage::Self || v->byRef) continue;
             writeDefault(image.data() + v->offset, v->type);
             if (v->decl && v->decl->init) writeInitial(image.data() + v->offset, v->type, v->decl->init.get(), v->decl->loc);
+        }
+        if (pou->kind == ast::PouKind::FunctionBlock) {
+            // Every FB instance starts with its class (methods dispatch through it).
+            if (!pou->classDesc) {
+                model_.classes.emplace_back();
+                pou->classDesc = &model_.classes.back();
+                pou->classDesc->name = pou->name;
+            }
+            const exec::ClassDesc* desc = pou->classDesc;
+            std::memcpy(image.data(), &desc, sizeof desc);
         }
         pou->instanceInit = image;
         inst->defaultImage = std::move(image);

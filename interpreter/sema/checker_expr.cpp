@@ -340,7 +340,7 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
         c.node = directNode(pool(), d, v->offset, v->abs, v->type);
     }
     c.node->type = v->type;
-    return c;
+    return autoDeref(c);
 }
 
 Checked Checker::checkName(const ast::Expr& e) {
@@ -455,11 +455,23 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
         c.node->type = c.type;
         return c;
     }
+    if (t->kind == TK::Interface) {
+        bool found = false;
+        Checked p = propertyAccess(base, key, loc, found);
+        if (found) return p;
+        error(loc, fmt::format("interface '{}' has no property '{}'", typeName(t), member));
+        return bad(loc);
+    }
     if (t->kind != TK::Struct && t->kind != TK::FunctionBlock) {
         error(loc, fmt::format("'{}' is not a member: {} has no members", member, typeName(t)));
         return bad(loc);
     }
     const Field* f = t->findField(key);
+    if (!f && t->kind == TK::FunctionBlock) {
+        bool found = false;
+        Checked p = propertyAccess(base, key, loc, found);
+        if (found) return p;
+    }
     if (!f) {
         error(loc, fmt::format("'{}' has no member '{}'", typeName(t), member));
         return bad(loc);
@@ -515,7 +527,7 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
         c.node = loadFrom(pool().make<exec::OffsetPlace>(base.node, f->offset), ft);
     }
     c.node->type = ft;
-    return c;
+    return autoDeref(c);
 }
 
 Checked Checker::checkMember(const ast::Expr& e) {
@@ -632,6 +644,7 @@ Checked Checker::checkExpr(const ast::Expr& e) {
         case ast::ExprKind::Binary: return checkBinary(e);
         case ast::ExprKind::Call: return checkCall(e, false);
         case ast::ExprKind::Deref: {
+            if (e.kids[0]->kind == ast::ExprKind::This || e.kids[0]->kind == ast::ExprKind::Super) return checkThis(*e.kids[0], true);
             Checked p = checkExpr(*e.kids[0]);
             if (!p.ok) return p;
             if (p.type->kind != TK::Pointer && p.type->kind != TK::Reference) {
@@ -651,8 +664,7 @@ Checked Checker::checkExpr(const ast::Expr& e) {
         }
         case ast::ExprKind::This:
         case ast::ExprKind::Super:
-            error(e.loc, "THIS and SUPER are not supported yet");
-            return bad(e.loc);
+            return checkThis(e, false);
     }
     return bad(e.loc);
 }
@@ -847,10 +859,37 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         return e;
     }
     if (target->kind == TK::Reference && from->kind == TK::Reference && sameType(from->target, target->target)) return e;
-    if (target->kind == TK::Interface && from->kind == TK::FunctionBlock) {
-        error(loc, "interface values are not supported yet");
-        return bad(loc);
+    if (target->kind == TK::Interface && (from->kind == TK::FunctionBlock || from->kind == TK::Interface)) {
+        // An interface value is the address of an instance whose class implements it.
+        bool ok = false;
+        if (from->kind == TK::FunctionBlock && from->pou) {
+            for (PouInfo* p = from->pou; p && !ok; p = p->parent)
+                for (const auto& n : p->ast->implements) {
+                    auto it = pous_.find(upper(n));
+                    if (it == pous_.end()) continue;
+                    std::vector<PouInfo*> all;
+                    collectInterfaces(it->second, all);
+                    for (PouInfo* i : all) ok = ok || i == target->pou;
+                }
+            if (ok && !e.isPlace) ok = false;
+        } else if (from->pou) {
+            std::vector<PouInfo*> all;
+            collectInterfaces(from->pou, all);
+            for (PouInfo* i : all) ok = ok || i == target->pou;
+        }
+        if (!ok) {
+            error(loc, fmt::format("{}: {} does not implement {}", what, typeName(from), typeName(target)));
+            return bad(loc);
+        }
+        Checked c = e;
+        c.type = target;
+        c.isPlace = false;
+        c.direct = Checked::Direct::None;
+        if (from->kind == TK::FunctionBlock) c.node = pool().make<exec::AddressOf>(e.node);
+        c.node->type = target;
+        return c;
     }
+    if (target->kind == TK::Interface && e.isConst && e.constInt == 0) { e.type = target; return e; }
     if (target->kind == TK::Struct && from->kind == TK::Struct) {
         for (const Type* p = from->parent; p; p = p->parent)
             if (p == target) return e;  // derived struct to base: copies the base part
@@ -881,6 +920,7 @@ const Type* Checker::commonType(Checked& a, Checked& b, const ast::Loc& loc, boo
     // from here a is typed
     const Type* ta = a.type;
     TK ka = ta->kind;
+    if (b.untypedInt && (ka == TK::Pointer || ka == TK::Interface)) return ta;
     if (b.untypedInt) {
         if (isInteger(ka) || isBitString(ka)) {
             if (fitsIn(b.constInt, false, ta)) return ta;
@@ -915,6 +955,7 @@ const Type* Checker::commonType(Checked& a, Checked& b, const ast::Loc& loc, boo
         return types().elementary(TK::Real);
     }
     if (ka == TK::Enum && kb == TK::Enum) return ta == tb ? ta : fail();
+    if ((ka == TK::Pointer || ka == TK::Interface) && (kb == TK::Pointer || kb == TK::Interface)) return ta;
     if (ka == kb && isElementary(ka)) return ta;
     if (isTimeLike(ka) && isTimeLike(kb)) return types().elementary(TK::LTime);
     return fail();

@@ -230,6 +230,14 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
         error(loc, fmt::format("operator '{}' is not defined for {} and {}", opText(op), typeName(a.type), typeName(b.type)));
         return bad(loc);
     }
+    if ((ka == TK::Pointer && (b.untypedInt || isInteger(kb))) && (op == ast::Op::Add || op == ast::Op::Sub)) {
+        // CODESYS pointer arithmetic: in bytes.
+        Checked y = convert(b, types().elementary(TK::LInt), loc);
+        r.type = a.type;
+        r.node = op == ast::Op::Add ? intOp<exec::AddI>(pool(), Rep::U64, a.node, y.node) : intOp<exec::SubI>(pool(), Rep::U64, a.node, y.node);
+        r.node->type = r.type;
+        return r;
+    }
     bool aInt = a.untypedInt || isInteger(ka) || isBitString(ka);
     bool bInt = b.untypedInt || isInteger(kb) || isBitString(kb);
     if (!(aNum || aInt) || !(bNum || bInt)) {

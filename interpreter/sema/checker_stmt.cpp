@@ -82,6 +82,7 @@ exec::Stmt* Checker::storeTo(exec::Expr* place, const Type* t, exec::Expr* value
 
 exec::Stmt* Checker::assignChecked(Checked target, Checked value, const ast::Loc& loc) {
     if (!target.ok || !value.ok) return nullptr;
+    if (target.propertySetter || target.writeOnlyProperty) return assignProperty(target, value, loc);
     if (!target.isPlace) {
         error(loc, "the left side of ':=' is not a variable");
         return nullptr;
@@ -134,6 +135,55 @@ exec::Block* Checker::checkBlock(const ast::StmtList& list) {
     return block;
 }
 
+// r REF= x (bind a REFERENCE) and itf ?= x (assignment attempt: the address
+// when the instance implements the interface, else 0).
+exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
+    bool saved = suppressAutoDeref_;
+    suppressAutoDeref_ = true;
+    Checked target = checkExpr(*s.target);
+    suppressAutoDeref_ = saved;
+    if (!target.ok) return nullptr;
+    if (s.kind == ast::StmtKind::RefAssign) {
+        if (target.type->kind != TK::Reference || !target.isPlace) {
+            error(s.target->loc, "REF= needs a REFERENCE TO variable on the left");
+            return nullptr;
+        }
+        bool isNull = s.expr->kind == ast::ExprKind::Literal && s.expr->lit == ast::LitKind::Integer && s.expr->text == "0";
+        Checked v;
+        if (isNull) {
+            v = constInt(0, target.type, s.expr->loc);
+        } else {
+            Checked src = checkExpr(*s.expr);
+            if (!src.ok) return nullptr;
+            if (!src.isPlace || !sameType(src.type, target.type->target)) {
+                error(s.expr->loc, fmt::format("REF= needs a variable of type {}, not {}", typeName(target.type->target), typeName(src.type)));
+                return nullptr;
+            }
+            v.ok = true;
+            v.loc = s.expr->loc;
+            v.type = target.type;
+            v.node = pool().make<exec::AddressOf>(src.node);
+        }
+        return storeTo(target.node, types().elementary(TK::LWord), v.node);
+    }
+    Checked src = checkExpr(*s.expr);
+    if (!src.ok) return nullptr;
+    if (target.type->kind != TK::Interface || !target.isPlace) {
+        error(s.target->loc, "?= needs an interface variable on the left");
+        return nullptr;
+    }
+    exec::Expr* addr = nullptr;
+    if (src.type->kind == TK::Interface) addr = src.node;
+    else if (src.type->kind == TK::FunctionBlock && src.isPlace) addr = pool().make<exec::AddressOf>(src.node);
+    else if (src.type->kind == TK::Pointer && src.type->target->kind == TK::FunctionBlock) addr = src.node;
+    if (!addr) {
+        error(s.expr->loc, fmt::format("?= needs an interface, a function-block instance or a pointer to one, not {}", typeName(src.type)));
+        return nullptr;
+    }
+    exec::Expr* cast = pool().make<exec::TryCastInterface>(addr, target.type->pou);
+    return storeTo(target.node, types().elementary(TK::LWord), cast);
+}
+
 exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
     Checked target = checkExpr(*s.target);
     Checked value = checkExpr(*s.expr);
@@ -147,10 +197,7 @@ exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
         if (!set) return nullptr;
         return pool().make<exec::CondStmt>(value.node, set);
     }
-    if (s.kind == ast::StmtKind::RefAssign || s.kind == ast::StmtKind::TryAssign) {
-        error(s.loc, fmt::format("{} is not supported yet", s.kind == ast::StmtKind::RefAssign ? "REF=" : "?="));
-        return nullptr;
-    }
+    if (s.kind == ast::StmtKind::RefAssign || s.kind == ast::StmtKind::TryAssign) return checkRefAssign(s);
     exec::Stmt* st = assignChecked(target, value, s.loc);
     if (st && (value.hasCall || target.hasCall)) {
         // A call inside may have been aborted (watchdog / STOP): stop here too.
@@ -287,15 +334,16 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
             const ast::Expr& callee = *s.expr->kids[0];
             // A function-block instance called as a statement?
             bool maybeFb = callee.kind != ast::ExprKind::Name || lookupVar(upper(callee.name)) != nullptr;
-            if (maybeFb && !(callee.kind == ast::ExprKind::Member && false)) {
+            if (callee.kind == ast::ExprKind::Name && pou_ && pou_->result && upper(callee.name) == upper(pou_->result->name)) maybeFb = false;
+            if (maybeFb) {
                 bool isMethod = false;
                 if (callee.kind == ast::ExprKind::Member) {
                     // inst.Method(...) vs. structVar.fbMember(...)
+                    CompileLog probe;
                     Checked base = checkExpr(*callee.kids[0]);
-                    if (base.ok && base.type->kind == TK::FunctionBlock && base.type->pou) {
-                        for (PouInfo* p = base.type->pou; p; p = p->parent)
-                            if (p->methods.count(upper(callee.name))) isMethod = true;
-                    }
+                    if (base.ok && (base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou)
+                        isMethod = findMethod(base.type->pou, upper(callee.name)) != nullptr;
+                    if (!base.ok) return nullptr;
                 }
                 if (!isMethod) {
                     Checked inst = checkExpr(callee);

@@ -45,6 +45,7 @@ struct ProgramModel {
     std::unique_ptr<TypeTable> types = std::make_unique<TypeTable>();
     exec::NodePool pool;
     std::deque<exec::PouCode> codes;
+    std::deque<exec::ClassDesc> classes;
     std::vector<std::unique_ptr<uint8_t[]>> blocks;  // every storage block, zero-initialised then initial values
     std::deque<ProgramInstance> programs;
     std::vector<VarSym*> globals;                   // in declaration order (for --dump)

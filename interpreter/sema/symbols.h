@@ -65,6 +65,11 @@ struct PouInfo {
     bool bodyChecked = false;
     uint32_t frameSize = 0;
     std::vector<uint8_t> instanceInit;        // initial image of an instance
+    exec::ClassDesc* classDesc = nullptr;     // FUNCTION_BLOCK: its run-time class
+    std::vector<PouInfo*> interfaces;         // FB: INTERFACEs it implements (incl. inherited, extended)
+    const ast::Property* property = nullptr;  // property accessor (METHOD): the property
+    bool isSetter = false;
+    int slot = -1;                            // METHOD: project-wide method slot of its name
 };
 
 // An expression after checking: its node, type, and what the checker knows
@@ -85,6 +90,10 @@ struct Checked {
     PouInfo* fbInstanceOf = nullptr;  // FB-typed place: its FB
     bool hasCall = false;
     ast::Loc loc;
+    bool superRef = false;            // SUPER^: methods bind statically to the parent's
+    PouInfo* propertySetter = nullptr;  // a property read; assigning it calls this setter
+    exec::Expr* propertyInstance = nullptr;
+    bool writeOnlyProperty = false;   // a property with only a SET accessor
     // A variable place at a statically known location (member accesses fold into it).
     enum class Direct : uint8_t { None, Self, Frame, Abs, Pending } direct = Direct::None;
     uint32_t directOffset = 0;

@@ -94,8 +94,6 @@ Checked checkExpt(Checker& ck, CallArgs& call) {
     for (const auto& v : a)
         if (!isNumArg(v)) return argError(ck, v, call.name, "the inputs must be numbers (ANY_NUM)");
     const Type* t = realTypeFor(ck, a[0]);
-    if (a[1].untypedReal || (a[1].type && sema::isReal(a[1].type->kind) && a[1].type->kind == TK::LReal && !a[1].untypedInt))
-        if (a[0].untypedInt || a[0].untypedReal) t = ck.types().elementary(TK::LReal);
     Checked base = ck.convert(a[0], t, a[0].loc);
     if (!base.ok) return base;
     bool intExponent = isIntegerArg(a[1]);

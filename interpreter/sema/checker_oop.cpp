@@ -1,0 +1,282 @@
+// Object orientation (IEC 61131-3 3rd edition, CODESYS): methods with
+// dynamic dispatch, THIS / SUPER, properties, interfaces, pointers and
+// references.
+#include <fmt/format.h>
+
+#include "interpreter/sema/checker.h"
+#include "interpreter/sema/node_factory.h"
+
+namespace strun::sema {
+
+int Checker::methodSlot(const std::string& key) {
+    auto it = methodSlots_.find(key);
+    if (it != methodSlots_.end()) return it->second;
+    int slot = static_cast<int>(methodSlots_.size());
+    methodSlots_[key] = slot;
+    return slot;
+}
+
+PouInfo* Checker::findMethod(PouInfo* owner, const std::string& key) {
+    for (PouInfo* p = owner; p; p = p->parent) {
+        auto it = p->methods.find(key);
+        if (it != p->methods.end()) return it->second;
+    }
+    if (owner && owner->kind == ast::PouKind::Interface) {
+        std::vector<PouInfo*> all;
+        collectInterfaces(owner, all);
+        for (PouInfo* i : all) {
+            auto it = i->methods.find(key);
+            if (it != i->methods.end()) return it->second;
+        }
+    }
+    return nullptr;
+}
+
+void Checker::collectInterfaces(PouInfo* itf, std::vector<PouInfo*>& out) {
+    if (std::find(out.begin(), out.end(), itf) != out.end()) return;
+    out.push_back(itf);
+    std::vector<std::string> bases = itf->ast->extendsList;
+    if (bases.empty() && !itf->ast->extends.empty()) bases.push_back(itf->ast->extends);
+    for (const auto& b : bases) {
+        auto it = pous_.find(upper(b));
+        if (it == pous_.end() || it->second->kind != ast::PouKind::Interface) {
+            error(itf->ast->loc, fmt::format("'{}' is not an interface", b));
+            continue;
+        }
+        collectInterfaces(it->second, out);
+    }
+}
+
+namespace {
+bool sameSignature(const PouInfo* a, const PouInfo* b) {
+    if (!sameType(a->resultType, b->resultType) && (a->resultType || b->resultType)) return false;
+    if (a->params.size() != b->params.size()) return false;
+    for (size_t k = 0; k < a->params.size(); ++k) {
+        const VarSym* x = a->params[k];
+        const VarSym* y = b->params[k];
+        if (x->section != y->section || !sameType(x->type, y->type) || x->offset != y->offset) return false;
+    }
+    return true;
+}
+}  // namespace
+
+void Checker::buildClasses() {
+    const size_t slots = methodSlots_.size();
+    std::set<PouInfo*> done;
+    std::function<void(PouInfo*)> build = [&](PouInfo* fb) {
+        if (done.count(fb) || !fb->classDesc) return;
+        done.insert(fb);
+        exec::ClassDesc& d = *fb->classDesc;
+        d.methods.assign(slots, nullptr);
+        if (fb->parent) {
+            build(fb->parent);
+            if (fb->parent->classDesc) d.methods = fb->parent->classDesc->methods;
+            fb->interfaces = fb->parent->interfaces;
+            if (fb->parent->ast->final) error(fb->ast->loc, fmt::format("'{}' cannot extend the FINAL '{}'", fb->name, fb->parent->name));
+        }
+        for (auto& [key, m] : fb->methods) {
+            if (m->slot < 0) continue;
+            if (fb->parent) {
+                PouInfo* base = findMethod(fb->parent, key);
+                if (base && base->ast && base->ast->final)
+                    error(m->ast->loc, fmt::format("method '{}' is FINAL in '{}'", m->name, fb->parent->name));
+                if (base && !sameSignature(base, m))
+                    error(m->ast->nameLoc.line ? m->ast->nameLoc : m->ast->loc,
+                          fmt::format("'{}' overrides '{}.{}' with a different signature", m->name, fb->parent->name, m->name));
+            }
+            if (m->ast && (m->ast->hasBody || !m->ast->body.empty() || !m->ast->abstract)) d.methods[static_cast<size_t>(m->slot)] = m->code;
+            else d.methods[static_cast<size_t>(m->slot)] = nullptr;
+        }
+        for (const auto& name : fb->ast->implements) {
+            auto it = pous_.find(upper(name));
+            if (it == pous_.end() || it->second->kind != ast::PouKind::Interface) {
+                error(fb->ast->loc, fmt::format("'{}' in IMPLEMENTS is not an interface", name));
+                continue;
+            }
+            collectInterfaces(it->second, fb->interfaces);
+        }
+        for (PouInfo* itf : fb->interfaces) {
+            if (std::find(d.interfaces.begin(), d.interfaces.end(), itf) == d.interfaces.end()) d.interfaces.push_back(itf);
+            if (fb->ast->abstract) continue;
+            for (auto& [key, im] : itf->methods) {
+                PouInfo* impl = findMethod(fb, key);
+                if (!impl && im->property) continue;  // an accessor left out faults when called (NULL_POINTER)
+                if (!impl) {
+                    error(fb->ast->nameLoc.line ? fb->ast->nameLoc : fb->ast->loc,
+                          fmt::format("'{}' does not implement '{}.{}'", fb->name, itf->name, im->property ? im->property->name : im->name));
+                } else {
+                    layoutPou(im);
+                    if (!sameSignature(im, impl))
+                        error(impl->ast->loc, fmt::format("'{}.{}' does not match the signature in '{}'", fb->name, impl->name, itf->name));
+                }
+            }
+        }
+        if (!fb->ast->abstract)
+            for (size_t k = 0; k < slots; ++k) {
+                (void)k;
+            }
+    };
+    for (PouInfo* p : pouOrder_)
+        if (p->kind == ast::PouKind::FunctionBlock) build(p);
+    for (PouInfo* p : pouOrder_)
+        if (p->kind == ast::PouKind::Interface)
+            for (auto& [key, m] : p->methods) layoutPou(m);
+}
+
+// A call of `method` on `base` (an FB instance place, an interface value, SUPER^).
+Checked Checker::methodCall(Checked base, PouInfo* method, const ast::Expr& call) {
+    exec::Expr* instance = base.node;
+    bool viaInterface = base.type->kind == TK::Interface;
+    if (viaInterface) instance = pool().make<exec::AddressValuePlace>(base.node, site(call.loc));
+    if (method->ast && method->ast->access == ast::Access::Private && !insideOwnInstance(method->owner))
+        error(call.kids[0]->nameLoc.line ? call.kids[0]->nameLoc : call.loc, fmt::format("method '{}' is PRIVATE", method->name));
+    Checked r = callUserFunction(method, call, instance);
+    if (!r.ok) return r;
+    auto* node = static_cast<exec::CallPou*>(r.node);
+    const bool isProgram = method->owner && method->owner->kind == ast::PouKind::Program;
+    if (!base.superRef && !isProgram) node->virtualSlot = method->slot;
+    if (!viaInterface && !isProgram && method->ast && method->ast->abstract && base.superRef)
+        error(call.loc, fmt::format("'{}' is ABSTRACT in the parent", method->name));
+    return r;
+}
+
+Checked Checker::checkThis(const ast::Expr& e, bool deref) {
+    PouInfo* fb = pou_ && pou_->owner ? pou_->owner : pou_;
+    if (!fb || (fb->kind != ast::PouKind::FunctionBlock && fb->kind != ast::PouKind::Program)) {
+        error(e.loc, fmt::format("{} is only available inside a function block", e.kind == ast::ExprKind::Super ? "SUPER" : "THIS"));
+        return bad(e.loc);
+    }
+    const Type* t = fb->instanceType;
+    bool super = e.kind == ast::ExprKind::Super;
+    if (super) {
+        if (!fb->parent) {
+            error(e.loc, fmt::format("'{}' has no parent: SUPER needs EXTENDS", fb->name));
+            return bad(e.loc);
+        }
+        t = fb->parent->instanceType;
+    }
+    Checked c;
+    c.ok = true;
+    c.loc = e.loc;
+    if (!deref) {
+        c.type = types().pointer(t);
+        c.node = pool().make<exec::SelfAddress>();
+        c.node->type = c.type;
+        return c;
+    }
+    c.type = t;
+    c.isPlace = true;
+    c.superRef = super;
+    c.fbInstanceOf = t->pou;
+    c.direct = Checked::Direct::Self;
+    c.directOffset = 0;
+    c.node = pool().make<exec::SelfVar<void>>(0);
+    c.node->type = t;
+    return c;
+}
+
+Checked Checker::propertyAccess(Checked base, const std::string& key, const ast::Loc& loc, bool& found) {
+    found = false;
+    PouInfo* owner = base.type->kind == TK::Interface || base.type->kind == TK::FunctionBlock ? base.type->pou : nullptr;
+    if (!owner) return bad(loc);
+    PouInfo* getter = findMethod(owner, "__GET_" + key);
+    PouInfo* setter = findMethod(owner, "__SET_" + key);
+    if (!getter && !setter) return bad(loc);
+    found = true;
+    exec::Expr* instance = base.node;
+    bool viaInterface = base.type->kind == TK::Interface;
+    if (viaInterface) instance = pool().make<exec::AddressValuePlace>(base.node, site(loc));
+    Checked c;
+    c.ok = true;
+    c.loc = loc;
+    c.propertySetter = setter;
+    c.propertyInstance = instance;
+    c.superRef = base.superRef;
+    if (getter) {
+        layoutPou(getter);
+        auto* call = pool().make<exec::CallPou>();
+        call->callee = getter->code;
+        call->instance = instance;
+        call->site = site(loc);
+        call->rep = resultRepOf(getter->resultType);
+        if (!base.superRef && owner->kind != ast::PouKind::Program) call->virtualSlot = getter->slot;
+        if (getter->resultType && isAggregate(getter->resultType)) {
+            call->resultSize = getter->resultType->size;
+            call->tempOffset = allocTemp(getter->resultType->size);
+        }
+        c.type = getter->resultType;
+        call->type = c.type;
+        c.node = call;
+        c.hasCall = true;
+    } else {
+        layoutPou(setter);
+        c.type = setter->params.empty() ? types().voidType() : setter->params.front()->type;
+        c.node = pool().make<exec::ConstInt>(0);
+        c.node->type = c.type;
+        c.readOnly = false;
+        c.writeOnlyProperty = true;
+    }
+    return c;
+}
+
+exec::Stmt* Checker::assignProperty(Checked target, Checked value, const ast::Loc& loc) {
+    PouInfo* setter = target.propertySetter;
+    if (!setter) {
+        error(loc, "the property has no SET accessor");
+        return nullptr;
+    }
+    layoutPou(setter);
+    if (setter->params.empty()) return nullptr;
+    VarSym* p = setter->params.front();
+    Checked v = coerce(value, p->type, value.loc, "property value");
+    if (!v.ok) return nullptr;
+    auto* call = pool().make<exec::CallPou>();
+    call->callee = setter->code;
+    call->instance = target.propertyInstance;
+    call->site = site(loc);
+    call->rep = exec::ResultRep::None;
+    if (!target.superRef && !(setter->owner && setter->owner->kind == ast::PouKind::Program)) call->virtualSlot = setter->slot;
+    exec::Expr* place = makeByRep<exec::PendingVar>(pool(), isAggregate(p->type) ? Rep::Void : repOf(p->type), p->offset);
+    call->inputs.push_back(storeTo(place, p->type, v.node));
+    call->type = types().voidType();
+    return pool().make<exec::EvalStmt>(call, exec::EvalStmt::Rep::Int);
+}
+
+// REFERENCE TO x values are used as the x they refer to.
+Checked Checker::autoDeref(Checked c) {
+    if (!c.ok || c.type->kind != TK::Reference || suppressAutoDeref_) return c;
+    const Type* target = c.type->target;
+    Checked d;
+    d.ok = true;
+    d.loc = c.loc;
+    d.type = target;
+    d.isPlace = true;
+    d.hasCall = c.hasCall;
+    d.readOnly = c.readOnly;
+    d.readOnlyWhy = c.readOnlyWhy;
+    if (target->kind == TK::FunctionBlock) d.fbInstanceOf = target->pou;
+    d.node = loadFrom(pool().make<exec::DerefPlace>(c.node, site(c.loc)), target);
+    d.node->type = target;
+    return d;
+}
+
+Checked Checker::addressOf(const ast::Expr& e, const char* fn) {
+    bool saved = suppressAutoDeref_;
+    Checked v = checkExpr(e);
+    suppressAutoDeref_ = saved;
+    if (!v.ok) return v;
+    if (!v.isPlace || v.node->bitIndex() >= 0) {
+        error(e.loc, fmt::format("{} needs a variable", fn));
+        return bad(e.loc);
+    }
+    Checked c;
+    c.ok = true;
+    c.loc = e.loc;
+    c.hasCall = v.hasCall;
+    c.type = types().pointer(v.type);
+    c.node = pool().make<exec::AddressOf>(v.node);
+    c.node->type = c.type;
+    return c;
+}
+
+}  // namespace strun::sema

@@ -1,0 +1,208 @@
+// Conversions the checker leaves to the library: every X_TO_STRING,
+// X_TO_WSTRING, STRING_TO_X, WSTRING_TO_X and the overloaded TO_STRING /
+// TO_WSTRING; BCD (*_BCD_TO_*, *_TO_BCD_*, BCD_TO_*, TO_BCD_*); TO/FROM_BIG/
+// LITTLE_ENDIAN; IS_VALID; IS_VALID_BCD.
+#include <fmt/format.h>
+
+#include "stdlib/bind/bind_support.h"
+#include "stdlib/bind/convert_nodes.h"
+#include "stdlib/bind/register_groups.h"
+
+namespace strun::stdlib::bind {
+
+namespace {
+
+// Conversion-name spellings of the elementary types (long forms included).
+const char* const kTypeNames[] = {
+    "BOOL", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "BYTE", "WORD", "DWORD", "LWORD",
+    "REAL", "LREAL", "TIME", "LTIME", "DATE", "LDATE", "TOD", "LTOD", "DT", "LDT", "TIME_OF_DAY", "LTIME_OF_DAY",
+    "DATE_AND_TIME", "LDATE_AND_TIME", "CHAR", "WCHAR",
+};
+
+bool valueClassOf(const Type* t, ValueClass& out) {
+    TK k = t->kind == TK::Enum ? t->base->kind : t->kind;
+    switch (k) {
+        case TK::Bool: out = ValueClass::Bool; return true;
+        case TK::Real: out = ValueClass::Real; return true;
+        case TK::LReal: out = ValueClass::LReal; return true;
+        case TK::Time: out = ValueClass::Time; return true;
+        case TK::LTime: out = ValueClass::LTime; return true;
+        case TK::Date: out = ValueClass::Date; return true;
+        case TK::LDate: out = ValueClass::LDate; return true;
+        case TK::Tod: out = ValueClass::Tod; return true;
+        case TK::LTod: out = ValueClass::LTod; return true;
+        case TK::Dt: out = ValueClass::Dt; return true;
+        case TK::LDt: out = ValueClass::LDt; return true;
+        case TK::Char: out = ValueClass::Char; return true;
+        case TK::WChar: out = ValueClass::WChar; return true;
+        case TK::String: out = ValueClass::String; return true;
+        case TK::WString: out = ValueClass::WString; return true;
+        default: break;
+    }
+    if (sema::isSignedInt(k)) { out = ValueClass::Signed; return true; }
+    if (sema::isUnsignedInt(k) || sema::isBitString(k)) { out = ValueClass::Unsigned; return true; }
+    return false;
+}
+
+// Longest text a value of class k formats to (LTIME#-106751d23h47m16s854ms775us808ns is 39).
+int64_t textLength(ValueClass k, const Type* t) {
+    if (k == ValueClass::String) return int64_t(t->maxLen);
+    if (k == ValueClass::WString) return 3 * int64_t(t->maxLen);  // UTF-8: up to 3 bytes per UTF-16 unit
+    return 64;
+}
+
+void addToString(Checker& ck, const std::string& name, const Type* from, bool wide) {
+    ck.addBuiltin(name, [from, wide](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
+        Checked x = a[0];
+        if (from) {
+            if (sema::isStringType(from->kind)) {
+                if (x.type->kind != from->kind) return argError(ck, x, call.name, fmt::format("the input must be {}", from->name));
+            } else {
+                x = ck.coerce(x, from, x.loc, call.name.c_str());
+                if (!x.ok) return x;
+            }
+        } else {
+            x = ck.settle(x);
+        }
+        ValueClass vc;
+        if (!valueClassOf(x.type, vc)) return argError(ck, x, call.name, "the input must be an elementary value");
+        const Type* t = stringResultType(ck, wide, textLength(vc, x.type));
+        exec::Expr* n;
+        if (wide) {
+            auto* w = ck.pool().make<ToStringNode<char16_t>>(x.node, vc);
+            w->maxLen = t->maxLen;
+            w->off = ck.allocTemp(t->size);
+            n = w;
+        } else {
+            auto* s = ck.pool().make<ToStringNode<char>>(x.node, vc);
+            s->maxLen = t->maxLen;
+            s->off = ck.allocTemp(t->size);
+            n = s;
+        }
+        return makeResult(ck, n, t, call, a);
+    });
+}
+
+void addFromString(Checker& ck, const std::string& name, bool wide, const Type* to) {
+    ck.addBuiltin(name, [wide, to](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
+        if (!isStringArg(a[0], wide)) return argError(ck, a[0], call.name, fmt::format("the input must be {}", wide ? "WSTRING" : "STRING"));
+        ValueClass vc;
+        valueClassOf(to, vc);
+        TK view = sema::integerView(to->kind);
+        auto* n = ck.pool().make<FromStringNode>(a[0].node, wide, vc, sema::bitWidth(view), sema::isSignedInt(view));
+        return makeResult(ck, n, to, call, a);
+    });
+}
+
+int bytesOf(TK k) { return sema::bitWidth(k) / 8; }
+
+const Type* bitTypeForLiteral(Checker& ck, const Checked& a) {
+    if (!a.untypedInt) return a.type;
+    uint64_t v = static_cast<uint64_t>(a.constInt);
+    return ck.types().elementary(v <= 0xFF ? TK::Byte : v <= 0xFFFF ? TK::Word : v <= 0xFFFFFFFFull ? TK::DWord : TK::LWord);
+}
+
+// BIT_BCD_TO_INT (from given) or BCD_TO_INT (from = null: any bit string).
+void addBcdToInt(Checker& ck, const std::string& name, const Type* from, const Type* to) {
+    ck.addBuiltin(name, [from, to](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
+        const Type* src = from ? from : bitTypeForLiteral(ck, a[0]);
+        if (!sema::isBitString(src->kind)) return argError(ck, a[0], call.name, "the input must be a bit string (BCD)");
+        Checked x = ck.coerce(a[0], src, a[0].loc, call.name.c_str());
+        if (!x.ok) return x;
+        TK view = sema::integerView(to->kind);
+        auto* n = ck.pool().make<BcdToIntNode>(x.node, bytesOf(src->kind), sema::bitWidth(view), sema::isSignedInt(view));
+        return makeResult(ck, n, to, call, a);
+    });
+}
+
+// INT_TO_BCD_BIT (from given) or TO_BCD_BIT (from = null: any integer).
+void addIntToBcd(Checker& ck, const std::string& name, const Type* from, const Type* to) {
+    ck.addBuiltin(name, [from, to](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
+        Checked x = a[0];
+        if (from) x = ck.coerce(x, from, x.loc, call.name.c_str());
+        else if (!isIntegerArg(x)) return argError(ck, x, call.name, "the input must be an integer");
+        else x = ck.settle(x);
+        if (!x.ok) return x;
+        auto* n = ck.pool().make<IntToBcdNode>(x.node, bytesOf(to->kind));
+        return makeResult(ck, n, to, call, a);
+    });
+}
+
+void addByteOrder(Checker& ck, const char* name, ByteOrderFn fn) {
+    ck.addBuiltin(name, [fn](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
+        if (!isIntegerArg(a[0]) && !isBitArg(a[0])) return argError(ck, a[0], call.name, "the input must be an integer or a bit string");
+        Checked x = ck.settle(a[0]);
+        TK view = sema::integerView(x.type->kind);
+        auto* n = ck.pool().make<ByteOrderNode>(x.node, fn, bytesOf(x.type->kind), sema::isSignedInt(view));
+        return makeResult(ck, n, x.type, call, a);
+    });
+}
+
+Checked checkIsValid(Checker& ck, CallArgs& call) {
+    std::vector<Checked> a;
+    if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
+    if (!a[0].untypedReal && !sema::isReal(a[0].type->kind)) return argError(ck, a[0], call.name, "the input must be REAL or LREAL");
+    Checked x = ck.settle(a[0]);
+    return makeResult(ck, ck.pool().make<IsValidRealNode>(x.node), ck.types().elementary(TK::Bool), call, a);
+}
+
+Checked checkIsValidBcd(Checker& ck, CallArgs& call) {
+    std::vector<Checked> a;
+    if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
+    const Type* src = bitTypeForLiteral(ck, a[0]);
+    if (!sema::isBitString(src->kind)) return argError(ck, a[0], call.name, "the input must be a bit string");
+    Checked x = ck.coerce(a[0], src, a[0].loc, call.name.c_str());
+    if (!x.ok) return x;
+    return makeResult(ck, ck.pool().make<IsValidBcdNode>(x.node, bytesOf(src->kind)), ck.types().elementary(TK::Bool), call, a);
+}
+
+}  // namespace
+
+void registerConvert(Checker& ck) {
+    auto& types = ck.types();
+    for (const char* n : kTypeNames) {
+        const Type* t = types.byName(n);
+        if (!t) continue;
+        std::string name = n;
+        addToString(ck, name + "_TO_STRING", t, false);
+        addToString(ck, name + "_TO_WSTRING", t, true);
+        addFromString(ck, "STRING_TO_" + name, false, t);
+        addFromString(ck, "WSTRING_TO_" + name, true, t);
+    }
+    addToString(ck, "STRING_TO_WSTRING", types.elementary(TK::String), true);
+    addToString(ck, "WSTRING_TO_STRING", types.elementary(TK::WString), false);
+    addToString(ck, "TO_STRING", nullptr, false);
+    addToString(ck, "TO_WSTRING", nullptr, true);
+
+    const TK bits[] = {TK::Byte, TK::Word, TK::DWord, TK::LWord};
+    const TK ints[] = {TK::SInt, TK::Int, TK::DInt, TK::LInt, TK::USInt, TK::UInt, TK::UDInt, TK::ULInt};
+    for (TK b : bits) {
+        const Type* bt = types.elementary(b);
+        addIntToBcd(ck, "TO_BCD_" + bt->name, nullptr, bt);
+        for (TK i : ints) {
+            const Type* it = types.elementary(i);
+            addBcdToInt(ck, bt->name + "_BCD_TO_" + it->name, bt, it);
+            addIntToBcd(ck, it->name + "_TO_BCD_" + bt->name, it, bt);
+        }
+    }
+    for (TK i : ints) addBcdToInt(ck, "BCD_TO_" + types.elementary(i)->name, nullptr, types.elementary(i));
+
+    addByteOrder(ck, "TO_BIG_ENDIAN", ByteOrderFn::ToBig);
+    addByteOrder(ck, "FROM_BIG_ENDIAN", ByteOrderFn::FromBig);
+    addByteOrder(ck, "TO_LITTLE_ENDIAN", ByteOrderFn::ToLittle);
+    addByteOrder(ck, "FROM_LITTLE_ENDIAN", ByteOrderFn::FromLittle);
+    ck.addBuiltin("IS_VALID", checkIsValid);
+    ck.addBuiltin("IS_VALID_BCD", checkIsValidBcd);
+}
+
+}  // namespace strun::stdlib::bind
