@@ -463,7 +463,10 @@ void Scheduler::tripWatchdog(TaskRun& task) {
     ++task.watchdogTrips;
     trace(&task, "watchdog");
     bool timeoutTaskTripped = &task == timeoutTask_;
-    record(DiagCode::Watchdog, &task, "", 0,
+    std::string pou;
+    int line = 0;
+    if (task.body) task.body->currentPosition(pou, line);
+    record(DiagCode::Watchdog, &task, pou, line,
            std::string(timeoutTaskTripped ? "the execution-timeout task '" : "task '") + task.spec.name +
                "' reached its watchdog of " + formatDuration(task.spec.watchdog) + " (running for " +
                formatDuration(machine_.now - task.startedAt) + ", preemptions included); the activation is aborted");

@@ -54,6 +54,9 @@ public:
     // Runs one activation. Returns false when the activation was aborted
     // (a tick returned true), true when it completed.
     virtual bool runActivation() = 0;
+    // Where the activation is now (for the WATCHDOG diagnostic): the POU and
+    // source line of the statement being executed. False when unknown.
+    virtual bool currentPosition(std::string& pou, int& line) const { return false; }
 };
 
 }  // namespace strun::rt

@@ -33,6 +33,8 @@ struct Ctx {
     int jumpLabel = -1;            // pending JMP target while Flow::Jump unwinds
     bool aborting = false;         // the activation is being aborted (watchdog, STOP)
     uint8_t* pending = nullptr;    // frame of the call whose arguments are being bound
+    const struct Stmt* stmt = nullptr;           // statement being executed (for WATCHDOG positions)
+    const std::string* pouName = nullptr;        // POU being executed
     rt::Machine* m = nullptr;
     uint8_t* faultSink = nullptr;  // zeroed scratch that faulty accesses read from / write to
 };

@@ -20,6 +20,7 @@ struct Block final : Stmt {
     Flow exec(Ctx& c) override {
         const size_t n = stmts.size();
         for (size_t k = 0; k < n; ++k) {
+            c.stmt = stmts[k];
             if (tickAborts(c)) return Flow::Abort;
             Flow f = stmts[k]->exec(c);
             if (__builtin_expect(f != Flow::Next, 0)) {

@@ -26,6 +26,8 @@ bool TaskRunner::runActivation() {
         if (inv.program)
             for (exec::Stmt* s : inv.program->before) s->exec(c);
         const exec::PouCode& code = *inv.code;
+        c.pouName = &code.name;
+        c.stmt = nullptr;
         if (code.frameSize) std::memcpy(c.frame, code.frameInit.data(), code.frameSize);
         c.stackTop = c.frame + code.frameSize;
         // Every activation costs at least one statement of PLC time, so an
@@ -36,6 +38,13 @@ bool TaskRunner::runActivation() {
         if (inv.program)
             for (exec::Stmt* s : inv.program->after) s->exec(c);
     }
+    return true;
+}
+
+bool TaskRunner::currentPosition(std::string& pou, int& line) const {
+    if (!ctx_.pouName) return false;
+    pou = *ctx_.pouName;
+    line = ctx_.stmt ? ctx_.stmt->line : 0;
     return true;
 }
 

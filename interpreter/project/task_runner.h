@@ -16,6 +16,7 @@ class TaskRunner final : public rt::TaskBody {
 public:
     TaskRunner(sema::ProgramModel& model, const sema::ConfiguredTask& task);
     bool runActivation() override;
+    bool currentPosition(std::string& pou, int& line) const override;
 
 private:
     std::vector<sema::Invocation> calls_;

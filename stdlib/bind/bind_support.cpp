@@ -222,6 +222,27 @@ const Type* commonTypeOf(Checker& ck, std::vector<Checked>& args, const ast::Loc
     return probe.type;
 }
 
+const Type* literalType(Checker& ck, const std::vector<Checked>& args) {
+    bool real = false, exactFloat = true, negative = false;
+    int64_t lo = 0, hi = 0;
+    for (const auto& a : args) {
+        real = real || a.untypedReal;
+        double v = a.untypedReal ? a.constReal : static_cast<double>(a.constInt);
+        exactFloat = exactFloat && static_cast<double>(static_cast<float>(v)) == v;
+        if (a.untypedInt) {
+            lo = std::min(lo, a.constInt);
+            hi = std::max(hi, a.constInt);
+            negative = negative || a.constInt < 0;
+        }
+    }
+    if (real) return ck.types().elementary(exactFloat ? TK::Real : TK::LReal);
+    if (negative) {
+        auto fits = [&](int bits) { return lo >= -(int64_t(1) << (bits - 1)) && hi < (int64_t(1) << (bits - 1)); };
+        return ck.types().elementary(fits(8) ? TK::SInt : fits(16) ? TK::Int : fits(32) ? TK::DInt : TK::LInt);
+    }
+    return ck.types().elementary(hi <= 0xFF ? TK::USInt : hi <= 0xFFFF ? TK::UInt : hi <= 0xFFFFFFFFll ? TK::UDInt : TK::ULInt);
+}
+
 bool coerceAll(Checker& ck, std::vector<Checked>& args, const Type* t, const std::string& fn) {
     std::string what = fmt::format("argument of {}", fn);
     for (auto& a : args) {
@@ -253,7 +274,8 @@ bool allUntyped(const std::vector<Checked>& args) {
 }
 
 Checked makeResult(Checker& ck, exec::Expr* node, const Type* t, const CallArgs& call, const std::vector<Checked>& args,
-                   bool fold) {
+                   bool fold, const std::vector<Checked>* valueArgs) {
+    const bool untyped = allUntyped(valueArgs ? *valueArgs : args);
     node->type = t;
     Checked r;
     r.ok = true;
@@ -265,7 +287,7 @@ Checked makeResult(Checker& ck, exec::Expr* node, const Type* t, const CallArgs&
     exec::Ctx dummy;
     if (sema::isRealRep(t)) {
         Checked c = ck.constReal(node->f(dummy), t, call.loc);
-        if (allUntyped(args)) {
+        if (untyped) {
             c = ck.constReal(c.constReal, ck.types().elementary(TK::LReal), call.loc);
             c.untypedReal = true;
         }
@@ -273,7 +295,7 @@ Checked makeResult(Checker& ck, exec::Expr* node, const Type* t, const CallArgs&
     }
     if (sema::isIntRep(t) && t->kind != TK::Void) {
         Checked c = ck.constInt(node->i(dummy), t, call.loc);
-        if (allUntyped(args) && sema::isInteger(t->kind)) {
+        if (untyped && sema::isInteger(t->kind)) {
             c.untypedInt = true;
             bool narrow = c.constInt >= std::numeric_limits<int32_t>::min() && c.constInt <= std::numeric_limits<int32_t>::max();
             c.type = ck.types().elementary(narrow ? TK::DInt : TK::LInt);

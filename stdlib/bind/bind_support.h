@@ -42,6 +42,12 @@ bool bindExtensible(Checker& ck, CallArgs& call, std::initializer_list<Formal> l
 // the kind's type with the largest maxLen of the arguments.
 const Type* commonTypeOf(Checker& ck, std::vector<Checked>& args, const ast::Loc& loc, const std::string& fn);
 
+// For inputs that are all untyped literals but give a non-constant result
+// (SEL(g, 10, 20) with a variable g): the smallest type holding every value
+// (USINT.. for non-negative, SINT.. otherwise, REAL when every real is exact
+// in REAL, else LREAL), so the result still assigns to narrow variables.
+const Type* literalType(Checker& ck, const std::vector<Checked>& args);
+
 // Coerces every argument to `t` (strings are left as they are: their kind already matches).
 bool coerceAll(Checker& ck, std::vector<Checked>& args, const Type* t, const std::string& fn);
 
@@ -52,9 +58,10 @@ const Type* realTypeFor(Checker& ck, const Checked& a);
 
 // Wraps `node` as the call's result of type `t`. When `fold` and every
 // argument is a compile-time constant of a scalar type, the call is evaluated
-// now and becomes a constant (untyped again when every argument was an untyped literal).
+// now and becomes a constant, untyped again when every argument of
+// `valueArgs` (default: all) was an untyped literal (SEL's G does not count).
 Checked makeResult(Checker& ck, exec::Expr* node, const Type* t, const CallArgs& call, const std::vector<Checked>& args,
-                   bool fold = true);
+                   bool fold = true, const std::vector<Checked>* valueArgs = nullptr);
 
 bool allConst(const std::vector<Checked>& args);
 bool allUntyped(const std::vector<Checked>& args);

@@ -14,8 +14,10 @@ bool comparable(const Type* t) {
 }
 
 // Brings the inputs to one type; the same rules as the operators.
-const Type* unify(Checker& ck, CallArgs& call, std::vector<Checked>& ins, bool needComparable) {
-    const Type* t = commonTypeOf(ck, ins, call.loc, call.name);
+// `selectorVaries`: a SEL/MUX whose selector is not constant gives a
+// non-constant result even from literal inputs (see literalType).
+const Type* unify(Checker& ck, CallArgs& call, std::vector<Checked>& ins, bool needComparable, bool selectorVaries = false) {
+    const Type* t = selectorVaries && allUntyped(ins) ? literalType(ck, ins) : commonTypeOf(ck, ins, call.loc, call.name);
     if (!t) return nullptr;
     if (needComparable && !comparable(t)) {
         ck.error(call.loc, fmt::format("{}: {} values cannot be compared", call.name, sema::typeName(t)));
@@ -36,11 +38,12 @@ Checked checkSel(Checker& ck, CallArgs& call) {
     if (!bindFixed(ck, call, {{"G"}, {"IN0"}, {"IN1"}}, a)) return ck.bad(call.loc);
     if (a[0].type->kind != TK::Bool) return argError(ck, a[0], call.name, "G must be BOOL");
     std::vector<Checked> ins = {a[1], a[2]};
-    const Type* t = unify(ck, call, ins, false);
+    const Type* t = unify(ck, call, ins, false, !a[0].isConst);
     if (!t) return ck.bad(call.loc);
     auto* n = ck.pool().make<SelNode>(a[0].node, ins[0].node, ins[1].node);
-    std::vector<Checked> all = {a[0], ins[0], ins[1]};
-    return makeResult(ck, n, t, call, all);
+    std::vector<Checked> all = {a[0], a[1], a[2]};
+    std::vector<Checked> values = {a[1], a[2]};
+    return makeResult(ck, n, t, call, all, true, &values);
 }
 
 template <class K>
@@ -52,7 +55,7 @@ Checked checkMux(Checker& ck, CallArgs& call) {
     if (!isIntegerArg(a[0]) && !isBitArg(a[0])) return argError(ck, a[0], call.name, "K must be an integer");
     Checked k = ck.settle(a[0]);
     std::vector<Checked> ins(a.begin() + 1, a.end());
-    const Type* t = unify(ck, call, ins, false);
+    const Type* t = unify(ck, call, ins, false, !k.isConst);
     if (!t) return ck.bad(call.loc);
     exec::Expr* n = sema::makeIntByRep<MuxOf>(ck.pool(), sema::repOf(k.type), k.node);
     // makeIntByRep passes the selector only; the inputs are filled in afterwards.
@@ -67,9 +70,8 @@ Checked checkMux(Checker& ck, CallArgs& call) {
         case Rep::U32: static_cast<MuxNode<uint32_t>*>(n)->ins = nodes; break;
         default: static_cast<MuxNode<uint64_t>*>(n)->ins = nodes; break;
     }
-    std::vector<Checked> all = ins;
-    all.insert(all.begin(), k);
-    return makeResult(ck, n, t, call, all);
+    std::vector<Checked> values(a.begin() + 1, a.end());
+    return makeResult(ck, n, t, call, a, true, &values);
 }
 
 template <class N>
