@@ -24,6 +24,7 @@
 #include <vector>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -201,6 +202,54 @@ std::vector<std::string> missingPatterns(const std::string& patternsText, const 
     return missing;
 }
 
+// ---------------------------------------------------------------- golden traces
+
+std::vector<std::string> splitLines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string l; std::getline(in, l);) {
+        if (!l.empty() && l.back() == '\r') l.pop_back();
+        lines.push_back(l);
+    }
+    return lines;
+}
+
+// The expected trace: every line of the .trace file, trailing blank lines dropped
+// (an editor's final newline must not count as an expected event).
+std::vector<std::string> expectedTraceLines(const std::string& traceText) {
+    auto lines = splitLines(traceText);
+    while (!lines.empty() && trim(lines.back()).empty()) lines.pop_back();
+    return lines;
+}
+
+// The trace strun printed: the stderr lines that start with `T#` (decision 0011:
+// `<PLC time> <task> <event>[ <detail>]`); warnings and other stderr text are not trace.
+std::vector<std::string> actualTraceLines(const std::string& stderrText) {
+    std::vector<std::string> trace;
+    for (auto& l : splitLines(stderrText))
+        if (l.rfind("T#", 0) == 0) trace.push_back(l);
+    return trace;
+}
+
+// Empty when the traces are equal; else a description of the first difference
+// with up to `context` lines before it, both sides numbered (1-based trace lines).
+std::string traceDifference(const std::vector<std::string>& expected, const std::vector<std::string>& actual,
+                            std::size_t context = 3) {
+    std::size_t i = 0;
+    while (i < expected.size() && i < actual.size() && expected[i] == actual[i]) ++i;
+    if (i == expected.size() && i == actual.size()) return "";
+    std::ostringstream d;
+    d << "trace differs at line " << (i + 1) << " (expected " << expected.size() << " lines, actual "
+      << actual.size() << ")\n";
+    for (std::size_t k = i > context ? i - context : 0; k < i; ++k)
+        d << "        " << (k + 1) << "   " << expected[k] << "\n";
+    d << "      expected " << (i + 1) << ": " << (i < expected.size() ? expected[i] : "<end of trace>") << "\n";
+    d << "      actual   " << (i + 1) << ": " << (i < actual.size() ? actual[i] : "<end of trace>");
+    for (std::size_t k = i + 1; k < std::min(actual.size(), i + 1 + context); ++k)
+        d << "\n        " << (k + 1) << "   " << actual[k] << "   (actual)";
+    return d.str();
+}
+
 // ---------------------------------------------------------------- running strun
 
 struct RunResult {
@@ -337,8 +386,17 @@ int checkOne(const std::string& strun, const std::string& programPath) {
     const std::string base = withoutExtension(programPath);
     const auto expectedJsonText = readFile(base + ".json");
     const auto expectedErr = readFile(base + ".err");
+    const auto expectedTrace = readFile(base + ".trace");
     if (expectedJsonText && expectedErr) {
         std::cerr << "conformance_check: " << programPath << " has both a .json and a .err expectation\n";
+        return 2;
+    }
+    if (expectedTrace && expectedErr) {
+        std::cerr << "conformance_check: " << programPath << " has both a .trace and a .err expectation\n";
+        return 2;
+    }
+    if (expectedTrace && directives.args.front() != "run") {
+        std::cerr << "conformance_check: " << programPath << " has a .trace expectation but its command is not 'run'\n";
         return 2;
     }
     std::optional<json> expectedJson;
@@ -354,9 +412,13 @@ int checkOne(const std::string& strun, const std::string& programPath) {
 
     std::vector<std::string> argv{strun};
     argv.insert(argv.end(), directives.args.begin(), directives.args.end());
-    bool hasDump = false;
-    for (const auto& a : directives.args) hasDump = hasDump || a == "--dump";
+    bool hasDump = false, hasTrace = false;
+    for (const auto& a : directives.args) {
+        hasDump = hasDump || a == "--dump";
+        hasTrace = hasTrace || a == "--trace";
+    }
     if (directives.args.front() == "run" && !hasDump) argv.push_back("--dump");
+    if (expectedTrace && !hasTrace) argv.push_back("--trace");
     argv.push_back(programPath);
 
     const RunResult run = runProgram(argv);
@@ -388,6 +450,11 @@ int checkOne(const std::string& strun, const std::string& programPath) {
             matchSubset(*expectedJson, actual, "", mismatches);
             for (const auto& m : mismatches) failures.push_back("dump mismatch at " + m);
         }
+    }
+    if (ranToEnd && expectedTrace) {
+        const std::string difference =
+            traceDifference(expectedTraceLines(*expectedTrace), actualTraceLines(run.err));
+        if (!difference.empty()) failures.push_back(difference);
     }
     if (ranToEnd && expectedErr) {
         if (!run.out.empty()) failures.push_back("stdout must be empty for a program that does not compile");
@@ -471,6 +538,32 @@ int selfTest() {
     expect(missingPatterns(":9:1: error:", err).size() == 1, "warning is not an error");
 
     {
+        const std::string stderrText =
+            "x.st:3:1: warning: unused\nT#0s Fast release\r\nT#0s Fast start\n  T#1ms not a trace line\nT#2us Fast end\n";
+        const auto actualTrace = actualTraceLines(stderrText);
+        expect(actualTrace == std::vector<std::string>{"T#0s Fast release", "T#0s Fast start", "T#2us Fast end"},
+               "trace lines are the stderr lines starting with T#, CR stripped");
+        expect(expectedTraceLines("T#0s Fast release\nT#0s Fast start\nT#2us Fast end\n\n\n") == actualTrace,
+               "trailing blank lines of a .trace file are ignored");
+        expect(traceDifference(actualTrace, actualTrace).empty(), "equal traces match");
+        const auto wrongTime = traceDifference({"T#0s Fast release", "T#0s Fast start", "T#3us Fast end"}, actualTrace);
+        expect(wrongTime.find("differs at line 3") != std::string::npos &&
+                   wrongTime.find("expected 3: T#3us Fast end") != std::string::npos &&
+                   wrongTime.find("actual   3: T#2us Fast end") != std::string::npos &&
+                   wrongTime.find("1   T#0s Fast release") != std::string::npos,
+               "first differing line shown with its context");
+        const auto tooShort = traceDifference({"T#0s Fast release", "T#0s Fast start"}, actualTrace);
+        expect(tooShort.find("expected 3: <end of trace>") != std::string::npos, "extra actual line reported");
+        const auto tooLong = traceDifference({"T#0s Fast release", "T#0s Fast start", "T#2us Fast end", "T#9us X end"},
+                                             actualTrace);
+        expect(tooLong.find("actual   4: <end of trace>") != std::string::npos, "missing actual line reported");
+        expect(!traceDifference({"T#0s Fast start", "T#0s Fast release", "T#2us Fast end"}, actualTrace).empty(),
+               "order matters");
+        expect(!traceDifference({"T#0s Fast release ", "T#0s Fast start", "T#2us Fast end"}, actualTrace).empty(),
+               "trailing space matters");
+        expect(!traceDifference({}, actualTrace).empty(), "an empty expectation means no trace at all");
+    }
+    {
         Directives d;
         expect(!parseDirectives("(* strun-test\n   args: run --virtual --cycles 3\n   exit: 3\n*)\nPROGRAM P END_PROGRAM",
                                 d) && d.args.size() == 4 && d.args[3] == "3" && d.exit == 3,
@@ -490,6 +583,42 @@ int selfTest() {
         const RunResult missing = runProgram({"/nonexistent/strun"});
         expect(missing.exitCode == 127 && missing.err.find("exec") != std::string::npos,
                "missing binary reported");
+    }
+    {
+        // End to end with a fake strun: --trace must be added for a .trace expectation.
+        char dirTemplate[] = "/tmp/conformance_selftest_XXXXXX";
+        if (const char* dir = mkdtemp(dirTemplate)) {
+            const std::string d = dir;
+            auto write = [](const std::string& path, const std::string& text) { std::ofstream(path) << text; };
+            write(d + "/fake_strun", "#!/bin/sh\ncase \"$*\" in *--trace*) echo 'T#0s Main start' >&2;; esac\n"
+                                     "echo 'x.st:1:1: warning: w' >&2\necho '{\"state\":\"RUN\"}'\n");
+            chmod((d + "/fake_strun").c_str(), 0755);
+            write(d + "/good.st", "PROGRAM Main END_PROGRAM\n");
+            write(d + "/good.trace", "T#0s Main start\n");
+            write(d + "/bad.st", "PROGRAM Main END_PROGRAM\n");
+            write(d + "/bad.trace", "T#0s Main start\nT#1us Main end\n");
+            write(d + "/both.st", "PROGRAM Main END_PROGRAM\n");
+            write(d + "/both.trace", "T#0s Main start\n");
+            write(d + "/both.err", "error\n");
+            std::ostringstream quiet;
+            auto* saved = std::cout.rdbuf(quiet.rdbuf());
+            auto* savedErr = std::cerr.rdbuf(quiet.rdbuf());
+            const int good = checkOne(d + "/fake_strun", d + "/good.st");
+            const int bad = checkOne(d + "/fake_strun", d + "/bad.st");
+            const int both = checkOne(d + "/fake_strun", d + "/both.st");
+            std::cout.rdbuf(saved);
+            std::cerr.rdbuf(savedErr);
+            expect(good == 0, "a matching .trace passes (--trace added to the command)");
+            expect(bad == 1 && quiet.str().find("expected 2: T#1us Main end") != std::string::npos,
+                   "a differing .trace fails and names the line");
+            expect(both == 2, ".trace together with .err is a malformed test");
+            for (const char* f : {"fake_strun", "good.st", "good.trace", "bad.st", "bad.trace", "both.st", "both.trace",
+                                  "both.err"})
+                unlink((d + "/" + f).c_str());
+            rmdir(dir);
+        } else {
+            expect(false, "cannot create a temporary directory");
+        }
     }
     std::cout << (failed == 0 ? "self-test passed\n" : "self-test failed\n");
     return failed == 0 ? 0 : 1;

@@ -37,6 +37,30 @@ STRUN_INT_BINOP(OrI, a | b)
 STRUN_INT_BINOP(XorI, a ^ b)
 #undef STRUN_INT_BINOP
 
+// The same operators with a constant right operand (x + 1, i MOD 7, n * 2):
+// one virtual call less, and / and MOD skip the zero and -1 checks the
+// checker already did.
+#define STRUN_INT_BINOP_CONST(NAME, EXPR)                                                     \
+    template <class T>                                                                        \
+    struct NAME final : Expr {                                                                \
+        Expr* l;                                                                              \
+        T b;                                                                                  \
+        NAME(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}                              \
+        int64_t i(Ctx& c) override {                                                          \
+            T a = static_cast<T>(l->i(c));                                                    \
+            return wrapI(static_cast<T>(EXPR));                                               \
+        }                                                                                     \
+    };
+STRUN_INT_BINOP_CONST(AddIK, static_cast<U<T>>(static_cast<U<T>>(a) + static_cast<U<T>>(b)))
+STRUN_INT_BINOP_CONST(SubIK, static_cast<U<T>>(static_cast<U<T>>(a) - static_cast<U<T>>(b)))
+STRUN_INT_BINOP_CONST(MulIK, static_cast<U<T>>(static_cast<U<T>>(a) * static_cast<U<T>>(b)))
+STRUN_INT_BINOP_CONST(DivIK, a / b)  // b is neither 0 nor -1
+STRUN_INT_BINOP_CONST(ModIK, a % b)  // b is neither 0 nor -1
+STRUN_INT_BINOP_CONST(AndIK, a & b)
+STRUN_INT_BINOP_CONST(OrIK, a | b)
+STRUN_INT_BINOP_CONST(XorIK, a ^ b)
+#undef STRUN_INT_BINOP_CONST
+
 // Reports DIV_BY_ZERO for the running task (defined in faults.cpp).
 void reportDivByZero(Ctx& c, const Site& site);
 
@@ -150,6 +174,14 @@ struct CmpI final : Expr {
     Expr *l, *r;
     CmpI(Expr* a, Expr* b) : l(a), r(b) {}
     int64_t i(Ctx& c) override { return compare<T, OP>(static_cast<T>(l->i(c)), static_cast<T>(r->i(c))); }
+};
+
+template <class T, CmpOp OP>
+struct CmpIK final : Expr {
+    Expr* l;
+    T b;
+    CmpIK(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}
+    int64_t i(Ctx& c) override { return compare<T, OP>(static_cast<T>(l->i(c)), b); }
 };
 
 template <class T, CmpOp OP>

@@ -201,7 +201,7 @@ struct ForStmt final : Stmt {
                 if (f != Flow::Continue) return f;
             }
             if (tickAborts(c)) return Flow::Abort;
-            p = var->addr(c);
+            // The control variable is a plain variable: its address does not move.
             storeAs<T>(p, static_cast<T>(static_cast<U<T>>(loadAs<T>(p)) + static_cast<U<T>>(step)));
         }
         return Flow::Next;

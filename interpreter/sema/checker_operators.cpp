@@ -21,7 +21,14 @@ template <CmpOp OP>
 struct CmpIntBind {
     template <class T>
     using I = exec::CmpI<T, OP>;
+    template <class T>
+    using IK = exec::CmpIK<T, OP>;
 };
+
+template <CmpOp OP>
+exec::Expr* cmpConstNode(exec::NodePool& pool, Rep rep, exec::Expr* a, int64_t k) {
+    return makeIntByRep<CmpIntBind<OP>::template IK>(pool, rep, a, k);
+}
 
 template <CmpOp OP>
 exec::Expr* cmpNode(exec::NodePool& pool, const Type* t, exec::Expr* a, exec::Expr* b) {
@@ -271,6 +278,24 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
     r.type = t;
     Rep rep = repOf(t);
     bool real = isReal(t->kind);
+    if (!real && y.isConst && !x.isConst) {
+        int64_t k = y.constInt;
+        bool safeDivisor = k != 0 && !(k == -1 && isSignedInt(integerView(t->kind)));
+        exec::Expr* n = nullptr;
+        switch (op) {
+            case ast::Op::Add: n = makeIntByRep<exec::AddIK>(pool(), rep, x.node, k); break;
+            case ast::Op::Sub: n = makeIntByRep<exec::SubIK>(pool(), rep, x.node, k); break;
+            case ast::Op::Mul: n = makeIntByRep<exec::MulIK>(pool(), rep, x.node, k); break;
+            case ast::Op::Div: if (safeDivisor) n = makeIntByRep<exec::DivIK>(pool(), rep, x.node, k); break;
+            case ast::Op::Mod: if (safeDivisor) n = makeIntByRep<exec::ModIK>(pool(), rep, x.node, k); break;
+            default: break;
+        }
+        if (n) {
+            r.node = n;
+            r.node->type = t;
+            return r;
+        }
+    }
     switch (op) {
         case ast::Op::Add: r.node = real ? makeRealByRep<exec::AddF>(pool(), rep, x.node, y.node) : intOp<exec::AddI>(pool(), rep, x.node, y.node); break;
         case ast::Op::Sub: r.node = real ? makeRealByRep<exec::SubF>(pool(), rep, x.node, y.node) : intOp<exec::SubI>(pool(), rep, x.node, y.node); break;
@@ -316,6 +341,19 @@ Checked Checker::makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& l
     if (isStringType(t->kind) && a.type->kind != b.type->kind) {
         error(loc, fmt::format("cannot compare {} with {}", typeName(a.type), typeName(b.type)));
         return bad(loc);
+    }
+    if (isIntRep(t) && y.isConst && !x.isConst) {
+        Rep rep = repOf(t);
+        switch (cmpOpOf(op)) {
+            case CmpOp::Eq: r.node = cmpConstNode<CmpOp::Eq>(pool(), rep, x.node, y.constInt); break;
+            case CmpOp::Ne: r.node = cmpConstNode<CmpOp::Ne>(pool(), rep, x.node, y.constInt); break;
+            case CmpOp::Lt: r.node = cmpConstNode<CmpOp::Lt>(pool(), rep, x.node, y.constInt); break;
+            case CmpOp::Le: r.node = cmpConstNode<CmpOp::Le>(pool(), rep, x.node, y.constInt); break;
+            case CmpOp::Gt: r.node = cmpConstNode<CmpOp::Gt>(pool(), rep, x.node, y.constInt); break;
+            case CmpOp::Ge: r.node = cmpConstNode<CmpOp::Ge>(pool(), rep, x.node, y.constInt); break;
+        }
+        r.node->type = r.type;
+        return r;
     }
     switch (cmpOpOf(op)) {
         case CmpOp::Eq: r.node = cmpNode<CmpOp::Eq>(pool(), t, x.node, y.node); break;
