@@ -300,6 +300,11 @@ void registerClock(Checker& ck) {
         if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);
         return makeResult(ck, ck.pool().make<PlcTimeNsNode>(), ck.types().elementary(TK::LTime), call, a, false);
     });
+    ck.addBuiltin("__PLC_LTIME_MS", [](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);
+        return makeResult(ck, ck.pool().make<PlcTimeWholeMsNode>(), ck.types().elementary(TK::LTime), call, a, false);
+    });
 }
 
 }  // namespace strun::stdlib::bind

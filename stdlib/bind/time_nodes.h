@@ -143,4 +143,12 @@ struct PlcTimeNsNode final : Expr {
     int64_t i(Ctx& c) override { return c.m->handler->currentTime(); }
 };
 
+// LTIME floored to whole milliseconds (RTC: immune to the statement-cost
+// jitter of the virtual clock inside one task activation).
+struct PlcTimeWholeMsNode final : Expr {
+    int64_t i(Ctx& c) override {
+        return stdlib::floorDiv(c.m->handler->currentTime(), stdlib::kNsPerMs) * stdlib::kNsPerMs;
+    }
+};
+
 }  // namespace strun::stdlib::bind
