@@ -334,6 +334,11 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
             const ast::Expr& callee = *s.expr->kids[0];
             // A function-block instance called as a statement?
             bool maybeFb = callee.kind != ast::ExprKind::Name || lookupVar(upper(callee.name)) != nullptr;
+            if (callee.kind == ast::ExprKind::Name) {
+                // CODESYS: a PROGRAM called from another POU runs its (single) instance.
+                for (const auto& prog : model_.programs)
+                    if (upper(prog.name) == upper(callee.name)) maybeFb = true;
+            }
             if (callee.kind == ast::ExprKind::Name && pou_ && pou_->result && upper(callee.name) == upper(pou_->result->name)) maybeFb = false;
             if (maybeFb) {
                 bool isMethod = false;
