@@ -1,5 +1,6 @@
 // conformance_check: runs one conformance program through the strun CLI and
-// compares the outcome with its expectation files (format: tests/conformance/README.md).
+// compares the outcome with its expectation files (.json dump subset, .err stderr patterns,
+// .trace exact --trace lines; format: tests/conformance/README.md).
 //
 //   conformance_check <strun-binary> <file.st>   exit 0 = pass, 1 = fail, 2 = bad usage/test
 //   conformance_check --self-test                checks the comparison logic itself

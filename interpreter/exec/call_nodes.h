@@ -169,6 +169,55 @@ struct CallFbStmt final : Stmt {
     }
 };
 
+// ARRAY[*] parameters (VAR_IN_OUT): the slot holds a descriptor
+// { address, lo0, hi0, lo1, hi1, ... } filled in at the call.
+struct BindArrayDesc final : Stmt {
+    Expr* slot;        // place of the descriptor
+    Expr* place;       // the caller's array
+    Expr* sourceDesc;  // the caller's own ARRAY[*] descriptor, or null (then `bounds`)
+    std::vector<int64_t> bounds;
+    Flow exec(Ctx& c) override {
+        uint8_t* d = slot->addr(c);
+        if (sourceDesc) {
+            std::memmove(d, sourceDesc->addr(c), 8 + 16 * (bounds.size() / 2));
+            return Flow::Next;
+        }
+        storeAs<uint8_t*>(d, place->addr(c));
+        for (size_t k = 0; k < bounds.size(); ++k) storeAs<int64_t>(d + 8 + 8 * k, bounds[k]);
+        return Flow::Next;
+    }
+};
+
+// a[i, j] on an ARRAY[*] parameter: bounds and strides from the descriptor.
+struct FlexIndexPlace final : Expr {
+    Expr* desc;
+    std::vector<Expr*> index;
+    uint64_t elemSize = 0;
+    Site site;
+    uint8_t* addr(Ctx& c) override {
+        uint8_t* d = desc->addr(c);
+        size_t n = index.size();
+        uint64_t offset = 0;
+        for (size_t k = 0; k < n; ++k) {
+            int64_t lo = loadAs<int64_t>(d + 8 + 16 * k), hi = loadAs<int64_t>(d + 16 + 16 * k);
+            int64_t v = index[k]->i(c);
+            if (__builtin_expect(v < lo || v > hi, 0)) return outOfRange(c, v, lo, hi);
+            offset = offset * static_cast<uint64_t>(hi - lo + 1) + static_cast<uint64_t>(v - lo);
+        }
+        uint8_t* base = loadAs<uint8_t*>(d);
+        return base + offset * elemSize;
+    }
+    uint8_t* outOfRange(Ctx& c, int64_t v, int64_t lo, int64_t hi);
+};
+
+// LOWER_BOUND / UPPER_BOUND of an ARRAY[*] parameter.
+struct FlexBound final : Expr {
+    Expr* desc;
+    size_t offset;  // 8 + 16 * dim (+ 8 for the upper bound)
+    FlexBound(Expr* d, size_t o) : desc(d), offset(o) {}
+    int64_t i(Ctx& c) override { return loadAs<int64_t>(desc->addr(c) + offset); }
+};
+
 // THIS: the address of the current instance, as a pointer value.
 struct SelfAddress final : Expr {
     int64_t i(Ctx& c) override { return static_cast<int64_t>(reinterpret_cast<intptr_t>(c.self)); }

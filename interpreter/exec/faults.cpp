@@ -43,6 +43,11 @@ uint8_t* Index1Place::outOfRange(Ctx& c, int64_t value) {
     return sink(c);
 }
 
+uint8_t* FlexIndexPlace::outOfRange(Ctx& c, int64_t value, int64_t lo, int64_t hi) {
+    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(site), site.line, fmt::format("subscript {} outside {}..{}", value, lo, hi));
+    return sink(c);
+}
+
 uint8_t* RefSlotPlace::nullTarget(Ctx& c) {
     c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line, "reference is not bound");
     return sink(c);

@@ -197,6 +197,36 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             size.untypedInt = true;
             return size;
         }
+        if (key == "LOWER_BOUND" || key == "UPPER_BOUND") {
+            if (e.args.size() != 2 || !e.args[0].value || !e.args[1].value) {
+                error(e.loc, fmt::format("{} takes an array and a dimension number", key));
+                return bad(e.loc);
+            }
+            Checked a = checkExpr(*e.args[0].value);
+            int64_t dim = 0;
+            if (!a.ok || !constIntExpr(e.args[1].value.get(), dim, "the dimension")) return bad(e.loc);
+            if (a.type->kind != TK::Array) {
+                error(e.args[0].value->loc, fmt::format("{} needs an array, not {}", key, typeName(a.type)));
+                return bad(e.loc);
+            }
+            if (dim < 1 || static_cast<size_t>(dim) > a.type->dims.size()) {
+                error(e.args[1].value->loc, fmt::format("the array has {} dimension(s), not {}", a.type->dims.size(), dim));
+                return bad(e.loc);
+            }
+            const bool upperBound = key == "UPPER_BOUND";
+            if (!a.type->flexible) {
+                const auto& d = a.type->dims[static_cast<size_t>(dim - 1)];
+                return constInt(upperBound ? d.hi : d.lo, types().elementary(TK::DInt), e.loc);
+            }
+            Checked r;
+            r.ok = true;
+            r.loc = e.loc;
+            r.type = types().elementary(TK::DInt);
+            size_t off = 8 + 16 * static_cast<size_t>(dim - 1) + (upperBound ? 8 : 0);
+            r.node = pool().make<exec::ConvIntInt<int32_t>>(pool().make<exec::FlexBound>(a.flexDesc, off));
+            r.node->type = r.type;
+            return r;
+        }
         if (key == "__ISVALIDREF") {
             if (e.args.size() != 1 || !e.args[0].value) {
                 error(e.loc, "__ISVALIDREF takes one reference");
@@ -270,6 +300,36 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
     return bad(e.loc);
 }
 
+// Binds a VAR_IN_OUT parameter `p` to the argument `v`: its address, or for
+// ARRAY[*] its address and bounds.
+exec::Stmt* Checker::bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc) {
+    if (!v.isPlace || (v.node && v.node->bitIndex() >= 0)) {
+        error(loc, fmt::format("VAR_IN_OUT '{}' needs a variable, not an expression", p->name));
+        return nullptr;
+    }
+    if (p->type->kind == TK::Array && p->type->flexible) {
+        const Type* a = v.type;
+        if (a->kind != TK::Array || a->dims.size() != p->type->dims.size() || !sameType(a->elem, p->type->elem)) {
+            error(loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}", p->name, typeName(p->type), typeName(a)));
+            return nullptr;
+        }
+        auto* bind = pool().make<exec::BindArrayDesc>();
+        bind->slot = slot;
+        bind->place = v.node;
+        bind->sourceDesc = a->flexible ? v.flexDesc : nullptr;
+        for (const auto& d : a->dims) {
+            bind->bounds.push_back(d.lo);
+            bind->bounds.push_back(d.hi);
+        }
+        return bind;
+    }
+    if (!sameType(v.type, p->type) && !(isStringType(v.type->kind) && v.type->kind == p->type->kind)) {
+        error(loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}", p->name, typeName(p->type), typeName(v.type)));
+        return nullptr;
+    }
+    return pool().make<exec::BindAddress>(slot, v.node);
+}
+
 Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* instance) {
     layoutPou(fn);
     std::vector<ArgBinding> bindings;
@@ -305,18 +365,9 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
         Checked v = checkExpr(*b.arg->value);
         if (!v.ok) { ok = false; continue; }
         if (p->byRef) {
-            if (!v.isPlace) {
-                error(b.arg->value->loc, fmt::format("VAR_IN_OUT '{}' needs a variable, not an expression", p->name));
-                ok = false;
-                continue;
-            }
-            if (!sameType(v.type, p->type) && !(isStringType(v.type->kind) && v.type->kind == p->type->kind)) {
-                error(b.arg->value->loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}", p->name, typeName(p->type), typeName(v.type)));
-                ok = false;
-                continue;
-            }
             exec::Expr* slot = makeByRep<exec::PendingVar>(pool(), Rep::Void, p->offset);
-            call->inputs.push_back(pool().make<exec::BindAddress>(slot, v.node));
+            if (exec::Stmt* bind = bindInOut(p, v, slot, b.arg->value->loc)) call->inputs.push_back(bind);
+            else ok = false;
             continue;
         }
         Checked cv = coerce(v, p->type, b.arg->value->loc, fmt::format("argument '{}'", p->name).c_str());
@@ -381,19 +432,10 @@ exec::Stmt* Checker::callFunctionBlock(Checked inst, const ast::Expr& e) {
         Checked v = checkExpr(*b.arg->value);
         if (!v.ok) { ok = false; continue; }
         if (p->byRef) {
-            if (!v.isPlace) {
-                error(b.arg->value->loc, fmt::format("VAR_IN_OUT '{}' needs a variable, not an expression", p->name));
-                ok = false;
-                continue;
-            }
-            if (!sameType(v.type, p->type) && !(isStringType(v.type->kind) && v.type->kind == p->type->kind)) {
-                error(b.arg->value->loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}", p->name, typeName(p->type), typeName(v.type)));
-                ok = false;
-                continue;
-            }
             const Field* f = inst.type->findField(upper(p->name));
             exec::Expr* slot = pool().make<exec::OffsetPlace>(inst.node, f ? f->offset : 0);
-            call->inputs.push_back(pool().make<exec::BindAddress>(slot, v.node));
+            if (exec::Stmt* bind = bindInOut(p, v, slot, b.arg->value->loc)) call->inputs.push_back(bind);
+            else ok = false;
             continue;
         }
         member.readOnly = false;

@@ -535,7 +535,8 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 if (t->kind == TK::Array && t->flexible && block.section != ast::VarSection::InOut)
                     error(loc, "ARRAY[*] is only allowed in VAR_IN_OUT");
                 const bool byRef = block.section == ast::VarSection::InOut;
-                const uint32_t size = byRef ? 8 : t->size;
+                // ARRAY[*]: address and bounds (docs/decisions/0077); other in-outs: an address.
+                const uint32_t size = byRef ? (t->flexible ? 8 + 16 * static_cast<uint32_t>(t->dims.size()) : 8) : t->size;
                 const uint32_t align = byRef ? 8 : t->align;
                 if (!decl.address.empty() && decl.address.find('*') == std::string::npos) {
                     int bit = -1;

@@ -326,7 +326,11 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
     Checked::Direct d = v->storage == Storage::Self ? Checked::Direct::Self
                         : v->storage == Storage::Frame ? Checked::Direct::Frame
                                                        : Checked::Direct::Abs;
-    if (v->byRef) {
+    if (v->byRef && v->type->flexible) {
+        exec::Expr* slot = directNode(pool(), d, v->offset, v->abs, types().elementary(TK::Void));
+        c.flexDesc = slot;
+        c.node = pool().make<exec::RefSlotPlace>(slot, site(loc));
+    } else if (v->byRef) {
         exec::Expr* slot = directNode(pool(), d, v->offset, v->abs, types().elementary(TK::Void));
         exec::Expr* ref = pool().make<exec::RefSlotPlace>(slot, site(loc));
         c.node = loadFrom(ref, v->type);
@@ -561,8 +565,38 @@ Checked Checker::checkIndex(const ast::Expr& e) {
     }
     size_t nsub = e.kids.size() - 1;
     if (t->flexible) {
-        error(e.loc, "subscripts on ARRAY[*] are not supported yet");
-        return bad(e.loc);
+        if (!base.flexDesc) {
+            error(e.loc, "ARRAY[*] is only usable as a VAR_IN_OUT parameter");
+            return bad(e.loc);
+        }
+        if (e.kids.size() - 1 != t->dims.size()) {
+            error(e.loc, fmt::format("{} subscript(s) given, the array has {} dimension(s)", e.kids.size() - 1, t->dims.size()));
+            return bad(e.loc);
+        }
+        auto* n = pool().make<exec::FlexIndexPlace>();
+        n->desc = base.flexDesc;
+        n->elemSize = t->elem->size;
+        n->site = site(e.loc);
+        Checked c;
+        c.ok = true;
+        c.loc = e.loc;
+        c.type = t->elem;
+        c.isPlace = true;
+        c.hasCall = base.hasCall;
+        for (size_t k = 1; k < e.kids.size(); ++k) {
+            Checked ix = checkExpr(*e.kids[k]);
+            if (!ix.ok) return bad(e.loc);
+            if (!(isInteger(ix.type->kind) || isBitString(ix.type->kind) || ix.untypedInt)) {
+                error(e.kids[k]->loc, fmt::format("an array subscript must be an integer, not {}", typeName(ix.type)));
+                return bad(e.loc);
+            }
+            c.hasCall = c.hasCall || ix.hasCall;
+            n->index.push_back(settle(ix).node);
+        }
+        if (t->elem->kind == TK::FunctionBlock) c.fbInstanceOf = t->elem->pou;
+        c.node = loadFrom(n, c.type);
+        c.node->type = c.type;
+        return c;
     }
     if (nsub != t->dims.size()) {
         error(e.loc, fmt::format("{} subscript(s) given, the array has {} dimension(s)", nsub, t->dims.size()));

@@ -41,15 +41,15 @@ TEST_CASE("a method call runs on the instance and changes its state", "[eval][oo
 FUNCTION_BLOCK Counter
 VAR_OUTPUT value : INT; END_VAR
 METHOD Add : INT
-VAR_INPUT by : INT; END_VAR
-value := value + by;
+VAR_INPUT amount : INT; END_VAR
+value := value + amount;
 Add := value;
 END_METHOD
 END_FUNCTION_BLOCK
 PROGRAM Main
 VAR c1, c2 : Counter; last : INT; END_VAR
 c1.Add(3);
-last := c1.Add(by := 4);
+last := c1.Add(amount := 4);
 c2.Add(1);
 END_PROGRAM
 )", 2);
@@ -164,16 +164,16 @@ END_PROGRAM
 TEST_CASE("properties run their GET and SET accessors", "[eval][oop]") {
     auto r = runSt(R"(
 FUNCTION_BLOCK Tank
-VAR level : INT; writes : INT; END_VAR
+VAR stored : INT; writes : INT; END_VAR
 VAR_OUTPUT shown : INT; END_VAR
 PROPERTY Level : INT
 GET
-    Level := level;
+    Level := stored;
 END_GET
 SET
     writes := writes + 1;
-    IF Level > 100 THEN level := 100; ELSE level := Level; END_IF;
-    shown := level;
+    IF Level > 100 THEN stored := 100; ELSE stored := Level; END_IF;
+    shown := stored;
 END_SET
 END_PROPERTY
 END_FUNCTION_BLOCK

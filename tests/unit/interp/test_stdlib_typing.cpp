@@ -12,7 +12,7 @@ namespace {
 // Compiles `body` in PROGRAM Main with a standard set of variables.
 std::unique_ptr<Compiled> check(const std::string& body) {
     return compileMain(
-        "i : INT; si : SINT; d : DINT; l : LINT; u : UINT; r : REAL; lr : LREAL; b : BOOL; by : BYTE; w : WORD;"
+        "i : INT; si : SINT; d : DINT; l : LINT; u : UINT; r : REAL; lr : LREAL; b : BOOL; bt : BYTE; w : WORD;"
         " t : TIME; lt : LTIME; s : STRING; ws : WSTRING; dt1 : DT; tod1 : TOD; d1 : DATE;",
         body);
 }
@@ -46,9 +46,12 @@ TEST_CASE("ANY_REAL functions follow the implicit-conversion lattice", "[stdlib]
 
 TEST_CASE("calls on literals fold to untyped constants", "[stdlib][typing]") {
     // An untyped result fits any variable its value fits, like an operator on literals.
-    requireOk("si := MAX(1, 2); by := ABS(-7); r := SQRT(2.0); u := ADD(200, 100);");
+    requireOk("si := MAX(1, 2); bt := ABS(-7); r := SQRT(2.0); u := ADD(200, 100);");
     requireError("si := MAX(1, 200);", "outside the range of SINT");
-    requireOk("si := SEL(b, 1, 2); by := MUX(i, 1, 2, 255);");  // non-constant selector: smallest fitting type
+    // Non-constant selector over literals: the smallest fitting type (USINT.. for
+    // non-negative values), which widens to every wider integer and to REAL.
+    requireOk("i := SEL(b, 1, 2); bt := MUX(i, 1, 2, 255); u := SEL(b, 0, 65535); r := SEL(b, 1, 2); si := SEL(b, -1, 2);");
+    requireError("si := SEL(b, 1, 2);", "cannot convert USINT to SINT");
 }
 
 TEST_CASE("string functions type their inputs and results", "[stdlib][typing]") {
@@ -78,7 +81,7 @@ TEST_CASE("time functions accept only the standard combinations", "[stdlib][typi
 
 TEST_CASE("conversions through STRING resolve both types", "[stdlib][typing]") {
     requireOk("s := INT_TO_STRING(i); i := STRING_TO_INT(s); ws := TO_WSTRING(r); t := WSTRING_TO_TIME(ws);");
-    requireOk("by := USINT_TO_BCD_BYTE(25); i := BYTE_BCD_TO_INT(by); b := IS_VALID(r); w := TO_BIG_ENDIAN(w);");
+    requireOk("bt := USINT_TO_BCD_BYTE(25); i := BYTE_BCD_TO_INT(bt); b := IS_VALID(r); w := TO_BIG_ENDIAN(w);");
     requireError("i := STRING_TO_INT(ws);", "the input must be STRING");
     requireError("s := INT_TO_STRING(d);", "cannot convert DINT to INT");
 }
