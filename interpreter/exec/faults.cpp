@@ -37,6 +37,12 @@ uint8_t* IndexPlace::outOfRange(Ctx& c, const Dim& d, int64_t value) {
     return sink(c);
 }
 
+uint8_t* indexFault(Ctx& c, const Site& site, int64_t value, int64_t lo, int64_t count) {
+    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(site), site.line,
+                          fmt::format("subscript {} outside {}..{}", value, lo, lo + count - 1));
+    return sink(c);
+}
+
 uint8_t* Index1Place::outOfRange(Ctx& c, int64_t value) {
     c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(site), site.line,
                           fmt::format("subscript {} outside {}..{}", value, lo, lo + count - 1));

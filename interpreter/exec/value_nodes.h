@@ -182,6 +182,38 @@ struct Index1Place final : Expr {
     uint8_t* outOfRange(Ctx& c, int64_t value);
 };
 
+// Reports ARRAY_BOUNDS and returns the zeroed fault sink (faults.cpp).
+uint8_t* indexFault(Ctx& c, const Site& site, int64_t value, int64_t lo, int64_t count);
+
+// a[i] on an array variable at a known place (instance, frame or absolute):
+// the element address and its load in one node, the hot path of array code.
+enum class BaseKind : uint8_t { Self, Frame, Abs };
+struct Index1Fields {
+    uint32_t off = 0;
+    uint8_t* abs = nullptr;
+    Expr* index = nullptr;
+    int64_t lo = 0, count = 0;
+    uint64_t stride = 0;
+    Site site;
+};
+template <class T, BaseKind B>
+struct Index1Var final : Expr, Index1Fields {
+    uint8_t* addr(Ctx& c) override {
+        int64_t k = index->i(c) - lo;
+        if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return indexFault(c, site, k + lo, lo, count);
+        uint8_t* base = B == BaseKind::Self ? c.self + off : B == BaseKind::Frame ? c.frame + off : abs;
+        return base + static_cast<uint64_t>(k) * stride;
+    }
+    int64_t i(Ctx& c) override {
+        if constexpr (std::is_void_v<T>) return 0;
+        else return toI(loadAs<T>(addr(c)));
+    }
+    double f(Ctx& c) override {
+        if constexpr (std::is_void_v<T>) return 0;
+        else return toF(loadAs<T>(addr(c)));
+    }
+};
+
 // x.3 — one bit of an integer / bit-string place; also BOOL AT %IX0.3.
 template <class T>
 struct BitPlace final : Expr {

@@ -125,6 +125,7 @@ private:
     Checked checkConversionCall(const std::string& upperName, const ast::Expr& e, bool& handled);
     Checked callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* instance);
     exec::Stmt* bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc);
+    exec::Stmt* bindReference(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc);
     exec::Stmt* callFunctionBlock(Checked inst, const ast::Expr& e);
     Checked varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside);
     Checked memberOf(Checked base, const std::string& member, const ast::Loc& loc);

@@ -293,7 +293,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         if ((base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou) {
             if (PouInfo* m = findMethod(base.type->pou, upper(callee.name))) return methodCall(base, m, e);
         }
-        error(callee.loc, fmt::format("'{}' is not a method of {}", callee.name, typeName(base.type)));
+        error(callee.nameLoc.line ? callee.nameLoc : callee.loc, fmt::format("'{}' is not a method of {}", callee.name, typeName(base.type)));
         return bad(e.loc);
     }
     error(e.loc, "this cannot be called");
@@ -328,6 +328,15 @@ exec::Stmt* Checker::bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, co
         return nullptr;
     }
     return pool().make<exec::BindAddress>(slot, v.node);
+}
+
+exec::Stmt* Checker::bindReference(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc) {
+    if (v.type->kind == TK::Reference && sameType(v.type, p->type)) return storeTo(slot, types().elementary(TK::LWord), v.node);
+    if (!v.isPlace || !sameType(v.type, p->type->target)) {
+        error(loc, fmt::format("'{}' is {}: it needs a variable of type {}", p->name, typeName(p->type), typeName(p->type->target)));
+        return nullptr;
+    }
+    return storeTo(slot, types().elementary(TK::LWord), pool().make<exec::AddressOf>(v.node));
 }
 
 Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* instance) {
@@ -370,9 +379,15 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
             else ok = false;
             continue;
         }
+        exec::Expr* place = makeByRep<exec::PendingVar>(pool(), isAggregate(p->type) ? Rep::Void : repOf(p->type), p->offset);
+        if (p->type->kind == TK::Reference) {
+            // A REFERENCE TO input is bound to the argument (like REF=).
+            if (exec::Stmt* bind = bindReference(p, v, place, b.arg->value->loc)) call->inputs.push_back(bind);
+            else ok = false;
+            continue;
+        }
         Checked cv = coerce(v, p->type, b.arg->value->loc, fmt::format("argument '{}'", p->name).c_str());
         if (!cv.ok) { ok = false; continue; }
-        exec::Expr* place = makeByRep<exec::PendingVar>(pool(), isAggregate(p->type) ? Rep::Void : repOf(p->type), p->offset);
         call->inputs.push_back(storeTo(place, p->type, cv.node));
     }
     for (VarSym* p : fn->params)
@@ -435,6 +450,16 @@ exec::Stmt* Checker::callFunctionBlock(Checked inst, const ast::Expr& e) {
             const Field* f = inst.type->findField(upper(p->name));
             exec::Expr* slot = pool().make<exec::OffsetPlace>(inst.node, f ? f->offset : 0);
             if (exec::Stmt* bind = bindInOut(p, v, slot, b.arg->value->loc)) call->inputs.push_back(bind);
+            else ok = false;
+            continue;
+        }
+        if (p->type->kind == TK::Reference) {
+            bool saved = suppressAutoDeref_;
+            suppressAutoDeref_ = true;
+            Checked raw = memberOf(inst, p->name, b.arg->loc);
+            suppressAutoDeref_ = saved;
+            if (!raw.ok) { ok = false; continue; }
+            if (exec::Stmt* bind = bindReference(p, v, raw.node, b.arg->value->loc)) call->inputs.push_back(bind);
             else ok = false;
             continue;
         }

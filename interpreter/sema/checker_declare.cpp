@@ -11,6 +11,7 @@
 namespace strun::sema {
 
 namespace {
+bool byRefSection(ast::VarSection s) { return s == ast::VarSection::InOut; }
 uint32_t alignUp(uint32_t v, uint32_t a) { return a <= 1 ? v : (v + a - 1) / a * a; }
 constexpr uint32_t kMaxStorage = 256u * 1024u * 1024u;  // per block: keeps absurd declarations from exhausting memory
 constexpr uint32_t kFbHeader = 8;                        // every FB instance starts with its class pointer
@@ -532,6 +533,8 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                     pou->ownedVars.push_back(std::move(v));
                     continue;
                 }
+                if (t->kind == TK::FunctionBlock && t->pou && t->pou->ast->abstract && !byRefSection(block.section))
+                    error(decl.type ? decl.type->loc : loc, fmt::format("'{}' is ABSTRACT: it cannot have instances", t->name));
                 if (t->kind == TK::Array && t->flexible && block.section != ast::VarSection::InOut)
                     error(loc, "ARRAY[*] is only allowed in VAR_IN_OUT");
                 const bool byRef = block.section == ast::VarSection::InOut;

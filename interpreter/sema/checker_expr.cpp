@@ -277,6 +277,13 @@ const Enumerator* Checker::lookupEnumValue(const std::string& key, const Type** 
     return it->second.second;
 }
 
+template <class T>
+using Index1Self = exec::Index1Var<T, exec::BaseKind::Self>;
+template <class T>
+using Index1Frame = exec::Index1Var<T, exec::BaseKind::Frame>;
+template <class T>
+using Index1Abs = exec::Index1Var<T, exec::BaseKind::Abs>;
+
 namespace {
 exec::Expr* directNode(exec::NodePool& pool, Checked::Direct d, uint32_t off, uint8_t* abs, const Type* t) {
     Rep rep = isAggregate(t) ? Rep::Void : repOf(t);
@@ -646,6 +653,23 @@ Checked Checker::checkIndex(const ast::Expr& e) {
         c.directOffset = base.directOffset + static_cast<uint32_t>(constOffset);
         c.directAbs = base.directAbs;
         c.node = directNode(pool(), c.direct, c.directOffset, c.directAbs, c.type);
+    } else if (dims.size() == 1 && base.direct != Checked::Direct::None && base.direct != Checked::Direct::Pending) {
+        Rep rep = isAggregate(c.type) ? Rep::Void : repOf(c.type);
+        exec::Expr* n = nullptr;
+        switch (base.direct) {
+            case Checked::Direct::Self: n = makeByRep<Index1Self>(pool(), rep); break;
+            case Checked::Direct::Frame: n = makeByRep<Index1Frame>(pool(), rep); break;
+            default: n = makeByRep<Index1Abs>(pool(), rep); break;
+        }
+        auto* f = dynamic_cast<exec::Index1Fields*>(n);
+        f->off = base.directOffset;
+        f->abs = base.directAbs ? base.directAbs + base.directOffset : nullptr;
+        f->index = dims[0].index;
+        f->lo = dims[0].lo;
+        f->count = dims[0].count;
+        f->stride = dims[0].stride;
+        f->site = site(e.loc);
+        c.node = n;
     } else if (dims.size() == 1) {
         auto* n = pool().make<exec::Index1Place>();
         n->base = base.node;

@@ -111,10 +111,17 @@ void Checker::buildClasses() {
                 }
             }
         }
-        if (!fb->ast->abstract)
-            for (size_t k = 0; k < slots; ++k) {
-                (void)k;
-            }
+        if (!fb->ast->abstract) {
+            // A concrete block implements every ABSTRACT method it inherits.
+            for (PouInfo* p = fb->parent; p; p = p->parent)
+                for (auto& [key, m] : p->methods) {
+                    if (!m->ast || !m->ast->abstract || m->slot < 0) continue;
+                    PouInfo* impl = findMethod(fb, key);
+                    if (!impl || !impl->ast || impl->ast->abstract)
+                        error(fb->ast->nameLoc.line ? fb->ast->nameLoc : fb->ast->loc,
+                              fmt::format("'{}' must implement the ABSTRACT method '{}' of '{}'", fb->name, m->name, p->name));
+                }
+        }
     };
     for (PouInfo* p : pouOrder_)
         if (p->kind == ast::PouKind::FunctionBlock) build(p);

@@ -82,7 +82,7 @@ exec::Stmt* Checker::storeTo(exec::Expr* place, const Type* t, exec::Expr* value
 
 exec::Stmt* Checker::assignChecked(Checked target, Checked value, const ast::Loc& loc) {
     if (!target.ok || !value.ok) return nullptr;
-    if (target.propertySetter || target.writeOnlyProperty) return assignProperty(target, value, loc);
+    if (target.propertyInstance) return assignProperty(target, value, loc);
     if (!target.isPlace) {
         error(loc, "the left side of ':=' is not a variable");
         return nullptr;
