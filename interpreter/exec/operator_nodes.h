@@ -149,6 +149,26 @@ STRUN_REAL_BINOP(DivF, a / b)
 STRUN_REAL_BINOP(PowF, std::pow(a, b))
 #undef STRUN_REAL_BINOP
 
+// Floating point with one constant operand (4.0 / x, x * 0.5): LEFT says
+// which side the constant is on, for the non-commutative - and /.
+enum class RealOp : uint8_t { Add, Sub, Mul, Div };
+template <class T, RealOp OP, bool LEFT>
+struct RealK final : Expr {
+    Expr* x;
+    T k;
+    RealK(Expr* e, double v) : x(e), k(static_cast<T>(v)) {}
+    double f(Ctx& c) override {
+        T v = static_cast<T>(x->f(c));
+        T a = LEFT ? k : v, b = LEFT ? v : k;
+        T r;
+        if constexpr (OP == RealOp::Add) r = a + b;
+        else if constexpr (OP == RealOp::Sub) r = a - b;
+        else if constexpr (OP == RealOp::Mul) r = a * b;
+        else r = a / b;
+        return static_cast<double>(r);
+    }
+};
+
 template <class T>
 struct NegF final : Expr {
     Expr* a;

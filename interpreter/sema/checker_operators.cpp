@@ -296,6 +296,23 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
             return r;
         }
     }
+    if (real && (x.isConst != y.isConst) && op != ast::Op::Mod) {
+        const bool left = x.isConst;
+        exec::Expr* v = left ? y.node : x.node;
+        double k = left ? x.constReal : y.constReal;
+        auto make = [&](auto tag) -> exec::Expr* {
+            using T = decltype(tag);
+            switch (op) {
+                case ast::Op::Add: return left ? static_cast<exec::Expr*>(pool().make<exec::RealK<T, exec::RealOp::Add, true>>(v, k)) : pool().make<exec::RealK<T, exec::RealOp::Add, false>>(v, k);
+                case ast::Op::Sub: return left ? static_cast<exec::Expr*>(pool().make<exec::RealK<T, exec::RealOp::Sub, true>>(v, k)) : pool().make<exec::RealK<T, exec::RealOp::Sub, false>>(v, k);
+                case ast::Op::Mul: return left ? static_cast<exec::Expr*>(pool().make<exec::RealK<T, exec::RealOp::Mul, true>>(v, k)) : pool().make<exec::RealK<T, exec::RealOp::Mul, false>>(v, k);
+                default: return left ? static_cast<exec::Expr*>(pool().make<exec::RealK<T, exec::RealOp::Div, true>>(v, k)) : pool().make<exec::RealK<T, exec::RealOp::Div, false>>(v, k);
+            }
+        };
+        r.node = rep == Rep::F32 ? make(float{}) : make(double{});
+        r.node->type = t;
+        return r;
+    }
     switch (op) {
         case ast::Op::Add: r.node = real ? makeRealByRep<exec::AddF>(pool(), rep, x.node, y.node) : intOp<exec::AddI>(pool(), rep, x.node, y.node); break;
         case ast::Op::Sub: r.node = real ? makeRealByRep<exec::SubF>(pool(), rep, x.node, y.node) : intOp<exec::SubI>(pool(), rep, x.node, y.node); break;
