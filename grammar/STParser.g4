@@ -264,6 +264,7 @@ postfixExpr
 
 primary
     : identifier
+    | keywordFunction=(MOD | AND | OR | XOR)   // MOD(a, b), AND(a, b, c): the standard functions named like operators
     | THIS
     | SUPER
     | DIRECT_ADDRESS

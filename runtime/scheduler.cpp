@@ -481,6 +481,9 @@ void Scheduler::faultStop(const TaskRun* task, DiagCode code, PlcState state) {
         stopTime_ = machine_.now;
     }
     ending_ = true;
+    // STOP ends every activation in progress, also one whose fault came in
+    // its last statement: none of them completes a cycle or writes outputs.
+    for (TaskRun* running : stack_) running->abortRequested = true;
     trace(task, state == PlcState::Halt ? "halt" : "stop", diagCodeName(code));
     machine_.requestAttention();
 }

@@ -138,6 +138,11 @@ ExprPtr AstBuilder::primary(P::PrimaryContext* c) {
         e->name = text(c->identifier());
         return e;
     }
+    if (c->keywordFunction) {
+        auto e = makeExpr(ExprKind::Name, at);
+        e->name = c->keywordFunction->getText();
+        return e;
+    }
     if (c->DIRECT_ADDRESS()) {
         auto e = makeExpr(ExprKind::Name, at);
         e->name = c->DIRECT_ADDRESS()->getText();

@@ -119,6 +119,10 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
     }
     Checked a = checkExpr(*e.args[0].value);
     if (!a.ok) return a;
+    if (!from && isStringType(a.type->kind)) {
+        handled = false;  // TO_INT('12'): a STRING source is a stdlib conversion (stdlib/bind)
+        return bad(e.loc);
+    }
     if (truncate && !(isReal(a.type->kind) || a.untypedReal)) {
         error(e.args[0].value->loc, fmt::format("{} needs a REAL or LREAL input, not {}", key, typeName(a.type)));
         return bad(e.loc);

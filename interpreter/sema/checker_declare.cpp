@@ -53,7 +53,13 @@ void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
         owner->methods[key] = raw;
         model_.pouStore.push_back(std::move(info));
     } else {
-        if (pous_.count(key) || typeDecls_.count(key) || types().byName(key)) {
+        auto existing = pous_.find(key);
+        if (existing != pous_.end() && libraryFiles_.count(existing->second->ast->loc.file) && !libraryFiles_.count(pou->loc.file)) {
+            // A user POU named like a library one (an own TON, say) replaces it.
+            std::replace(pouOrder_.begin(), pouOrder_.end(), existing->second, raw);
+            existing->second = raw;
+            model_.pouStore.push_back(std::move(info));
+        } else if (pous_.count(key) || typeDecls_.count(key) || types().byName(key)) {
             error(pou->nameLoc.line ? pou->nameLoc : pou->loc, fmt::format("duplicate declaration of '{}'", pou->name));
             model_.pouStore.push_back(std::move(info));  // keep it alive, unreachable by name
         } else {

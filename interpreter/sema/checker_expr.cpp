@@ -512,9 +512,13 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
             mv->used = true;
             byRef = mv->byRef;
             if (byRef) ft = mv->type;
-            if (mv->section == ast::VarSection::Input) {
+            if (mv->section == ast::VarSection::Input && !insideOwnInstance(t->pou)) {
                 c.readOnly = true;
                 c.readOnlyWhy = fmt::format("'{}' is an input of '{}'; inputs are set in the call", mv->name, t->name);
+            }
+            if (mv->section == ast::VarSection::Output && t->pou->kind == ast::PouKind::FunctionBlock && !insideOwnInstance(t->pou)) {
+                c.readOnly = true;
+                c.readOnlyWhy = fmt::format("'{}' is an output of '{}'; outputs are read-only outside the instance", mv->name, t->name);
             }
             if (mv->constant) {
                 c.readOnly = true;

@@ -252,8 +252,10 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
         return bad(loc);
     }
     if (op == ast::Op::Pow) {
-        const Type* rt = (ka == TK::LReal || kb == TK::LReal || (a.untypedReal && b.untypedReal)) ? types().elementary(TK::LReal)
-                                                                                                  : types().elementary(TK::Real);
+        // REAL ** 10.0 stays REAL: an untyped literal takes the other operand's type.
+        const Type* rt = (ka == TK::LReal && !a.untypedReal) || (kb == TK::LReal && !b.untypedReal) ? types().elementary(TK::LReal)
+                                                                                                     : types().elementary(TK::Real);
+        if ((a.untypedInt || a.untypedReal) && (b.untypedInt || b.untypedReal)) rt = types().elementary(TK::LReal);
         if ((a.untypedInt || a.untypedReal) && (b.untypedInt || b.untypedReal)) rt = types().elementary(TK::LReal);
         Checked x = convert(a, rt, loc), y = convert(b, rt, loc);
         if (!x.ok || !y.ok) return bad(loc);
@@ -266,6 +268,11 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
         return f;
     }
     const bool bothUntyped = (a.untypedInt || a.untypedReal) && (b.untypedInt || b.untypedReal);
+    if (bothUntyped && (op == ast::Op::Div || op == ast::Op::Mod) && b.untypedInt && b.constInt == 0) {
+        // 10 / 0 is not folded (DIV_BY_ZERO at run time): give it the dividend's natural type.
+        a = settle(a);
+        b = settle(b);
+    }
     const Type* t = commonType(a, b, loc);
     if (!t) return bad(loc);
     if (op == ast::Op::Mod && !(isInteger(t->kind) || isBitString(t->kind))) {

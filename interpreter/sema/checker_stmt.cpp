@@ -185,6 +185,12 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
 }
 
 exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
+    if (pou_ && pou_->result) {
+        // F.x := ... and F[i] := ... assign (part of) the function result too.
+        const ast::Expr* root = s.target.get();
+        while (root && (root->kind == ast::ExprKind::Member || root->kind == ast::ExprKind::Index) && !root->kids.empty()) root = root->kids[0].get();
+        if (root && root->kind == ast::ExprKind::Name && upper(root->name) == upper(pou_->result->name)) assignedResult_ = true;
+    }
     Checked target = checkExpr(*s.target);
     Checked value = checkExpr(*s.expr);
     if (!target.ok || !value.ok) return nullptr;

@@ -30,7 +30,7 @@ struct Compiled {
     std::unique_ptr<sema::ProgramModel> model;  // null when it does not compile
 
     bool ok() const { return model != nullptr; }
-    // Messages about the user file only (the library never warns, but be precise).
+    // Every message of one severity, in the order reported.
     std::vector<CompileMessage> messages(Severity severity) const {
         std::vector<CompileMessage> out;
         for (const auto& m : log.messages())

@@ -109,10 +109,10 @@ TEST_CASE("the most negative value divided by -1 wraps to itself", "[eval][divis
     auto r = runMain(R"(
 si : SINT := -128; i : INT := -32768; d : DINT := -2147483648; l : LINT := -9223372036854775808;
 m1 : DINT := -1; ml : LINT := -1;
-qsi : SINT; qi : INT; qd : DINT; ql : LINT; md : DINT; mlm : LINT;)",
+qsi : SINT; qi : INT; qd : DINT; ql : LINT; md : DINT; mlm : LINT; lit : DINT;)",
                      R"(
 qsi := si / DINT_TO_SINT(m1); qi := i / DINT_TO_INT(m1); qd := d / m1; ql := l / ml;
-md := d MOD m1; mlm := l MOD ml;)");
+md := d MOD m1; mlm := l MOD ml; lit := d / -1;)");
     INFO(r.compiled->printed());
     REQUIRE(r.ok());
     CHECK(r.var("Main", "qsi") == -128);
@@ -121,6 +121,7 @@ md := d MOD m1; mlm := l MOD ml;)");
     CHECK(r.var("Main", "ql") == std::numeric_limits<int64_t>::min());
     CHECK(r.var("Main", "md") == 0);
     CHECK(r.var("Main", "mlm") == 0);
+    CHECK(r.var("Main", "lit") == -2147483648LL);
     CHECK(r.diagnostics.empty());
 }
 
@@ -216,4 +217,62 @@ TEST_CASE("time arithmetic and negative durations", "[eval][time]") {
     CHECK(r.var("Main", "d") == "T#1s500ms");
     CHECK(r.var("Main", "n") == "T#-750ms");
     CHECK(r.var("Main", "lt") == "T#3ms");
+}
+
+// Literal operands only: the checker leaves the division for run time (so
+// that it reports DIV_BY_ZERO) but then gives it the type LINT, which no
+// longer fits the DINT it is assigned to.
+TEST_CASE("a division of literals by zero compiles and reports DIV_BY_ZERO at run time", "[eval][division]") {
+    auto r = runMain("x : DINT; y : DINT;", "x := 10 / 0;\ny := 7 MOD 0;");
+    INFO(r.compiled->printed());
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "x") == 10);
+    CHECK(r.var("Main", "y") == 0);
+    CHECK(r.count(rt::DiagCode::DivByZero) == 2);
+}
+
+TEST_CASE("a literal divisor keeps the type of the variable operand", "[eval][division]") {
+    auto r = runMain("x : DINT := 10; q : DINT; m : SINT := -7; mm : SINT;", "q := x / 4;\nmm := m MOD 4;");
+    INFO(r.compiled->printed());
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "q") == 2);
+    CHECK(r.var("Main", "mm") == -3);
+}
+
+TEST_CASE("REAL raised to a REAL power stays REAL", "[eval][real]") {
+    auto r = runMain("e : REAL := 2.0; p : REAL; l : LREAL := 2.0; lp : LREAL;", "p := e ** e;\nlp := l ** 3.0;");
+    INFO(r.compiled->printed());
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "p") == 4.0);
+    CHECK(r.var("Main", "lp") == 8.0);
+}
+
+// An untyped real literal adopts REAL with every other operator (r * 10.0 is
+// REAL); with ** it settles to LREAL and the REAL assignment is rejected.
+TEST_CASE("REAL raised to a real literal stays REAL", "[eval][real]") {
+    auto r = runMain("e : REAL := 2.0; p : REAL;", "p := e ** 10.0;");
+    INFO(r.compiled->printed());
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "p") == 1024.0);
+}
+
+TEST_CASE("ULINT values above the LINT range compare and divide as unsigned", "[eval][wrap]") {
+    auto r = runMain("u : ULINT := 18446744073709551615; gt : BOOL; eq : BOOL; half : ULINT; rest : ULINT; asReal : LREAL;",
+                     "gt := u > 5;\neq := u = 18446744073709551615;\nhalf := u / 2;\nrest := u MOD 10;\nasReal := ULINT_TO_LREAL(u);");
+    INFO(r.compiled->printed());
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "gt") == true);
+    CHECK(r.var("Main", "eq") == true);
+    CHECK(r.var("Main", "half") == 9223372036854775807ULL);
+    CHECK(r.var("Main", "rest") == 5);
+    CHECK(r.var("Main", "asReal") == 18446744073709551616.0);
+}
+
+TEST_CASE("TIME wraps at its 32-bit millisecond range", "[eval][time]") {
+    auto r = runMain("t : TIME := T#24d20h31m23s647ms; z : DINT; d : TIME := T#1s;", "t := t + T#1ms;\nd := d / z;");
+    INFO(r.compiled->printed());
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "t") == "T#-24d20h31m23s648ms");
+    CHECK(r.var("Main", "d") == "T#1s");
+    CHECK(r.count(rt::DiagCode::DivByZero) == 1);
 }

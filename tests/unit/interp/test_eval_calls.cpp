@@ -308,3 +308,23 @@ END_CONFIGURATION
     CHECK(r.count(rt::DiagCode::ArrayBounds) == 3);
     CHECK(r.var("E", "calls").get<int>() >= 2);
 }
+
+TEST_CASE("a structured function result is returned by value", "[eval][calls]") {
+    auto r = runSt(R"(
+TYPE P : STRUCT x, y : INT; END_STRUCT; END_TYPE
+FUNCTION MakeP : P
+VAR_INPUT a : INT; END_VAR
+MakeP.x := a;
+MakeP.y := a * 2;
+END_FUNCTION
+PROGRAM Main
+VAR p : P; q : INT; END_VAR
+p := MakeP(3);
+q := MakeP(5).y;
+END_PROGRAM
+)");
+    INFO(r.compiled->printed());
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "p") == nlohmann::ordered_json::parse(R"({"x":3,"y":6})"));
+    CHECK(r.var("Main", "q") == 10);
+}
