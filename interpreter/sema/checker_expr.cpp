@@ -908,6 +908,11 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         e = settle(e);
         from = e.type;
     }
+    if (e.flexibleLiteral && isNumeric(from->kind) && (isNumeric(target->kind) || isBitString(target->kind)) && !sameType(from, target)) {
+        Checked c = convert(e, target, loc);
+        c.flexibleLiteral = false;
+        return c;
+    }
     if (sameType(from, target)) {
         if (isStringType(target->kind)) { e.type = from; return e; }
         e.type = target;

@@ -332,7 +332,10 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
         default: error(loc, "unsupported operator"); return bad(loc);
     }
     r.node->type = t;
-    if ((op == ast::Op::Div || op == ast::Op::Mod) && !real && y.isConst && y.constInt == 0) return r;  // runtime DIV_BY_ZERO
+    if ((op == ast::Op::Div || op == ast::Op::Mod) && !real && y.isConst && y.constInt == 0) {
+        r.flexibleLiteral = bothUntyped;  // 10 / 0 assigned to an INT is an INT division
+        return r;  // runtime DIV_BY_ZERO
+    }
     Checked f = foldIfConst(r, {&x, &y});
     if (bothUntyped && f.isConst) {
         if (real) f.untypedReal = true;

@@ -83,6 +83,8 @@ struct Checked {
     double constReal = 0;
     bool untypedInt = false;   // integer literal not yet given a type (ANY_INT)
     bool untypedReal = false;  // real literal not yet given a type (ANY_REAL)
+    bool flexibleLiteral = false;  // not constant, but computed from untyped literals only
+                                   // (SEL(g, 1, 2), 10 / 0): converts to any numeric type it meets
     bool isPlace = false;      // designates storage (can be assigned / passed by reference)
     bool readOnly = false;     // CONSTANT, or an input seen from outside its POU
     std::string readOnlyWhy;

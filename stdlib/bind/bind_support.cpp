@@ -283,6 +283,8 @@ Checked makeResult(Checker& ck, exec::Expr* node, const Type* t, const CallArgs&
     r.type = t;
     r.node = node;
     for (const auto& a : args) r.hasCall = r.hasCall || a.hasCall;
+    // SEL(g, 1, 2): computed from untyped literals only, it takes the type it is assigned to.
+    if (untyped && !allConst(args) && (sema::isInteger(t->kind) || sema::isReal(t->kind))) r.flexibleLiteral = true;
     if (!fold || args.empty() || !allConst(args)) return r;
     exec::Ctx dummy;
     if (sema::isRealRep(t)) {

@@ -48,10 +48,10 @@ TEST_CASE("calls on literals fold to untyped constants", "[stdlib][typing]") {
     // An untyped result fits any variable its value fits, like an operator on literals.
     requireOk("si := MAX(1, 2); bt := ABS(-7); r := SQRT(2.0); u := ADD(200, 100);");
     requireError("si := MAX(1, 200);", "outside the range of SINT");
-    // Non-constant selector over literals: the smallest fitting type (USINT.. for
-    // non-negative values), which widens to every wider integer and to REAL.
+    // Non-constant selector over literals: the result takes the type it is
+    // assigned to, like the literals themselves would.
     requireOk("i := SEL(b, 1, 2); bt := MUX(i, 1, 2, 255); u := SEL(b, 0, 65535); r := SEL(b, 1, 2); si := SEL(b, -1, 2);");
-    requireError("si := SEL(b, 1, 2);", "cannot convert USINT to SINT");
+    requireOk("si := SEL(b, 1, 2); d := MUX(i, 1, 2, 3);");
 }
 
 TEST_CASE("string functions type their inputs and results", "[stdlib][typing]") {
