@@ -61,6 +61,17 @@ STRUN_INT_BINOP_CONST(OrIK, a | b)
 STRUN_INT_BINOP_CONST(XorIK, a ^ b)
 #undef STRUN_INT_BINOP_CONST
 
+// A time of day kept within one day (TOD + TIME wraps at midnight).
+struct WrapModulo final : Expr {
+    Expr* a;
+    int64_t m;
+    WrapModulo(Expr* x, int64_t mod) : a(x), m(mod) {}
+    int64_t i(Ctx& c) override {
+        int64_t v = a->i(c) % m;
+        return v < 0 ? v + m : v;
+    }
+};
+
 // Reports DIV_BY_ZERO for the running task (defined in faults.cpp).
 void reportDivByZero(Ctx& c, const Site& site);
 

@@ -230,7 +230,14 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
             exec::Expr* yb = toUnit(y);
             Rep rep = repOf(result);
             r.type = result;
-            r.node = op == ast::Op::Add ? intOp<exec::AddI>(pool(), rep, xa, yb) : intOp<exec::SubI>(pool(), rep, xa, yb);
+            if (result->kind == TK::Tod || result->kind == TK::LTod) {
+                // TOD +- TIME stays within the day, as ADD_TOD_TIME (decision 0053).
+                int64_t day = result->kind == TK::Tod ? 86400000LL : 86400000000000LL;
+                exec::Expr* sum = op == ast::Op::Add ? intOp<exec::AddI>(pool(), Rep::I64, xa, yb) : intOp<exec::SubI>(pool(), Rep::I64, xa, yb);
+                r.node = pool().make<exec::WrapModulo>(sum, day);
+            } else {
+                r.node = op == ast::Op::Add ? intOp<exec::AddI>(pool(), rep, xa, yb) : intOp<exec::SubI>(pool(), rep, xa, yb);
+            }
             r.node->type = result;
             return foldIfConst(r, {&a, &b});
         }
