@@ -12,13 +12,6 @@ namespace strun::stdlib {
 
 namespace {
 
-// Shows a literal in an error message without flooding it.
-std::string quoted(std::string_view text) {
-    constexpr size_t kMaxShown = 40;
-    if (text.size() <= kMaxShown) return fmt::format("'{}'", text);
-    return fmt::format("'{}...'", text.substr(0, kMaxShown));
-}
-
 // Explains why scanDigits stopped before the end of `text`.
 std::string digitError(std::string_view text, size_t stop, unsigned base) {
     const char c = text[stop];

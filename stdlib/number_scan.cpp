@@ -1,11 +1,19 @@
 #include "stdlib/number_scan.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
 
 namespace strun::stdlib {
+
+std::string quoted(std::string_view text) {
+    constexpr size_t kMaxShown = 40;
+    if (text.size() <= kMaxShown) return fmt::format("'{}'", text);
+    return fmt::format("'{}...'", text.substr(0, kMaxShown));
+}
 
 int digitValue(char c) {
     if (c >= '0' && c <= '9') return c - '0';

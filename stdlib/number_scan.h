@@ -10,6 +10,9 @@
 
 namespace strun::stdlib {
 
+// A literal shown in an error message, cut short so a huge one cannot flood it.
+std::string quoted(std::string_view text);
+
 // 0..35 for 0-9, a-z, A-Z; -1 otherwise.
 int digitValue(char c);
 

@@ -14,12 +14,6 @@ namespace strun::stdlib {
 
 namespace {
 
-std::string quoted(std::string_view text) {
-    constexpr size_t kMaxShown = 40;
-    if (text.size() <= kMaxShown) return fmt::format("'{}'", text);
-    return fmt::format("'{}...'", text.substr(0, kMaxShown));
-}
-
 // Strips one of `prefixes` followed by '#'. Text without '#' is returned as is
 // (the bare form); an unknown prefix is an error (empty optional-like result).
 Result<std::string_view> stripPrefix(std::string_view text,

@@ -52,6 +52,25 @@ inline uint8_t* pushFrame(Ctx& c, const PouCode& code, const Site& site) {
     return f;
 }
 
+// Runs `code` on instance `inst` in the already pushed frame `f`, one call
+// level deeper, and restores the caller's registers afterwards.
+inline void runBody(Ctx& c, const PouCode& code, uint8_t* inst, uint8_t* f) {
+    uint8_t* savedSelf = c.self;
+    uint8_t* savedFrame = c.frame;
+    const Stmt* savedStmt = c.stmt;
+    const std::string* savedPou = c.pouName;
+    c.self = inst;
+    c.frame = f;
+    c.pouName = &code.name;
+    ++c.depth;
+    code.body->exec(c);
+    --c.depth;
+    c.self = savedSelf;
+    c.frame = savedFrame;
+    c.stmt = savedStmt;
+    c.pouName = savedPou;
+}
+
 enum class ResultRep : uint8_t { None, I8, I16, I32, I64, U8, U16, U32, U64, F32, F64, Addr };
 
 inline int64_t loadIntRep(const uint8_t* p, ResultRep r) {
@@ -96,20 +115,7 @@ struct CallPou final : Expr {
         uint8_t* savedPending = c.pending;
         c.pending = f;
         for (Stmt* s : inputs) s->exec(c);
-        uint8_t* savedSelf = c.self;
-        uint8_t* savedFrame = c.frame;
-        const Stmt* savedStmt = c.stmt;
-        const std::string* savedPou = c.pouName;
-        c.self = inst;
-        c.frame = f;
-        c.pouName = &code->name;
-        ++c.depth;
-        code->body->exec(c);
-        --c.depth;
-        c.self = savedSelf;
-        c.frame = savedFrame;
-        c.stmt = savedStmt;
-        c.pouName = savedPou;
+        runBody(c, *code, inst, f);
         for (Stmt* s : outputs) s->exec(c);
         c.pending = savedPending;
         c.stackTop = f;
@@ -148,20 +154,7 @@ struct CallFbStmt final : Stmt {
         uint8_t* inst = instance->addr(c);
         uint8_t* f = pushFrame(c, *body, site);
         if (!f) return Flow::Next;
-        uint8_t* savedSelf = c.self;
-        uint8_t* savedFrame = c.frame;
-        const Stmt* savedStmt = c.stmt;
-        const std::string* savedPou = c.pouName;
-        c.self = inst;
-        c.frame = f;
-        c.pouName = &body->name;
-        ++c.depth;
-        body->body->exec(c);
-        --c.depth;
-        c.self = savedSelf;
-        c.frame = savedFrame;
-        c.stmt = savedStmt;
-        c.pouName = savedPou;
+        runBody(c, *body, inst, f);
         c.stackTop = f;
         if (c.aborting) return Flow::Abort;
         for (Stmt* s : outputs) s->exec(c);

@@ -78,6 +78,7 @@ private:
     void declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks, uint32_t& instOff, uint32_t& frameOff,
                      std::vector<Field>* instanceFields);
     void declareGlobals();
+    void foldConstant(VarSym& v, const ast::VarDecl& decl);
     VarSym* addGlobal(const ast::VarDecl& decl, size_t nameIndex, const ast::VarBlock& block);
     bool constIntExpr(const ast::Expr* e, int64_t& out, const char* what);
     void writeInitial(uint8_t* base, const Type* t, const ast::Init* init, const ast::Loc& loc);
@@ -125,6 +126,7 @@ private:
     Checked checkConversionCall(const std::string& upperName, const ast::Expr& e, bool& handled);
     Checked callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* instance);
     exec::Stmt* bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc);
+    exec::Stmt* bindOutput(const ast::Arg& arg, VarSym* p, Checked src);
     exec::Stmt* bindReference(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc);
     exec::Stmt* callFunctionBlock(Checked inst, const ast::Expr& e);
     Checked varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside);

@@ -334,6 +334,22 @@ exec::Stmt* Checker::bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, co
     return pool().make<exec::BindAddress>(slot, v.node);
 }
 
+// `out => target` / `NOT out => target`: stores the output `src` into the caller's target.
+exec::Stmt* Checker::bindOutput(const ast::Arg& arg, VarSym* p, Checked src) {
+    Checked target = checkExpr(*arg.value);
+    if (!target.ok) return nullptr;
+    src.readOnly = false;
+    if (arg.negated) {
+        if (p->type->kind != TK::Bool) {
+            error(arg.loc, "NOT on an output needs a BOOL output");
+            return nullptr;
+        }
+        src.node = pool().make<exec::NotBool>(src.node);
+        src.node->type = p->type;
+    }
+    return assignChecked(target, src, arg.loc);
+}
+
 exec::Stmt* Checker::bindReference(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc) {
     if (v.type->kind == TK::Reference && sameType(v.type, p->type)) return storeTo(slot, types().elementary(TK::LWord), v.node);
     if (!v.isPlace || !sameType(v.type, p->type->target)) {
@@ -357,21 +373,13 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
         connected.insert(p);
         if (!b.arg->value) continue;
         if (p->section == ast::VarSection::Output) {
-            Checked target = checkExpr(*b.arg->value);
-            if (!target.ok) { ok = false; continue; }
             Checked src;
             src.ok = true;
             src.loc = b.arg->loc;
             src.type = p->type;
             src.node = makeByRep<exec::PendingVar>(pool(), isAggregate(p->type) ? Rep::Void : repOf(p->type), p->offset);
             src.node->type = p->type;
-            if (b.arg->negated) {
-                if (p->type->kind != TK::Bool) { error(b.arg->loc, "NOT on an output needs a BOOL output"); ok = false; continue; }
-                src.node = pool().make<exec::NotBool>(src.node);
-                src.node->type = p->type;
-            }
-            exec::Stmt* st = assignChecked(target, src, b.arg->loc);
-            if (st) call->outputs.push_back(st);
+            if (exec::Stmt* st = bindOutput(*b.arg, p, src)) call->outputs.push_back(st);
             else ok = false;
             continue;
         }
@@ -434,17 +442,7 @@ exec::Stmt* Checker::callFunctionBlock(Checked inst, const ast::Expr& e) {
         Checked member = memberOf(inst, p->name, b.arg->loc);
         if (!member.ok) { ok = false; continue; }
         if (p->section == ast::VarSection::Output) {
-            Checked target = checkExpr(*b.arg->value);
-            if (!target.ok) { ok = false; continue; }
-            Checked src = member;
-            src.readOnly = false;
-            if (b.arg->negated) {
-                if (p->type->kind != TK::Bool) { error(b.arg->loc, "NOT on an output needs a BOOL output"); ok = false; continue; }
-                src.node = pool().make<exec::NotBool>(src.node);
-                src.node->type = p->type;
-            }
-            exec::Stmt* st = assignChecked(target, src, b.arg->loc);
-            if (st) call->outputs.push_back(st);
+            if (exec::Stmt* st = bindOutput(*b.arg, p, member)) call->outputs.push_back(st);
             else ok = false;
             continue;
         }

@@ -581,23 +581,25 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                     pou->params.push_back(v.get());
                 if (block.constant) {
                     if (!decl.init) error(loc, fmt::format("CONSTANT '{}' needs an initial value", name));
-                    else if (decl.init->kind == ast::InitKind::Expr && (isIntRep(t) || isRealRep(t))) {
-                        Checked c = checkExpr(*decl.init->expr);
-                        if (c.ok && c.isConst) {
-                            c = coerce(c, t, decl.init->loc, "initial value");
-                            if (c.ok && c.isConst) {
-                                v->hasConstValue = true;
-                                v->constInt = c.constInt;
-                                v->constReal = c.constReal;
-                            }
-                        }
-                    }
+                    else foldConstant(*v, decl);
                 }
                 pou->vars[key] = v.get();
                 pou->ownedVars.push_back(std::move(v));
             }
         }
     }
+}
+
+// A CONSTANT scalar with a constant initial value is folded into its uses.
+void Checker::foldConstant(VarSym& v, const ast::VarDecl& decl) {
+    if (decl.init->kind != ast::InitKind::Expr || !(isIntRep(v.type) || isRealRep(v.type))) return;
+    Checked c = checkExpr(*decl.init->expr);
+    if (!c.ok || !c.isConst) return;
+    c = coerce(c, v.type, decl.init->loc, "initial value");
+    if (!c.ok || !c.isConst) return;
+    v.hasConstValue = true;
+    v.constInt = c.constInt;
+    v.constReal = c.constReal;
 }
 
 // ---------------------------------------------------------------- globals
@@ -633,17 +635,7 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
         writeDefault(v->abs, t);
         if (decl.init) writeInitial(v->abs, t, decl.init.get(), decl.loc);
     }
-    if (block.constant && decl.init && decl.init->kind == ast::InitKind::Expr && (isIntRep(t) || isRealRep(t))) {
-        Checked c = checkExpr(*decl.init->expr);
-        if (c.ok && c.isConst) {
-            c = coerce(c, t, decl.init->loc, "initial value");
-            if (c.ok && c.isConst) {
-                v->hasConstValue = true;
-                v->constInt = c.constInt;
-                v->constReal = c.constReal;
-            }
-        }
-    }
+    if (block.constant && decl.init) foldConstant(*v, decl);
     VarSym* raw = v.get();
     globals_[key] = raw;
     model_.globals.push_back(raw);
