@@ -120,6 +120,7 @@ OF                 : O F;
 STRING             : S T R I N G;
 WSTRING            : W S T R I N G;
 POINTER            : P O I N T E R;
+REF_TO             : R E F '_' T O;   // IEC 61131-3 3rd edition references: a typed pointer
 REFERENCE          : R E F E R E N C E;
 TO                 : T O;
 EXTENDS            : E X T E N D S;

@@ -98,7 +98,7 @@ typeEntry
 
 typeSpec
     : ARRAY LBRACK arrayRange (COMMA arrayRange)* RBRACK OF typeSpec        # arrayType
-    | POINTER TO typeSpec                                                    # pointerType
+    | (POINTER TO | REF_TO) typeSpec                                         # pointerType
     | REFERENCE TO typeSpec                                                  # referenceType
     | (STRING | WSTRING) (LBRACK expression RBRACK | LPAREN expression RPAREN)?   # stringType
     | STRUCT varDecl* END_STRUCT                                             # structType

@@ -173,9 +173,8 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
                 error(e.loc, fmt::format("{} takes one variable", key));
                 return bad(e.loc);
             }
-            Checked a = addressOf(*e.args[0].value, key.c_str());
-            if (a.ok && key == "REF") { a.type = types().reference(a.type->target); a.node->type = a.type; }
-            return a;
+            // REF(x) is the IEC 3rd-edition form of ADR(x): a REF_TO (pointer) value.
+            return addressOf(*e.args[0].value, key.c_str());
         }
         if (key == "SIZEOF") {
             if (e.args.size() != 1 || !e.args[0].value) {

@@ -383,6 +383,12 @@ Checked Checker::checkName(const ast::Expr& e) {
         c.node->type = t;
         return c;
     }
+    if (key == "NULL") {
+        // IEC 61131-3 3rd edition: the null reference, assignable to any REF_TO / POINTER.
+        Checked c = constInt(0, types().elementary(TK::ULInt), e.loc);
+        c.untypedInt = true;
+        return c;
+    }
     const Type* et = nullptr;
     if (const Enumerator* en = lookupEnumValue(key, &et)) {
         if (ambiguousEnumValues_.count(key)) {
@@ -429,6 +435,7 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
         t = t->target;
     }
     std::string key = upper(member);
+    if (key.size() > 2 && key[0] == '%' && key[1] == 'X') key = key.substr(2);  // x.%X3 is x.3
     if (!key.empty() && std::isdigit(static_cast<unsigned char>(key[0]))) {
         // Bit access x.3
         TK k = t->kind;
