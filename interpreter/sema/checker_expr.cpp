@@ -40,17 +40,6 @@ TK naturalIntKind(const Checked& c) {
     return TK::LInt;
 }
 
-int64_t wrapBits(int64_t v, const Type* t) {
-    TK k = t->kind == TK::Enum ? t->base->kind : t->kind;
-    if (k == TK::Bool) return v != 0;
-    int bits = bitWidth(integerView(k));
-    if (bits >= 64) return v;
-    uint64_t mask = (uint64_t(1) << bits) - 1;
-    uint64_t u = static_cast<uint64_t>(v) & mask;
-    if (isSignedInt(integerView(k)) && ((u >> (bits - 1)) & 1)) u |= ~mask;
-    return static_cast<int64_t>(u);
-}
-
 }  // namespace
 
 exec::Site Checker::site(const ast::Loc& loc) { return exec::Site{currentPouName_, loc.line}; }

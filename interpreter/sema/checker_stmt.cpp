@@ -426,7 +426,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
 }
 
 void Checker::checkBody(PouInfo* pou) {
-    if (pou->bodyChecked || !pou->ast->hasBody && pou->ast->body.empty()) {
+    if (pou->bodyChecked || (!pou->ast->hasBody && pou->ast->body.empty())) {
         if (!pou->code->body) pou->code->body = pool().make<exec::Block>();
         pou->bodyChecked = true;
         return;
