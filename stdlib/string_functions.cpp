@@ -1,4 +1,5 @@
 #include "stdlib/string_functions.h"
+#include "stdlib/string_pieces.h"
 
 #include <algorithm>
 #include <limits>
@@ -18,76 +19,37 @@ int64_t lengthOf(View s) {
 
 template <typename View>
 StringOf<View> left(View s, int64_t size) {
-    if (size <= 0) return {};
-    return StringOf<View>(s.substr(0, static_cast<size_t>(std::min(size, lengthOf(s)))));
+    return pieces::left<typename View::value_type>(s, size).join();
 }
 
 template <typename View>
 StringOf<View> right(View s, int64_t size) {
-    if (size <= 0) return {};
-    const int64_t count = std::min(size, lengthOf(s));
-    return StringOf<View>(s.substr(s.size() - static_cast<size_t>(count)));
+    return pieces::right<typename View::value_type>(s, size).join();
 }
 
 template <typename View>
 StringOf<View> mid(View s, int64_t length, int64_t position) {
-    if (length <= 0 || position < 1 || position > lengthOf(s)) return {};
-    const int64_t available = lengthOf(s) - position + 1;
-    return StringOf<View>(
-        s.substr(static_cast<size_t>(position - 1), static_cast<size_t>(std::min(length, available))));
+    return pieces::mid<typename View::value_type>(s, length, position).join();
 }
 
 template <typename View>
 StringOf<View> concat(View first, View second) {
-    StringOf<View> out;
-    out.reserve(first.size() + second.size());
-    out.append(first);
-    out.append(second);
-    return out;
+    return StringPieces<typename View::value_type>{{first, second}}.join();
 }
 
 template <typename View>
 StringOf<View> insert(View s1, View s2, int64_t position) {
-    if (position < 0) return StringOf<View>(s1);
-    const auto at = static_cast<size_t>(std::min(position, lengthOf(s1)));
-    StringOf<View> out;
-    out.reserve(s1.size() + s2.size());
-    out.append(s1.substr(0, at));
-    out.append(s2);
-    out.append(s1.substr(at));
-    return out;
+    return pieces::insert<typename View::value_type>(s1, s2, position).join();
 }
 
 template <typename View>
 StringOf<View> erase(View s, int64_t length, int64_t position) {
-    if (position < 0) return StringOf<View>(s);
-    if (position == 0) {  // CODESYS: POS 0 addresses the first character but LEN shrinks by one
-        position = 1;
-        if (length > std::numeric_limits<int64_t>::min()) --length;
-    }
-    if (length <= 0 || position > lengthOf(s)) return StringOf<View>(s);
-    const int64_t available = lengthOf(s) - position + 1;
-    StringOf<View> out(s);
-    out.erase(static_cast<size_t>(position - 1), static_cast<size_t>(std::min(length, available)));
-    return out;
+    return pieces::erase<typename View::value_type>(s, length, position).join();
 }
 
 template <typename View>
 StringOf<View> replace(View s1, View s2, int64_t length, int64_t position) {
-    if (position < 0) return StringOf<View>(s1);
-    if (position == 0) {  // same CODESYS quirk as DELETE
-        position = 1;
-        if (length > std::numeric_limits<int64_t>::min()) --length;
-    }
-    length = std::max<int64_t>(length, 0);
-    const int64_t start = std::min(position - 1, lengthOf(s1));  // 0-based; past the end appends
-    const int64_t removed = std::min(length, lengthOf(s1) - start);
-    StringOf<View> out;
-    out.reserve(s1.size() + s2.size());
-    out.append(s1.substr(0, static_cast<size_t>(start)));
-    out.append(s2);
-    out.append(s1.substr(static_cast<size_t>(start + removed)));
-    return out;
+    return pieces::replace<typename View::value_type>(s1, s2, length, position).join();
 }
 
 template <typename View>

@@ -13,6 +13,7 @@
 
 #include "interpreter/exec/node.h"
 #include "stdlib/string_functions.h"
+#include "stdlib/string_pieces.h"
 
 namespace strun::stdlib::bind {
 
@@ -30,6 +31,27 @@ inline uint8_t* writeString(Ctx& c, uint32_t off, uint32_t maxLen, std::basic_st
     Ch* dst = reinterpret_cast<Ch*>(c.frame + off);
     size_t n = std::min<size_t>(s.size(), maxLen);
     std::memmove(dst, s.data(), n * sizeof(Ch));
+    dst[n] = 0;
+    return reinterpret_cast<uint8_t*>(dst);
+}
+
+// Copies the slices of an edit into the result temporary, cut to maxLen. The
+// slices may point into that same temporary (s := LEFT(s, 3) on a result), so
+// they are first gathered in a scratch copy when they overlap it.
+template <class Ch>
+inline uint8_t* writePieces(Ctx& c, uint32_t off, uint32_t maxLen, const stdlib::StringPieces<Ch>& r) {
+    Ch* dst = reinterpret_cast<Ch*>(c.frame + off);
+    const Ch* end = dst + maxLen + 1;
+    bool overlaps = false;
+    for (const auto& part : r.part)
+        overlaps = overlaps || (!part.empty() && part.data() < end && part.data() + part.size() > dst);
+    if (overlaps) return writeString<Ch>(c, off, maxLen, std::basic_string_view<Ch>(r.join()));
+    size_t n = 0;
+    for (const auto& part : r.part) {
+        size_t k = std::min<size_t>(part.size(), maxLen - n);
+        std::memcpy(dst + n, part.data(), k * sizeof(Ch));
+        n += k;
+    }
     dst[n] = 0;
     return reinterpret_cast<uint8_t*>(dst);
 }
@@ -81,24 +103,24 @@ struct StrEditNode final : Expr {
     uint32_t off = 0, maxLen = 0;
     uint8_t* addr(Ctx& c) override {
         auto a = viewOf<Ch>(s1, c);
-        std::basic_string<Ch> r;
-        if constexpr (F == StrFn::Left) r = stdlib::stringLeft(a, l->i(c));
-        else if constexpr (F == StrFn::Right) r = stdlib::stringRight(a, l->i(c));
+        stdlib::StringPieces<Ch> r;
+        if constexpr (F == StrFn::Left) r = stdlib::pieces::left<Ch>(a, l->i(c));
+        else if constexpr (F == StrFn::Right) r = stdlib::pieces::right<Ch>(a, l->i(c));
         else if constexpr (F == StrFn::Mid) {
             int64_t len = l->i(c);
-            r = stdlib::stringMid(a, len, p->i(c));
+            r = stdlib::pieces::mid<Ch>(a, len, p->i(c));
         } else if constexpr (F == StrFn::Insert) {
             auto b = viewOf<Ch>(s2, c);
-            r = stdlib::stringInsert(a, b, p->i(c));
+            r = stdlib::pieces::insert<Ch>(a, b, p->i(c));
         } else if constexpr (F == StrFn::Delete) {
             int64_t len = l->i(c);
-            r = stdlib::stringDelete(a, len, p->i(c));
+            r = stdlib::pieces::erase<Ch>(a, len, p->i(c));
         } else {
             auto b = viewOf<Ch>(s2, c);
             int64_t len = l->i(c);
-            r = stdlib::stringReplace(a, b, len, p->i(c));
+            r = stdlib::pieces::replace<Ch>(a, b, len, p->i(c));
         }
-        return writeString<Ch>(c, off, maxLen, r);
+        return writePieces<Ch>(c, off, maxLen, r);
     }
 };
 
