@@ -163,6 +163,8 @@ private:
     std::vector<ast::Configuration*> configurations_;
     std::map<std::string, VarSym*> globals_;
     std::map<std::string, BuiltinFn> builtins_;
+    std::set<std::string> namespaces_;  // upper-case NAMESPACE paths and their prefixes ("A", "A.B")
+    bool isNamespace(const ast::Expr& e) const;
     std::map<std::string, std::pair<const Type*, const Enumerator*>> enumValues_;  // unqualified, unique ones
     std::set<std::string> ambiguousEnumValues_;
 

@@ -142,7 +142,18 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
 
 Checked Checker::checkCall(const ast::Expr& e, bool statement) {
     const ast::Expr& callee = *e.kids[0];
-    if (callee.kind == ast::ExprKind::Name) {
+    // Lib.F(...): namespaces are flattened (names are unique in the project), so
+    // the call resolves as F(...).
+    ast::Expr unqualified;
+    const ast::Expr* calleeName = &callee;
+    if (callee.kind == ast::ExprKind::Member && isNamespace(*callee.kids[0]) && !lookupVar(upper(callee.kids[0]->name))) {
+        unqualified.kind = ast::ExprKind::Name;
+        unqualified.loc = callee.nameLoc.line ? callee.nameLoc : callee.loc;
+        unqualified.name = callee.name;
+        calleeName = &unqualified;
+    }
+    if (calleeName->kind == ast::ExprKind::Name) {
+        const ast::Expr& callee = *calleeName;
         std::string key = upper(callee.name);
         VarSym* v = lookupVar(key);
         if (v && pou_ && v == pou_->result && pous_.count(key)) v = nullptr;  // recursion: F(...) inside F

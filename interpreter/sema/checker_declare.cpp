@@ -17,6 +17,16 @@ constexpr uint32_t kMaxStorage = 256u * 1024u * 1024u;  // per block: keeps absu
 constexpr uint32_t kFbHeader = 8;                        // every FB instance starts with its class pointer
 }  // namespace
 
+namespace {
+// "A.B" -> {"A", "A.B"}
+void addNamespacePath(std::set<std::string>& out, const std::string& path) {
+    if (path.empty()) return;
+    std::string up = upper(path);
+    for (size_t dot = up.find('.'); dot != std::string::npos; dot = up.find('.', dot + 1)) out.insert(up.substr(0, dot));
+    out.insert(up);
+}
+}  // namespace
+
 Checker::Checker(ProgramModel& model, CompileLog& log) : model_(model), log_(log) {
     model_.machine.image.inputExtent = 0;
     model_.machine.image.outputExtent = 0;
@@ -30,13 +40,31 @@ void Checker::collect(ast::CompilationUnit& unit) {
             continue;
         }
         typeDecls_[key] = &t;
+        addNamespacePath(namespaces_, t.nameSpace);
     }
+    for (auto& g : unit.globals) addNamespacePath(namespaces_, g.nameSpace);
     for (auto& p : unit.pous) declarePou(p.get(), nullptr);
     for (auto& g : unit.globals) globalLists_.push_back(&g);
     for (auto& c : unit.configurations) configurations_.push_back(&c);
 }
 
+
+// A name written `Ns.x`: the namespace part (flattened: names are unique project-wide).
+bool Checker::isNamespace(const ast::Expr& e) const {
+    if (e.kind == ast::ExprKind::Name) return namespaces_.count(upper(e.name)) != 0;
+    if (e.kind == ast::ExprKind::Member && !e.kids.empty() && isNamespace(*e.kids[0])) {
+        std::string path;
+        for (const ast::Expr* p = &e; p; p = p->kids.empty() ? nullptr : p->kids[0].get()) {
+            path = upper(p->name) + (path.empty() ? "" : "." + path);
+            if (p->kind == ast::ExprKind::Name) break;
+        }
+        return namespaces_.count(path) != 0;
+    }
+    return false;
+}
+
 void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
+    addNamespacePath(namespaces_, pou->nameSpace);
     auto info = std::make_unique<PouInfo>();
     info->ast = pou;
     info->kind = pou->kind;

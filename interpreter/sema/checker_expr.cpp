@@ -543,6 +543,13 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
 
 Checked Checker::checkMember(const ast::Expr& e) {
     const ast::Expr& baseExpr = *e.kids[0];
+    if (isNamespace(baseExpr) && !lookupVar(upper(baseExpr.name))) {
+        ast::Expr plain;
+        plain.kind = ast::ExprKind::Name;
+        plain.loc = e.nameLoc.line ? e.nameLoc : e.loc;
+        plain.name = e.name;
+        return checkName(plain);
+    }
     if (baseExpr.kind == ast::ExprKind::Name) {
         std::string bkey = upper(baseExpr.name);
         if (!lookupVar(bkey)) {
