@@ -37,7 +37,7 @@ exec::Expr* cmpNode(exec::NodePool& pool, const Type* t, exec::Expr* a, exec::Ex
     if (rep == Rep::F64) return pool.make<exec::CmpF<double, OP>>(a, b);
     if (t->kind == TK::String) return pool.make<exec::CmpStr<char, OP>>(a, b);
     if (t->kind == TK::WString) return pool.make<exec::CmpStr<char16_t, OP>>(a, b);
-    return makeIntByRep<CmpIntBind<OP>::template I>(pool, rep, a, b);
+    return makeIntByRep<CmpIntBind<OP>::template I>(pool, arithmeticRep(rep), a, b);
 }
 
 CmpOp cmpOpOf(ast::Op op) {
@@ -124,7 +124,7 @@ Checked Checker::checkUnary(const ast::Expr& e) {
             return bad(e.loc);
         }
         r.type = a.type;
-        Rep rep = repOf(a.type);
+        Rep rep = isReal(k) ? repOf(a.type) : arithmeticRep(repOf(a.type));
         r.node = isReal(k) ? makeRealByRep<exec::NegF>(pool(), rep, a.node) : makeIntByRep<exec::NegI>(pool(), rep, a.node);
         r.node->type = r.type;
         return foldIfConst(r, {&a});
@@ -290,8 +290,8 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
     Checked y = coerce(b, t, loc, "operand");
     if (!x.ok || !y.ok) return bad(loc);
     r.type = t;
-    Rep rep = repOf(t);
     bool real = isReal(t->kind);
+    Rep rep = real ? repOf(t) : arithmeticRep(repOf(t));
     if (!real && y.isConst && !x.isConst) {
         int64_t k = y.constInt;
         bool safeDivisor = k != 0 && !(k == -1 && isSignedInt(integerView(t->kind)));
@@ -377,7 +377,7 @@ Checked Checker::makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& l
         return bad(loc);
     }
     if (isIntRep(t) && y.isConst && !x.isConst) {
-        Rep rep = repOf(t);
+        Rep rep = arithmeticRep(repOf(t));
         switch (cmpOpOf(op)) {
             case CmpOp::Eq: r.node = cmpConstNode<CmpOp::Eq>(pool(), rep, x.node, y.constInt); break;
             case CmpOp::Ne: r.node = cmpConstNode<CmpOp::Ne>(pool(), rep, x.node, y.constInt); break;

@@ -31,6 +31,16 @@ inline Rep repOf(const Type* t) {
     }
 }
 
+// The representation integer arithmetic and comparisons are computed in:
+// operands narrower than 32 bits are promoted to DINT, as CODESYS and C do;
+// a result wraps to its type's width only when it is stored (decision 0078).
+inline Rep arithmeticRep(Rep r) {
+    switch (r) {
+        case Rep::I8: case Rep::I16: case Rep::U8: case Rep::U16: case Rep::Bool: return Rep::I32;
+        default: return r;
+    }
+}
+
 // N<T> for the C++ storage type of `rep` (BOOL stored as uint8_t 0/1).
 template <template <class> class N, class... A>
 exec::Expr* makeByRep(exec::NodePool& pool, Rep rep, A&&... args) {
