@@ -59,6 +59,12 @@ public:
     // Registry of built-in functions (name upper-case).
     void addBuiltin(const std::string& upperName, BuiltinFn fn) { builtins_[upperName] = std::move(fn); }
     bool hasBuiltin(const std::string& upperName) const { return builtins_.count(upperName) != 0; }
+    // Another name for a parameter of a library POU (IEC `SR.S1` vs CODESYS `SR.SET1`).
+    void addParameterAlias(const std::string& upperPou, const std::string& upperAlias, const std::string& upperParam) {
+        parameterAliases_[upperPou][upperAlias] = upperParam;
+    }
+    // The parameter `upperName` stands for in `pou`, or `upperName` itself.
+    std::string canonicalParameter(const PouInfo* pou, const std::string& upperName) const;
     // Makes a node yielding the value stored at `place` (a PlaceLoad of the right width).
     exec::Expr* loadFrom(exec::Expr* place, const Type* t);
     // Stores `value` (already of type t) into `place`.
@@ -163,6 +169,7 @@ private:
     std::vector<ast::Configuration*> configurations_;
     std::map<std::string, VarSym*> globals_;
     std::map<std::string, BuiltinFn> builtins_;
+    std::map<std::string, std::map<std::string, std::string>> parameterAliases_;
     std::set<std::string> namespaces_;  // upper-case NAMESPACE paths and their prefixes ("A", "A.B")
     bool isNamespace(const ast::Expr& e) const;
     std::map<std::string, std::pair<const Type*, const Enumerator*>> enumValues_;  // unqualified, unique ones

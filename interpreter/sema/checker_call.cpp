@@ -25,8 +25,8 @@ struct ArgBinding {
 
 // Matches written arguments to formal parameters (positional ones to the
 // inputs and in-outs in declaration order). Reports every mismatch.
-bool bindArguments(Checker& ck, const std::string& callee, const std::vector<VarSym*>& params, const ast::Expr& call,
-                   std::vector<ArgBinding>& out) {
+bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee, const std::vector<VarSym*>& params,
+                   const ast::Expr& call, std::vector<ArgBinding>& out) {
     bool ok = true;
     size_t positional = 0;
     std::vector<VarSym*> inputsInOrder;
@@ -54,7 +54,7 @@ bool bindArguments(Checker& ck, const std::string& callee, const std::vector<Var
             }
             param = inputsInOrder[positional++];
         } else {
-            std::string key = upper(a.name);
+            std::string key = ck.canonicalParameter(owner, upper(a.name));
             for (VarSym* p : params)
                 if (upper(p->name) == key) param = p;
             if (!param) {
@@ -85,6 +85,14 @@ bool bindArguments(Checker& ck, const std::string& callee, const std::vector<Var
     return ok;
 }
 }  // namespace
+
+std::string Checker::canonicalParameter(const PouInfo* pou, const std::string& upperName) const {
+    if (!pou) return upperName;
+    auto p = parameterAliases_.find(upper(pou->name));
+    if (p == parameterAliases_.end()) return upperName;
+    auto a = p->second.find(upperName);
+    return a == p->second.end() ? upperName : a->second;
+}
 
 Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e, bool& handled) {
     handled = false;
@@ -372,7 +380,7 @@ exec::Stmt* Checker::bindReference(VarSym* p, const Checked& v, exec::Expr* slot
 Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* instance) {
     layoutPou(fn);
     std::vector<ArgBinding> bindings;
-    bool ok = bindArguments(*this, fn->name, fn->params, e, bindings);
+    bool ok = bindArguments(*this, fn, fn->name, fn->params, e, bindings);
     auto* call = pool().make<exec::CallPou>();
     call->callee = fn->code;
     call->instance = instance;
@@ -439,7 +447,7 @@ exec::Stmt* Checker::callFunctionBlock(Checked inst, const ast::Expr& e) {
     layoutPou(fb);
     std::vector<ArgBinding> bindings;
     std::vector<VarSym*> params = fb->params;
-    bool ok = bindArguments(*this, fb->name, params, e, bindings);
+    bool ok = bindArguments(*this, fb, fb->name, params, e, bindings);
     auto* call = pool().make<exec::CallFbStmt>();
     call->body = fb->code;
     call->instance = inst.node;

@@ -424,7 +424,13 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
         t = t->target;
     }
     std::string key = upper(member);
+    if (t->kind == TK::FunctionBlock) key = canonicalParameter(t->pou, key);
     if (key.size() > 2 && key[0] == '%' && key[1] == 'X') key = key.substr(2);  // x.%X3 is x.3
+    if ((isInteger(t->kind) || isBitString(t->kind)) && !key.empty() && !std::isdigit(static_cast<unsigned char>(key[0]))) {
+        // CODESYS: w.BIT_FIVE with an integer CONSTANT as the bit number.
+        VarSym* k = lookupVar(key);
+        if (k && k->hasConstValue && isInteger(k->type->kind) && k->constInt >= 0 && k->constInt < 64) key = std::to_string(k->constInt);
+    }
     if (!key.empty() && std::isdigit(static_cast<unsigned char>(key[0]))) {
         // Bit access x.3
         TK k = t->kind;
@@ -910,6 +916,15 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         if (isReal(target->kind)) return constReal(e.constReal, target, e.loc);
         e = settle(e);
         from = e.type;
+    }
+    if (isCharType(target->kind) && isStringType(from->kind) && e.isConst) {
+        // c : CHAR := 'A': a one-character string literal is that character.
+        if (auto* bytes = dynamic_cast<exec::ConstBytes*>(e.node)) {
+            bool wide = from->kind == TK::WString;
+            int64_t first = wide ? (bytes->bytes[0] | (bytes->bytes[1] << 8)) : bytes->bytes[0];
+            int64_t second = wide ? (bytes->bytes.size() > 3 ? (bytes->bytes[2] | (bytes->bytes[3] << 8)) : 0) : (bytes->bytes.size() > 1 ? bytes->bytes[1] : 0);
+            if (first != 0 && second == 0 && (target->kind == TK::WChar || first < 256)) return constInt(first, target, e.loc);
+        }
     }
     if (e.flexibleLiteral && isNumeric(from->kind) && (isNumeric(target->kind) || isBitString(target->kind)) && !sameType(from, target)) {
         Checked c = convert(e, target, loc);

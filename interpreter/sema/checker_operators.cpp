@@ -358,6 +358,10 @@ Checked Checker::makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& l
     r.loc = loc;
     r.hasCall = a.hasCall || b.hasCall;
     r.type = types().elementary(TK::Bool);
+    // c = 'y' with c : CHAR compares characters.
+    if (isCharType(a.type->kind) && isStringType(b.type->kind) && b.isConst) b = coerce(b, a.type, b.loc, "operand");
+    else if (isCharType(b.type->kind) && isStringType(a.type->kind) && a.isConst) a = coerce(a, b.type, a.loc, "operand");
+    if (!a.ok || !b.ok) return bad(loc);
     const Type* t = commonType(a, b, loc, false);
     if (!t || t->kind == TK::Struct || t->kind == TK::FunctionBlock || t->kind == TK::Array) {
         if (t && (op == ast::Op::Eq || op == ast::Op::Ne) && sameType(a.type, b.type)) {

@@ -1,9 +1,13 @@
 #include "stdlib/bind/register_builtins.h"
 
+#include <string>
+
 #include "interpreter/sema/checker.h"
 #include "stdlib/bind/register_groups.h"
 
 namespace strun::stdlib {
+
+void registerParameterAliases(sema::Checker& checker);
 
 void registerBuiltins(sema::Checker& checker) {
     bind::registerNumeric(checker);
@@ -12,6 +16,24 @@ void registerBuiltins(sema::Checker& checker) {
     bind::registerConvert(checker);
     bind::registerTime(checker);
     bind::registerClock(checker);
+    registerParameterAliases(checker);
+}
+
+// The bistables and counters answer to both the IEC 61131-3 input names
+// (SR.S1, RS.R1, CTU.R, CTD.LD) and the CODESYS ones (SR.SET1, RS.RESET1,
+// CTU.RESET, CTD.LOAD); stdlib/st declares the names in the first column.
+void registerParameterAliases(sema::Checker& checker) {
+    checker.addParameterAlias("SR", "S1", "SET1");
+    checker.addParameterAlias("SR", "R", "RESET");
+    checker.addParameterAlias("RS", "S", "SET");
+    checker.addParameterAlias("RS", "R1", "RESET1");
+    for (const char* suffix : {"", "_DINT", "_LINT", "_UDINT", "_ULINT"}) {
+        std::string s = suffix;
+        checker.addParameterAlias("CTU" + s, "RESET", "R");
+        checker.addParameterAlias("CTD" + s, "LOAD", "LD");
+        checker.addParameterAlias("CTUD" + s, "RESET", "R");
+        checker.addParameterAlias("CTUD" + s, "LOAD", "LD");
+    }
 }
 
 }  // namespace strun::stdlib
