@@ -138,6 +138,7 @@ struct TypeSpec {
     ExprPtr lo, hi;                    // Subrange bounds
     std::vector<EnumValue> enumValues; // Enum
     std::vector<VarDecl> fields;       // Struct
+    std::vector<Arg> initArgs;         // Named: CODESYS `fb : FB(1, x := 2)` — arguments of FB_init
 };
 
 enum class InitKind {

@@ -133,6 +133,10 @@ TypeSpecPtr AstBuilder::typeSpec(P::TypeSpecContext* c) {
         if (sr->qualifiedName()) out->elem = namedType(sr->qualifiedName());
         out->lo = sr->expression(0) ? expr(sr->expression(0)) : placeholder(out->loc);
         out->hi = sr->expression(1) ? expr(sr->expression(1)) : placeholder(out->loc);
+    } else if (auto* ia = dynamic_cast<P::InstanceArgsTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Named;
+        out->name = text(ia->qualifiedName());
+        out->initArgs = args(ia->argList());
     } else if (auto* n = dynamic_cast<P::NamedTypeContext*>(c)) {
         out->kind = TypeSpecKind::Named;
         out->name = text(n->qualifiedName());

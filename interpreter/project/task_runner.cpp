@@ -5,7 +5,7 @@
 
 namespace strun::project {
 
-TaskRunner::TaskRunner(sema::ProgramModel& model, const sema::ConfiguredTask& task) : calls_(task.calls) {
+TaskRunner::TaskRunner(sema::ProgramModel& model, const sema::ConfiguredTask& task) : model_(model), calls_(task.calls) {
     // Deep enough for kMaxCallDepth nested frames of the largest POU, plus temporaries.
     size_t frame = static_cast<size_t>(model.maxFrameSize) + 64;
     stack_.resize(frame * (exec::kMaxCallDepth + 2) + 4096);
@@ -14,9 +14,30 @@ TaskRunner::TaskRunner(sema::ProgramModel& model, const sema::ConfiguredTask& ta
     ctx_.faultSink = sink_.data();
 }
 
+// CODESYS FB_init calls, once, on the first activation of any task.
+void TaskRunner::runInitCalls() {
+    model_.initDone = true;
+    exec::Ctx& c = ctx_;
+    for (exec::Stmt* s : model_.initCalls) {
+        c.depth = 0;
+        c.stackTop = stack_.data();
+        c.stackEnd = stack_.data() + stack_.size();
+        c.frame = c.stackTop;
+        c.stackTop = c.frame + model_.maxFrameSize;
+        c.self = nullptr;
+        c.pouName = nullptr;
+        s->exec(c);
+        if (c.aborting) return;
+    }
+}
+
 bool TaskRunner::runActivation() {
     exec::Ctx& c = ctx_;
     c.aborting = false;
+    if (!model_.initDone) {
+        runInitCalls();
+        if (c.aborting) return false;
+    }
     for (const sema::Invocation& inv : calls_) {
         c.depth = 0;
         c.stackTop = stack_.data();

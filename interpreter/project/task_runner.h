@@ -19,6 +19,8 @@ public:
     bool currentPosition(std::string& pou, int& line) const override;
 
 private:
+    void runInitCalls();
+    sema::ProgramModel& model_;
     std::vector<sema::Invocation> calls_;
     std::vector<uint8_t> stack_;
     std::vector<uint8_t> sink_;

@@ -154,6 +154,9 @@ private:
         return false;
     }
     void warnUnused();
+    // ---- CODESYS FB_init (checker_fb_init.cpp)
+    void buildFbInitCalls();
+    void collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth);
 
     ProgramModel& model_;
     CompileLog& log_;

@@ -235,6 +235,7 @@ void Checker::run(std::vector<ast::CompilationUnit>& units, bool) {
     buildConfiguration();
     checkBodies();
     if (log_.hasErrors()) return;
+    buildFbInitCalls();
     warnUnused();
 }
 

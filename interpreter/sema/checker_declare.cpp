@@ -344,6 +344,12 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
             return types().create(std::move(t));
         }
         case ast::TypeSpecKind::Enum: {
+            // `fb : FB(a := 1)` parses like a typed enumeration: it is an FB
+            // instance with FB_init arguments (see buildFbInitCalls).
+            if (spec->elem && spec->elem->kind == ast::TypeSpecKind::Named) {
+                auto it = pous_.find(upper(spec->elem->name));
+                if (it != pous_.end() && it->second->kind == ast::PouKind::FunctionBlock) return resolveNamedType(spec->elem->name, spec->loc);
+            }
             // Inline enumeration in a declaration: an anonymous enum type.
             static int counter = 0;
             std::string name = fmt::format("__ENUM_{}_{}", context, counter++);

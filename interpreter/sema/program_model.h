@@ -50,6 +50,10 @@ struct ProgramModel {
     std::deque<ProgramInstance> programs;
     std::vector<VarSym*> globals;                   // in declaration order (for --dump)
     std::vector<ConfiguredTask> tasks;
+    // CODESYS FB_init of every instance that has one, run once before the
+    // first activation of any task (innermost instances first).
+    std::vector<exec::Stmt*> initCalls;
+    bool initDone = false;
     bool hasConfiguration = false;
     uint32_t maxFrameSize = 0;                      // largest frame of any POU (sizes the frame stacks)
     uint32_t largestType = 0;                       // largest element type (sizes the fault sink)

@@ -1,0 +1,93 @@
+// CODESYS FB_init: a function block may declare METHOD FB_init
+// (bInitRetains, bInCopyCode, further inputs); CODESYS calls it once for every
+// instance when the application starts, with the further inputs given on the
+// declaration (`ax : Axis(axisId := 3);` or positionally `Axis(3)`). strun
+// runs these calls before the first activation of any task, embedded
+// instances before the instance that contains them (docs/decisions/0079).
+#include <fmt/format.h>
+
+#include "interpreter/ast/ast_clone.h"
+#include "interpreter/sema/checker.h"
+
+namespace strun::sema {
+
+namespace {
+constexpr int kMaxNesting = 64;  // instances inside instances: far beyond real programs
+}
+
+void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth) {
+    if (!t || depth > kMaxNesting) return;
+    if (t->kind == TK::Array) {
+        if (t->elem && (t->elem->kind == TK::FunctionBlock || t->elem->kind == TK::Struct || t->elem->kind == TK::Array))
+            for (uint64_t k = 0; k < t->elemCount; ++k) collectFbInits(t->elem, addr + k * t->elem->size, nullptr, depth + 1);
+        return;
+    }
+    if (t->kind == TK::Struct) {
+        for (const Type* p = t; p; p = p->parent)
+            for (const auto& f : p->fields) collectFbInits(f.type, addr + f.offset, nullptr, depth + 1);
+        return;
+    }
+    if (t->kind != TK::FunctionBlock || !t->pou) return;
+    PouInfo* fb = t->pou;
+    for (PouInfo* p = fb; p; p = p->parent)
+        for (auto& v : p->ownedVars)
+            if (v->storage == Storage::Self && !v->byRef)
+                collectFbInits(v->type, addr + v->offset, v->decl ? v->decl->type.get() : nullptr, depth + 1);
+    PouInfo* init = fb->kind == ast::PouKind::FunctionBlock ? findMethod(fb, "FB_INIT") : nullptr;
+    if (!init) return;
+    ast::Expr call;
+    call.kind = ast::ExprKind::Call;
+    call.loc = declSpec ? declSpec->loc : init->ast->loc;
+    auto callee = std::make_unique<ast::Expr>();
+    callee->kind = ast::ExprKind::Name;
+    callee->loc = call.loc;
+    callee->name = "FB_init";
+    call.kids.push_back(std::move(callee));
+    if (declSpec) {
+        for (const auto& a : declSpec->initArgs) call.args.push_back(ast::cloneArg(a));
+        for (const auto& ev : declSpec->enumValues) {  // `FB(a := 1)` arrives as a typed-enumeration spec
+            ast::Arg a;
+            a.loc = ev.loc;
+            if (ev.value) {
+                a.name = ev.name;
+                a.value = ast::cloneExpr(*ev.value);
+            } else {
+                a.value = std::make_unique<ast::Expr>();
+                a.value->kind = ast::ExprKind::Name;
+                a.value->loc = ev.loc;
+                a.value->name = ev.name;
+            }
+            call.args.push_back(std::move(a));
+        }
+    }
+    // Positional arguments skip the two implicit inputs, as in CODESYS.
+    size_t implicit = 0;
+    for (VarSym* p : init->params)
+        if (upper(p->name) == "BINITRETAINS" || upper(p->name) == "BINCOPYCODE") ++implicit;
+    if (implicit == 2)
+        for (auto& a : call.args)
+            if (a.name.empty()) {
+                size_t index = &a - &call.args.front() + implicit;
+                if (index < init->params.size()) a.name = init->params[index]->name;
+            }
+    auto* instance = pool().make<exec::AbsVar<void>>(addr);
+    instance->type = t;
+    Checked c = callUserFunction(init, call, instance);
+    if (!c.ok) return;
+    model_.initCalls.push_back(pool().make<exec::EvalStmt>(c.node, exec::EvalStmt::Rep::Int));
+}
+
+void Checker::buildFbInitCalls() {
+    model_.names.push_back("FB_init");
+    currentPouName_ = &model_.names.back();
+    pou_ = nullptr;
+    frameTop_ = 0;
+    for (VarSym* g : model_.globals)
+        if (g->abs) collectFbInits(g->type, g->abs, g->decl ? g->decl->type.get() : nullptr, 0);
+    for (auto& prog : model_.programs) collectFbInits(prog.pou->instanceType, prog.memory, nullptr, 0);
+    // Temporaries of the FB_init calls (aggregate results) live in the frame they run in.
+    model_.maxFrameSize = std::max(model_.maxFrameSize, (frameTop_ + 15) / 16 * 16);
+    currentPouName_ = nullptr;
+}
+
+}  // namespace strun::sema
