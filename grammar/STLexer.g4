@@ -115,6 +115,8 @@ TYPE               : T Y P E;
 END_TYPE           : E N D '_' T Y P E;
 STRUCT             : S T R U C T;
 END_STRUCT         : E N D '_' S T R U C T;
+UNION              : U N I O N;
+END_UNION          : E N D '_' U N I O N;
 ARRAY              : A R R A Y;
 OF                 : O F;
 STRING             : S T R I N G;

@@ -102,6 +102,7 @@ typeSpec
     | REFERENCE TO typeSpec                                                  # referenceType
     | (STRING | WSTRING) (LBRACK expression RBRACK | LPAREN expression RPAREN)?   # stringType
     | STRUCT varDecl* END_STRUCT                                             # structType
+    | UNION varDecl* END_UNION                                               # unionType   // CODESYS: members share storage
     | LPAREN enumValue (COMMA enumValue)* RPAREN qualifiedName?              # enumType
     | qualifiedName LPAREN expression DOTDOT expression RPAREN               # subrangeType
     | qualifiedName LPAREN enumValue (COMMA enumValue)* RPAREN               # typedEnumType

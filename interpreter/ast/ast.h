@@ -139,6 +139,7 @@ struct TypeSpec {
     std::vector<EnumValue> enumValues; // Enum
     std::vector<VarDecl> fields;       // Struct
     std::vector<Arg> initArgs;         // Named: CODESYS `fb : FB(1, x := 2)` — arguments of FB_init
+    bool isUnion = false;              // Struct written UNION ... END_UNION (CODESYS): members overlap
 };
 
 enum class InitKind {

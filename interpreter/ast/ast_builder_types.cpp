@@ -120,6 +120,10 @@ TypeSpecPtr AstBuilder::typeSpec(P::TypeSpecContext* c) {
     } else if (auto* st = dynamic_cast<P::StructTypeContext*>(c)) {
         out->kind = TypeSpecKind::Struct;
         for (auto* d : st->varDecl()) out->fields.push_back(varDecl(d, VarSection::Var));
+    } else if (auto* un = dynamic_cast<P::UnionTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Struct;
+        out->isUnion = true;
+        for (auto* d : un->varDecl()) out->fields.push_back(varDecl(d, VarSection::Var));
     } else if (auto* e = dynamic_cast<P::EnumTypeContext*>(c)) {
         out->kind = TypeSpecKind::Enum;
         for (auto* v : e->enumValue()) out->enumValues.push_back(enumValue(v));

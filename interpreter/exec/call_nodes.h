@@ -241,6 +241,18 @@ struct TryCastInterface final : Expr {
     }
 };
 
+// CODESYS __QUERYINTERFACE(source, dest): dest := source ?= ..., TRUE when it held.
+struct QueryInterface final : Expr {
+    Expr* cast;  // a TryCastInterface
+    Expr* dest;  // place of the interface variable
+    QueryInterface(Expr* c, Expr* d) : cast(c), dest(d) {}
+    int64_t i(Ctx& c) override {
+        int64_t v = cast->i(c);
+        storeAs<int64_t>(dest->addr(c), v);
+        return v != 0;
+    }
+};
+
 // A place in the frame being bound (argument stores of CallPou).
 template <class T>
 struct PendingVar final : Expr {

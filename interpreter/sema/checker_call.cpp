@@ -249,6 +249,32 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             r.node->type = r.type;
             return r;
         }
+        if (key == "__QUERYINTERFACE") {
+            if (e.args.size() != 2 || !e.args[0].value || !e.args[1].value) {
+                error(e.loc, "__QUERYINTERFACE takes a source and a destination interface");
+                return bad(e.loc);
+            }
+            Checked src = checkExpr(*e.args[0].value);
+            Checked dst = checkExpr(*e.args[1].value);
+            if (!src.ok || !dst.ok) return bad(e.loc);
+            if (dst.type->kind != TK::Interface || !dst.isPlace) {
+                error(e.args[1].value->loc, "__QUERYINTERFACE needs an interface variable as destination");
+                return bad(e.loc);
+            }
+            exec::Expr* addr = src.type->kind == TK::Interface ? src.node
+                               : (src.type->kind == TK::FunctionBlock && src.isPlace) ? pool().make<exec::AddressOf>(src.node) : nullptr;
+            if (!addr) {
+                error(e.args[0].value->loc, fmt::format("__QUERYINTERFACE needs an interface or an instance, not {}", typeName(src.type)));
+                return bad(e.loc);
+            }
+            Checked r;
+            r.ok = true;
+            r.loc = e.loc;
+            r.type = types().elementary(TK::Bool);
+            r.node = pool().make<exec::QueryInterface>(pool().make<exec::TryCastInterface>(addr, dst.type->pou), dst.node);
+            r.node->type = r.type;
+            return r;
+        }
         if (key == "__ISVALIDREF") {
             if (e.args.size() != 1 || !e.args[0].value) {
                 error(e.loc, "__ISVALIDREF takes one reference");

@@ -184,7 +184,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         }
         std::vector<uint8_t> image;
         if (t->parent) image = t->parent->defaultImage.empty() ? std::vector<uint8_t>(t->parent->size) : t->parent->defaultImage;
-        std::vector<std::pair<const ast::VarDecl*, size_t>> inits;
+        uint32_t unionSize = 0;
         for (const auto& f : spec->fields) {
             const Type* ft = resolveTypeSpec(f.type.get(), decl->name);
             if (!ft) continue;
@@ -193,13 +193,20 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
                     error(f.loc, fmt::format("duplicate member '{}' in structure '{}'", f.names[n], decl->name));
                     continue;
                 }
+                align = std::max(align, ft->align);
+                if (spec->isUnion) {
+                    // UNION: every member starts at the union's first byte.
+                    t->fields.push_back({f.names[n], ft, 0, n < f.nameLocs.size() ? f.nameLocs[n] : f.loc});
+                    unionSize = std::max(unionSize, ft->size);
+                    continue;
+                }
                 off = alignUp(off, ft->align);
                 t->fields.push_back({f.names[n], ft, off, n < f.nameLocs.size() ? f.nameLocs[n] : f.loc});
                 off += ft->size;
-                align = std::max(align, ft->align);
                 if (off > kMaxStorage) { error(f.loc, "structure too large"); off = 0; break; }
             }
         }
+        if (spec->isUnion) off = std::max(off, unionSize);
         t->size = alignUp(off, align);
         t->align = align;
         image.resize(t->size);
