@@ -85,7 +85,7 @@ private:
                      std::vector<Field>* instanceFields);
     void declareGlobals();
     void foldConstant(VarSym& v, const ast::VarDecl& decl);
-    VarSym* addGlobal(const ast::VarDecl& decl, size_t nameIndex, const ast::VarBlock& block);
+    VarSym* addGlobal(const ast::VarDecl& decl, size_t nameIndex, const ast::VarBlock& block, uint32_t& listSize);
     bool constIntExpr(const ast::Expr* e, int64_t& out, const char* what);
     void writeInitial(uint8_t* base, const Type* t, const ast::Init* init, const ast::Loc& loc);
     void writeDefault(uint8_t* base, const Type* t);

@@ -645,7 +645,7 @@ void Checker::foldConstant(VarSym& v, const ast::VarDecl& decl) {
 
 // ---------------------------------------------------------------- globals
 
-VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlock& block) {
+VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlock& block, uint32_t& listSize) {
     const std::string& name = decl.names[n];
     ast::Loc loc = n < decl.nameLocs.size() ? decl.nameLocs[n] : decl.loc;
     std::string key = upper(name);
@@ -672,9 +672,14 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
         if (!v->abs) return nullptr;
         if (decl.init) writeInitial(v->abs, t, decl.init.get(), decl.loc);
     } else {
-        v->abs = model_.allocate(t->size);
-        writeDefault(v->abs, t);
-        if (decl.init) writeInitial(v->abs, t, decl.init.get(), decl.loc);
+        // Placed in its list's block once the whole list is laid out (declareGlobals).
+        listSize = alignUp(listSize, t->align);
+        v->offset = listSize;
+        listSize += std::max<uint32_t>(t->size, 1);
+        if (listSize > kMaxStorage) {
+            error(loc, "global variable list too large (above 256 MiB)");
+            listSize = 0;
+        }
     }
     if (block.constant && decl.init) foldConstant(*v, decl);
     VarSym* raw = v.get();
@@ -685,11 +690,24 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
 }
 
 void Checker::declareGlobals() {
+    // Each global list (a VAR_GLOBAL file, a configuration, a resource) owns
+    // one block of storage; its variables sit at fixed offsets in it.
     auto declareBlocks = [&](const std::vector<ast::VarBlock>& blocks) {
+        uint32_t size = 0;
+        std::vector<VarSym*> placed;
         for (const auto& block : blocks) {
             if (block.section != ast::VarSection::Global) continue;
             for (const auto& decl : block.vars)
-                for (size_t n = 0; n < decl.names.size(); ++n) addGlobal(decl, n, block);
+                for (size_t n = 0; n < decl.names.size(); ++n)
+                    if (VarSym* v = addGlobal(decl, n, block, size); v && !v->abs) placed.push_back(v);
+        }
+        if (placed.empty()) return;
+        uint8_t* storage = model_.allocate(size);
+        for (VarSym* v : placed) {
+            v->abs = storage + v->offset;
+            v->offset = 0;  // an Abs variable's address is `abs` itself
+            writeDefault(v->abs, v->type);
+            if (v->decl->init) writeInitial(v->abs, v->type, v->decl->init.get(), v->decl->loc);
         }
     };
     for (auto* list : globalLists_) declareBlocks(list->blocks);
