@@ -253,21 +253,6 @@ struct QueryInterface final : Expr {
     }
 };
 
-// A place in the frame being bound (argument stores of CallPou).
-template <class T>
-struct PendingVar final : Expr {
-    uint32_t off;
-    explicit PendingVar(uint32_t o) : off(o) {}
-    uint8_t* addr(Ctx& c) override { return c.pending + off; }
-    int64_t i(Ctx& c) override {
-        if constexpr (std::is_void_v<T>) return 0;
-        else return toI(loadAs<T>(c.pending + off));
-    }
-    double f(Ctx& c) override {
-        if constexpr (std::is_void_v<T>) return 0;
-        else return toF(loadAs<T>(c.pending + off));
-    }
-};
 
 // Binds a VAR_IN_OUT: stores the address of the caller's place into the slot.
 struct BindAddress final : Stmt {

@@ -41,54 +41,47 @@ struct ConstBytes final : Expr {
     uint8_t* addr(Ctx&) override { return bytes.data(); }
 };
 
-// Variable in the current instance (PROGRAM / FB body, method of an FB).
-template <class T>
-struct SelfVar final : Expr {
-    uint32_t off;
-    explicit SelfVar(uint32_t o) : off(o) {}
-    uint8_t* addr(Ctx& c) override { return c.self + off; }
+// Where a variable's storage is: its address is a base plus a fixed offset.
+//   Self    the current PROGRAM / FB instance (bodies and methods)
+//   Frame   the current call frame (function/method locals, VAR_TEMP)
+//   Abs     a fixed address (globals, program instances, the process image)
+//   Pending the frame of a call whose arguments are being bound
+enum class BaseKind : uint8_t { Self, Frame, Abs, Pending };
+
+template <BaseKind B>
+inline uint8_t* baseOf(Ctx& c, uint8_t* abs) {
+    if constexpr (B == BaseKind::Self) return c.self;
+    else if constexpr (B == BaseKind::Frame) return c.frame;
+    else if constexpr (B == BaseKind::Pending) return c.pending;
+    else return abs;
+}
+
+// A variable: one virtual call yields its address or its value as T.
+template <class T, BaseKind B>
+struct VarNode final : Expr {
+    uint32_t off = 0;
+    uint8_t* abs = nullptr;
+    explicit VarNode(uint32_t o) : off(o) {}
+    explicit VarNode(uint8_t* p) : abs(p) {}
+    uint8_t* addr(Ctx& c) override { return baseOf<B>(c, abs) + off; }
     int64_t i(Ctx& c) override {
         if constexpr (std::is_void_v<T>) return 0;
-        else return toI(loadAs<T>(c.self + off));
+        else return toI(loadAs<T>(baseOf<B>(c, abs) + off));
     }
     double f(Ctx& c) override {
         if constexpr (std::is_void_v<T>) return 0;
-        else return toF(loadAs<T>(c.self + off));
+        else return toF(loadAs<T>(baseOf<B>(c, abs) + off));
     }
 };
 
-// Variable in the current call frame (function/method locals, VAR_TEMP).
 template <class T>
-struct FrameVar final : Expr {
-    uint32_t off;
-    explicit FrameVar(uint32_t o) : off(o) {}
-    uint8_t* addr(Ctx& c) override { return c.frame + off; }
-    int64_t i(Ctx& c) override {
-        if constexpr (std::is_void_v<T>) return 0;
-        else return toI(loadAs<T>(c.frame + off));
-    }
-    double f(Ctx& c) override {
-        if constexpr (std::is_void_v<T>) return 0;
-        else return toF(loadAs<T>(c.frame + off));
-    }
-};
-
-// Variable at a fixed address: globals, program instances seen from the
-// configuration, the process image.
+using SelfVar = VarNode<T, BaseKind::Self>;
 template <class T>
-struct AbsVar final : Expr {
-    uint8_t* p;
-    explicit AbsVar(uint8_t* ptr) : p(ptr) {}
-    uint8_t* addr(Ctx&) override { return p; }
-    int64_t i(Ctx&) override {
-        if constexpr (std::is_void_v<T>) return 0;
-        else return toI(loadAs<T>(p));
-    }
-    double f(Ctx&) override {
-        if constexpr (std::is_void_v<T>) return 0;
-        else return toF(loadAs<T>(p));
-    }
-};
+using FrameVar = VarNode<T, BaseKind::Frame>;
+template <class T>
+using AbsVar = VarNode<T, BaseKind::Abs>;
+template <class T>
+using PendingVar = VarNode<T, BaseKind::Pending>;
 
 // Storage reached through a computed address (subscript, dereference, member of those).
 template <class T>
@@ -187,7 +180,6 @@ uint8_t* indexFault(Ctx& c, const Site& site, int64_t value, int64_t lo, int64_t
 
 // a[i] on an array variable at a known place (instance, frame or absolute):
 // the element address and its load in one node, the hot path of array code.
-enum class BaseKind : uint8_t { Self, Frame, Abs };
 struct Index1Fields {
     uint32_t off = 0;
     uint8_t* abs = nullptr;
@@ -201,7 +193,7 @@ struct Index1Var final : Expr, Index1Fields {
     uint8_t* addr(Ctx& c) override {
         int64_t k = index->i(c) - lo;
         if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return indexFault(c, site, k + lo, lo, count);
-        uint8_t* base = B == BaseKind::Self ? c.self + off : B == BaseKind::Frame ? c.frame + off : abs;
+        uint8_t* base = B == BaseKind::Abs ? abs : baseOf<B>(c, nullptr) + off;
         return base + static_cast<uint64_t>(k) * stride;
     }
     int64_t i(Ctx& c) override {

@@ -41,26 +41,7 @@ inline Rep arithmeticRep(Rep r) {
     }
 }
 
-// N<T> for the C++ storage type of `rep` (BOOL stored as uint8_t 0/1).
-template <template <class> class N, class... A>
-exec::Expr* makeByRep(exec::NodePool& pool, Rep rep, A&&... args) {
-    switch (rep) {
-        case Rep::I8: return pool.make<N<int8_t>>(std::forward<A>(args)...);
-        case Rep::I16: return pool.make<N<int16_t>>(std::forward<A>(args)...);
-        case Rep::I32: return pool.make<N<int32_t>>(std::forward<A>(args)...);
-        case Rep::I64: return pool.make<N<int64_t>>(std::forward<A>(args)...);
-        case Rep::U8: case Rep::Bool: return pool.make<N<uint8_t>>(std::forward<A>(args)...);
-        case Rep::U16: return pool.make<N<uint16_t>>(std::forward<A>(args)...);
-        case Rep::U32: return pool.make<N<uint32_t>>(std::forward<A>(args)...);
-        case Rep::U64: return pool.make<N<uint64_t>>(std::forward<A>(args)...);
-        case Rep::F32: return pool.make<N<float>>(std::forward<A>(args)...);
-        case Rep::F64: return pool.make<N<double>>(std::forward<A>(args)...);
-        case Rep::Void: return pool.make<N<void>>(std::forward<A>(args)...);
-    }
-    return nullptr;
-}
-
-// Same for integer-only node templates (no float/void instantiation).
+// Integer-only node templates (no float/void instantiation).
 template <template <class> class N, class... A>
 exec::Expr* makeIntByRep(exec::NodePool& pool, Rep rep, A&&... args) {
     switch (rep) {
@@ -72,6 +53,17 @@ exec::Expr* makeIntByRep(exec::NodePool& pool, Rep rep, A&&... args) {
         case Rep::U16: return pool.make<N<uint16_t>>(std::forward<A>(args)...);
         case Rep::U32: return pool.make<N<uint32_t>>(std::forward<A>(args)...);
         default: return pool.make<N<uint64_t>>(std::forward<A>(args)...);
+    }
+}
+
+// N<T> for the C++ storage type of `rep` (BOOL stored as uint8_t 0/1).
+template <template <class> class N, class... A>
+exec::Expr* makeByRep(exec::NodePool& pool, Rep rep, A&&... args) {
+    switch (rep) {
+        case Rep::F32: return pool.make<N<float>>(std::forward<A>(args)...);
+        case Rep::F64: return pool.make<N<double>>(std::forward<A>(args)...);
+        case Rep::Void: return pool.make<N<void>>(std::forward<A>(args)...);
+        default: return makeIntByRep<N>(pool, rep, std::forward<A>(args)...);
     }
 }
 

@@ -151,33 +151,24 @@ const Type* TypeTable::array(const Type* elem, std::vector<ArrayDim> dims, bool 
     return &storage_.back();
 }
 
-const Type* TypeTable::pointer(const Type* target) {
-    auto it = pointers_.find(target);
-    if (it != pointers_.end()) return it->second;
+// POINTER TO x and REFERENCE TO x: one 8-byte address type per target, cached.
+const Type* TypeTable::indirect(TK kind, const Type* target, std::map<const Type*, const Type*>& cache) {
+    auto it = cache.find(target);
+    if (it != cache.end()) return it->second;
     Type t;
-    t.kind = TK::Pointer;
-    t.name = "POINTER TO " + target->name;
+    t.kind = kind;
+    t.name = (kind == TK::Pointer ? "POINTER TO " : "REFERENCE TO ") + target->name;
     t.target = target;
     t.size = 8;
     t.align = 8;
     storage_.push_back(t);
-    pointers_[target] = &storage_.back();
+    cache[target] = &storage_.back();
     return &storage_.back();
 }
 
-const Type* TypeTable::reference(const Type* target) {
-    auto it = references_.find(target);
-    if (it != references_.end()) return it->second;
-    Type t;
-    t.kind = TK::Reference;
-    t.name = "REFERENCE TO " + target->name;
-    t.target = target;
-    t.size = 8;
-    t.align = 8;
-    storage_.push_back(t);
-    references_[target] = &storage_.back();
-    return &storage_.back();
-}
+const Type* TypeTable::pointer(const Type* target) { return indirect(TK::Pointer, target, pointers_); }
+
+const Type* TypeTable::reference(const Type* target) { return indirect(TK::Reference, target, references_); }
 
 Type* TypeTable::create(Type t) {
     storage_.push_back(std::move(t));

@@ -113,6 +113,7 @@ public:
     const Type* voidType() const { return elementary(TK::Void); }
 
 private:
+    const Type* indirect(TK kind, const Type* target, std::map<const Type*, const Type*>& cache);
     std::deque<Type> storage_;
     std::vector<const Type*> elementary_;
     std::map<std::string, const Type*> names_;
