@@ -49,6 +49,7 @@ inline uint8_t* writePieces(Ctx& c, uint32_t off, uint32_t maxLen, const stdlib:
     size_t n = 0;
     for (const auto& part : r.part) {
         size_t k = std::min<size_t>(part.size(), maxLen - n);
+        if (k == 0) continue;  // an empty slice may have no data pointer at all
         std::memcpy(dst + n, part.data(), k * sizeof(Ch));
         n += k;
     }
