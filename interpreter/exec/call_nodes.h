@@ -217,14 +217,11 @@ struct SelfAddress final : Expr {
 };
 
 // An interface or pointer value used as an instance: the address it holds.
+// No null check here: the method dispatch that follows reports NULL_POINTER once.
 struct AddressValuePlace final : Expr {
     Expr* value;
-    Site site;
-    AddressValuePlace(Expr* v, Site s) : value(v), site(s) {}
-    uint8_t* addr(Ctx& c) override {
-        auto p = reinterpret_cast<uint8_t*>(static_cast<intptr_t>(value->i(c)));
-        return p;
-    }
+    explicit AddressValuePlace(Expr* v) : value(v) {}
+    uint8_t* addr(Ctx& c) override { return reinterpret_cast<uint8_t*>(static_cast<intptr_t>(value->i(c))); }
 };
 
 // itf ?= instance-or-interface: the address when the instance's class

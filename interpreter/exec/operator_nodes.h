@@ -61,6 +61,18 @@ STRUN_INT_BINOP_CONST(OrIK, a | b)
 STRUN_INT_BINOP_CONST(XorIK, a ^ b)
 #undef STRUN_INT_BINOP_CONST
 
+// Changes the unit of a time/date value: * mul, or / div (toward zero) then * mul.
+struct ScaleUnits final : Expr {
+    Expr* a;
+    int64_t mul, div;
+    ScaleUnits(Expr* x, int64_t m, int64_t d) : a(x), mul(m), div(d) {}
+    int64_t i(Ctx& c) override {
+        int64_t v = a->i(c);
+        if (div > 1) v /= div;
+        return static_cast<int64_t>(static_cast<uint64_t>(v) * static_cast<uint64_t>(mul));
+    }
+};
+
 // A time of day kept within one day (TOD + TIME wraps at midnight).
 struct WrapModulo final : Expr {
     Expr* a;

@@ -33,7 +33,7 @@ class Checker {
 public:
     Checker(ProgramModel& model, CompileLog& log);
     // Checks every unit; fills the model (program instances, tasks, code).
-    void run(std::vector<ast::CompilationUnit>& units, bool stdlibUnits = false);
+    void run(std::vector<ast::CompilationUnit>& units);
 
     // ---- services for standard-library bindings
     exec::NodePool& pool() { return model_.pool; }
@@ -70,7 +70,6 @@ public:
     // Stores `value` (already of type t) into `place`.
     exec::Stmt* storeTo(exec::Expr* place, const Type* t, exec::Expr* value, int bit = -1);
     const std::string* currentPouName() const { return currentPouName_; }
-    int64_t currentTimeProbe = 0;
 
 private:
     friend struct CheckerAccess;
@@ -160,7 +159,6 @@ private:
 
     ProgramModel& model_;
     CompileLog& log_;
-    bool stdlibMode_ = false;
 
     // declarations by upper-case name
     std::map<std::string, ast::TypeDecl*> typeDecls_;

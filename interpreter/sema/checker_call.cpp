@@ -203,7 +203,6 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             const Type* t = nullptr;
             const ast::Expr& a = *e.args[0].value;
             if (a.kind == ast::ExprKind::Name && !lookupVar(upper(a.name))) {
-                CompileLog quiet;
                 t = types().byName(upper(a.name));
                 if (!t && (typeDecls_.count(upper(a.name)) || pous_.count(upper(a.name)))) t = resolveNamedType(a.name, a.loc);
             }

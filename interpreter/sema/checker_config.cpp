@@ -48,7 +48,6 @@ void Checker::buildConfiguration() {
         buildDefaultConfiguration();
         return;
     }
-    model_.hasConfiguration = true;
     if (configurations_.size() > 1)
         error(configurations_[1]->loc, "only one CONFIGURATION per project");
     ast::Configuration& conf = *configurations_.front();
@@ -224,7 +223,7 @@ void Checker::buildConfiguration() {
 
 // ---------------------------------------------------------------- driver
 
-void Checker::run(std::vector<ast::CompilationUnit>& units, bool) {
+void Checker::run(std::vector<ast::CompilationUnit>& units) {
     for (auto& u : units) collect(u);
     // Types and enumerations first, so that enumeration values are known everywhere.
     for (auto& [key, decl] : typeDecls_) resolveTypeDecl(key, decl->loc);

@@ -797,31 +797,6 @@ bool implicitOk(const Type* from, const Type* to) {
 }
 }  // namespace
 
-struct ScaleConv final : exec::Expr {
-    exec::Expr* a;
-    int64_t mul, div;
-    ScaleConv(exec::Expr* x, int64_t m, int64_t d) : a(x), mul(m), div(d) {}
-    int64_t i(exec::Ctx& c) override {
-        int64_t v = a->i(c);
-        if (div > 1) {
-            int64_t q = v / div;
-            return q * mul;
-        }
-        return static_cast<int64_t>(static_cast<uint64_t>(v) * static_cast<uint64_t>(mul));
-    }
-};
-
-struct ModConv final : exec::Expr {  // DT -> TOD: seconds of the day in ms
-    exec::Expr* a;
-    int64_t mod, mul;
-    ModConv(exec::Expr* x, int64_t m, int64_t k) : a(x), mod(m), mul(k) {}
-    int64_t i(exec::Ctx& c) override {
-        int64_t v = a->i(c) % mod;
-        if (v < 0) v += mod;
-        return v * mul;
-    }
-};
-
 Checked Checker::convert(Checked e, const Type* target, const ast::Loc& loc, bool truncate) {
     if (!e.ok) return e;
     e = settle(e);
@@ -841,13 +816,6 @@ Checked Checker::convert(Checked e, const Type* target, const ast::Loc& loc, boo
     exec::Expr* n = nullptr;
     auto intConv = [&](exec::Expr* src) { return makeIntByRep<exec::ConvIntInt>(pool(), repOf(target), src); };
     // Time/date scaling between encodings (TIME ms, LTIME ns, DATE/DT s, TOD ms, L-forms ns).
-    auto scaleOf = [](TK k) -> int64_t {
-        switch (k) {
-            case TK::Time: case TK::Tod: return 1000000;
-            case TK::Date: case TK::Dt: return 1000000000;
-            default: return 1;
-        }
-    };
     bool fTimeDate = isTimeLike(f) || isDateLike(f);
     bool tTimeDate = isTimeLike(t) || isDateLike(t);
     if (target->kind == TK::Bool) {
@@ -870,17 +838,17 @@ Checked Checker::convert(Checked e, const Type* target, const ast::Loc& loc, boo
     } else if (fTimeDate && tTimeDate) {
         if ((f == TK::Dt || f == TK::LDt) && (t == TK::Tod || t == TK::LTod)) {
             int64_t perDay = f == TK::Dt ? 86400 : 86400000000000LL;
-            int64_t mul = (f == TK::Dt ? 1000000000 : 1) / scaleOf(t);
-            n = intConv(pool().make<ModConv>(e.node, perDay, mul));
+            int64_t mul = (f == TK::Dt ? 1000000000 : 1) / nanosPerUnit(t);
+            n = intConv(pool().make<exec::ScaleUnits>(pool().make<exec::WrapModulo>(e.node, perDay), mul, 1));
         } else if ((f == TK::Dt || f == TK::LDt) && (t == TK::Date || t == TK::LDate)) {
             int64_t perDay = f == TK::Dt ? 86400 : 86400000000000LL;
-            exec::Expr* day = pool().make<ScaleConv>(e.node, perDay, perDay);
-            int64_t sf = scaleOf(f), st = scaleOf(t);
-            n = intConv(sf >= st ? static_cast<exec::Expr*>(pool().make<ScaleConv>(day, sf / st, 1)) : pool().make<ScaleConv>(day, 1, st / sf));
+            exec::Expr* day = pool().make<exec::ScaleUnits>(e.node, perDay, perDay);
+            int64_t sf = nanosPerUnit(f), st = nanosPerUnit(t);
+            n = intConv(sf >= st ? static_cast<exec::Expr*>(pool().make<exec::ScaleUnits>(day, sf / st, 1)) : pool().make<exec::ScaleUnits>(day, 1, st / sf));
         } else {
-            int64_t sf = scaleOf(f), st = scaleOf(t);
-            exec::Expr* s = sf >= st ? static_cast<exec::Expr*>(pool().make<ScaleConv>(e.node, sf / st, 1))
-                                     : static_cast<exec::Expr*>(pool().make<ScaleConv>(e.node, 1, st / sf));
+            int64_t sf = nanosPerUnit(f), st = nanosPerUnit(t);
+            exec::Expr* s = sf >= st ? static_cast<exec::Expr*>(pool().make<exec::ScaleUnits>(e.node, sf / st, 1))
+                                     : static_cast<exec::Expr*>(pool().make<exec::ScaleUnits>(e.node, 1, st / sf));
             n = intConv(s);
         }
     } else if (isIntRep(from) && isIntRep(target)) {

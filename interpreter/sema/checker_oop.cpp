@@ -134,7 +134,7 @@ void Checker::buildClasses() {
 Checked Checker::methodCall(Checked base, PouInfo* method, const ast::Expr& call) {
     exec::Expr* instance = base.node;
     bool viaInterface = base.type->kind == TK::Interface;
-    if (viaInterface) instance = pool().make<exec::AddressValuePlace>(base.node, site(call.loc));
+    if (viaInterface) instance = pool().make<exec::AddressValuePlace>(base.node);
     if (method->ast && method->ast->access == ast::Access::Private && !insideOwnInstance(method->owner))
         error(call.kids[0]->nameLoc.line ? call.kids[0]->nameLoc : call.loc, fmt::format("method '{}' is PRIVATE", method->name));
     Checked r = callUserFunction(method, call, instance);
@@ -192,7 +192,7 @@ Checked Checker::propertyAccess(Checked base, const std::string& key, const ast:
     found = true;
     exec::Expr* instance = base.node;
     bool viaInterface = base.type->kind == TK::Interface;
-    if (viaInterface) instance = pool().make<exec::AddressValuePlace>(base.node, site(loc));
+    if (viaInterface) instance = pool().make<exec::AddressValuePlace>(base.node);
     Checked c;
     c.ok = true;
     c.loc = loc;

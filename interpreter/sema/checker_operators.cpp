@@ -169,13 +169,6 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
     bool aTime = !a.untypedInt && !a.untypedReal && (isTimeLike(ka) || isDateLike(ka));
     bool bTime = !b.untypedInt && !b.untypedReal && (isTimeLike(kb) || isDateLike(kb));
     if (aTime || bTime) {
-        auto timeScale = [](TK k) -> int64_t {  // ns per unit of the encoding
-            switch (k) {
-                case TK::Time: case TK::Tod: return 1000000;
-                case TK::Date: case TK::Dt: return 1000000000;
-                default: return 1;
-            }
-        };
         if ((op == ast::Op::Mul || op == ast::Op::Div) && aTime && isTimeLike(ka) && bNum) {
             r.type = a.type;
             if (b.untypedReal || isReal(kb)) {
@@ -215,16 +208,11 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
                 return bad(loc);
             }
             // Bring both operands to nanoseconds-or-unit of the result.
-            int64_t sr = timeScale(result->kind);
+            int64_t sr = nanosPerUnit(result->kind);
             auto toUnit = [&](Checked v) -> exec::Expr* {
-                int64_t sv = timeScale(v.type->kind);
+                int64_t sv = nanosPerUnit(v.type->kind);
                 if (sv == sr) return v.node;
-                struct Scale final : exec::Expr {
-                    exec::Expr* a; int64_t mul, div;
-                    Scale(exec::Expr* x, int64_t m, int64_t d) : a(x), mul(m), div(d) {}
-                    int64_t i(exec::Ctx& c) override { int64_t q = a->i(c); return div > 1 ? q / div : q * mul; }
-                };
-                return sv > sr ? pool().make<Scale>(v.node, sv / sr, 1) : pool().make<Scale>(v.node, 1, sr / sv);
+                return sv > sr ? pool().make<exec::ScaleUnits>(v.node, sv / sr, 1) : pool().make<exec::ScaleUnits>(v.node, 1, sr / sv);
             };
             exec::Expr* xa = toUnit(x);
             exec::Expr* yb = toUnit(y);

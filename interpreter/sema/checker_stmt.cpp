@@ -207,8 +207,6 @@ exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
     exec::Stmt* st = assignChecked(target, value, s.loc);
     if (st && (value.hasCall || target.hasCall)) {
         // A call inside may have been aborted (watchdog / STOP): stop here too.
-        auto* wrap = pool().make<exec::Block>();
-        wrap->stmts.push_back(st);
         struct AbortCheck final : exec::Stmt {
             exec::Stmt* inner;
             explicit AbortCheck(exec::Stmt* s) : inner(s) {}
@@ -350,7 +348,6 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                 bool isMethod = false;
                 if (callee.kind == ast::ExprKind::Member) {
                     // inst.Method(...) vs. structVar.fbMember(...)
-                    CompileLog probe;
                     Checked base = checkExpr(*callee.kids[0]);
                     if (base.ok && (base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou)
                         isMethod = findMethod(base.type->pou, upper(callee.name)) != nullptr;

@@ -54,7 +54,6 @@ struct ProgramModel {
     // first activation of any task (innermost instances first).
     std::vector<exec::Stmt*> initCalls;
     bool initDone = false;
-    bool hasConfiguration = false;
     uint32_t maxFrameSize = 0;                      // largest frame of any POU (sizes the frame stacks)
     uint32_t largestType = 0;                       // largest element type (sizes the fault sink)
     rt::Machine machine;                            // the process image lives here; addresses point into it

@@ -41,6 +41,14 @@ int bitWidth(TK k) {
     }
 }
 
+int64_t nanosPerUnit(TK k) {
+    switch (k) {
+        case TK::Time: case TK::Tod: return 1000000;
+        case TK::Date: case TK::Dt: return 1000000000;
+        default: return 1;
+    }
+}
+
 TK integerView(TK k) {
     switch (k) {
         case TK::Byte: case TK::Char: return TK::USInt;

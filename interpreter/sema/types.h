@@ -91,7 +91,9 @@ bool isDateLike(TK k);       // DATE, TOD, DT and L-forms
 bool isStringType(TK k);     // STRING, WSTRING
 bool isCharType(TK k);       // CHAR, WCHAR
 bool isElementary(TK k);
-int bitWidth(TK k);          // value bits of integers, bit strings, time/date, chars (BOOL = 1)
+int bitWidth(TK k);
+// Nanoseconds per stored unit of a time/date type (TIME/TOD: ms, DATE/DT: s, L-forms: ns).
+int64_t nanosPerUnit(TK k);          // value bits of integers, bit strings, time/date, chars (BOOL = 1)
 // Scalars are evaluated as 64-bit integers (int64 bit pattern) or doubles.
 bool isIntRep(const Type* t);   // evaluated through Expr::i
 bool isRealRep(const Type* t);  // evaluated through Expr::f
