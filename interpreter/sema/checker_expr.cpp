@@ -837,9 +837,11 @@ Checked Checker::convert(Checked e, const Type* target, const ast::Loc& loc, boo
         n = pool().make<exec::ConvRealInt>(e.node, ii.bits, ii.isSigned, truncate);
     } else if (fTimeDate && tTimeDate) {
         if ((f == TK::Dt || f == TK::LDt) && (t == TK::Tod || t == TK::LTod)) {
+            // The time of day in the source's unit, then rescaled (LDT ns -> TOD ms divides).
             int64_t perDay = f == TK::Dt ? 86400 : 86400000000000LL;
-            int64_t mul = (f == TK::Dt ? 1000000000 : 1) / nanosPerUnit(t);
-            n = intConv(pool().make<exec::ScaleUnits>(pool().make<exec::WrapModulo>(e.node, perDay), mul, 1));
+            exec::Expr* ofDay = pool().make<exec::WrapModulo>(e.node, perDay);
+            int64_t sf = nanosPerUnit(f), st = nanosPerUnit(t);
+            n = intConv(sf >= st ? static_cast<exec::Expr*>(pool().make<exec::ScaleUnits>(ofDay, sf / st, 1)) : pool().make<exec::ScaleUnits>(ofDay, 1, st / sf));
         } else if ((f == TK::Dt || f == TK::LDt) && (t == TK::Date || t == TK::LDate)) {
             int64_t perDay = f == TK::Dt ? 86400 : 86400000000000LL;
             exec::Expr* day = pool().make<exec::ScaleUnits>(e.node, perDay, perDay);
