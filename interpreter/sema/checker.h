@@ -185,7 +185,6 @@ private:
     std::vector<std::pair<ast::Loc, std::string>> pendingJumps_;
     std::set<std::string> definedLabels_;
     bool assignedResult_ = false;
-    std::vector<std::string> pouNames_;
     std::vector<std::unique_ptr<ast::TypeDecl>> inlineEnumDecls_;
     std::set<int> libraryFiles_;
 

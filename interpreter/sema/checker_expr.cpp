@@ -310,7 +310,6 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
         c.constInt = v->constInt;
         c.constReal = v->constReal;
     }
-    if (v->type->kind == TK::FunctionBlock) c.fbInstanceOf = v->type->pou;
     if (v->hasConstValue && (isIntRep(v->type) || isRealRep(v->type))) {
         // A CONSTANT with a constant initial value is its value everywhere.
         exec::Expr* k = isRealRep(v->type) ? static_cast<exec::Expr*>(pool().make<exec::ConstReal>(v->constReal))
@@ -397,7 +396,6 @@ Checked Checker::checkName(const ast::Expr& e) {
             c.directAbs = prog.memory;
             c.node = directNode(pool(), Checked::Direct::Abs, 0, prog.memory, c.type);
             c.node->type = c.type;
-            c.fbInstanceOf = prog.pou;
             return c;
         }
     if (pous_.count(key)) {
@@ -529,7 +527,6 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
         }
     }
     c.type = ft;
-    if (ft->kind == TK::FunctionBlock) c.fbInstanceOf = ft->pou;
     if (byRef) {
         exec::Expr* slot = base.direct != Checked::Direct::None
                                ? directNode(pool(), base.direct, base.directOffset + f->offset, base.directAbs, types().voidType())
@@ -613,7 +610,6 @@ Checked Checker::checkIndex(const ast::Expr& e) {
             c.hasCall = c.hasCall || ix.hasCall;
             n->index.push_back(settle(ix).node);
         }
-        if (t->elem->kind == TK::FunctionBlock) c.fbInstanceOf = t->elem->pou;
         c.node = loadFrom(n, c.type);
         c.node->type = c.type;
         return c;
@@ -660,7 +656,6 @@ Checked Checker::checkIndex(const ast::Expr& e) {
     c.readOnly = base.readOnly;
     c.readOnlyWhy = base.readOnlyWhy;
     c.hasCall = hasCall;
-    if (t->elem->kind == TK::FunctionBlock) c.fbInstanceOf = t->elem->pou;
     if (allConst) {
         c.direct = base.direct;
         c.directOffset = base.directOffset + static_cast<uint32_t>(constOffset);
@@ -728,7 +723,6 @@ Checked Checker::checkExpr(const ast::Expr& e) {
             c.type = p.type->target;
             c.isPlace = true;
             c.hasCall = p.hasCall;
-            if (c.type->kind == TK::FunctionBlock) c.fbInstanceOf = c.type->pou;
             c.node = loadFrom(pool().make<exec::DerefPlace>(p.node, site(e.loc)), c.type);
             c.node->type = c.type;
             return c;

@@ -174,7 +174,6 @@ Checked Checker::checkThis(const ast::Expr& e, bool deref) {
     c.type = t;
     c.isPlace = true;
     c.superRef = super;
-    c.fbInstanceOf = t->pou;
     c.direct = Checked::Direct::Self;
     c.directOffset = 0;
     c.node = pool().make<exec::SelfVar<void>>(0);
@@ -261,7 +260,6 @@ Checked Checker::autoDeref(Checked c) {
     d.hasCall = c.hasCall;
     d.readOnly = c.readOnly;
     d.readOnlyWhy = c.readOnlyWhy;
-    if (target->kind == TK::FunctionBlock) d.fbInstanceOf = target->pou;
     d.node = loadFrom(pool().make<exec::DerefPlace>(c.node, site(c.loc)), target);
     d.node->type = target;
     return d;

@@ -89,7 +89,6 @@ struct Checked {
     bool readOnly = false;     // CONSTANT, or an input seen from outside its POU
     std::string readOnlyWhy;
     VarSym* var = nullptr;     // the variable, when the expression is a plain variable
-    PouInfo* fbInstanceOf = nullptr;  // FB-typed place: its FB
     bool hasCall = false;
     ast::Loc loc;
     bool superRef = false;            // SUPER^: methods bind statically to the parent's
