@@ -7,7 +7,10 @@
 #   path-to-strun  default build/strun
 #   workload       names from benchmarks/workloads (default: all, in the order below)
 # environment: BENCH_REPEATS (default 3) runs per side, best one counts;
-#              LUA (default lua5.4) the Lua interpreter.
+#              LUA (default lua5.4) the Lua interpreter;
+#              BENCH_INSTRUCTIONS=1 also counts the instructions each side
+#              executes (valgrind --tool=callgrind; slow, but exact where wall
+#              times on a shared machine are noisy).
 set -u
 
 bench_dir=$(cd "$(dirname "$0")" && pwd)
@@ -17,7 +20,7 @@ shift $(( $# > 0 ? 1 : 0 ))
 repeats=${BENCH_REPEATS:-3}
 lua=${LUA:-lua5.4}
 
-default_workloads=(int_loops real_math sort sieve fb_calls strings state_machine)
+default_workloads=(int_loops real_math sort sieve fb_calls strings state_machine func_calls conversions fb_methods collatz)
 if (( $# > 0 )); then workloads=("$@"); else workloads=("${default_workloads[@]}"); fi
 
 if [[ ! -x "$strun" ]]; then
@@ -69,6 +72,19 @@ best_time() {
 
 seconds() { awk -v ns="$1" 'BEGIN { printf "%.3f", ns / 1e9 }'; }
 
+# instructions CMD...: the instructions CMD executes (callgrind's Ir total).
+instructions() {
+    valgrind --tool=callgrind --callgrind-out-file="$scratch/cg.out" "$@" >/dev/null 2>"$scratch/cg.err" || { echo "-"; return; }
+    sed -n 's/^summary: *//p' "$scratch/cg.out" | head -n1
+}
+count_instructions=${BENCH_INSTRUCTIONS:-0}
+if [[ "$count_instructions" == 1 ]] && ! command -v valgrind >/dev/null 2>&1; then
+    echo "run.sh: BENCH_INSTRUCTIONS=1 needs valgrind (Debian package valgrind)" >&2
+    exit 2
+fi
+log_sum=0
+log_count=0
+
 echo "strun: $strun   lua: $($lua -v 2>&1 | head -n1 | cut -d" " -f1-2)   best of $repeats runs each"
 row_format="%-14s %9s %9s %13s  %s\n"
 printf "$row_format" "workload" "strun s" "lua s" "strun/lua" "checksum"
@@ -103,7 +119,17 @@ for name in "${workloads[@]}"; do
         verdict="DIFFERS: strun ${values% *}, lua ${values#* }"
     fi
     printf "$row_format" "$name" "$(seconds "$strun_ns")" "$(seconds "$lua_ns")" "$ratio" "$verdict"
+    log_sum=$(awk -v a="$log_sum" -v r="$ratio" 'BEGIN { printf "%.6f", a + log(r) }')
+    log_count=$(( log_count + 1 ))
+    if [[ "$count_instructions" == 1 ]]; then
+        strun_ir=$(instructions "$strun" run --virtual --stmt-cost 0ns --cycles 1 --task Main --dump "$st_file")
+        lua_ir=$(instructions "$lua" "$lua_file")
+        printf "%-14s %s\n" "" "instructions: strun $strun_ir, lua $lua_ir, ratio $(awk -v s="$strun_ir" -v l="$lua_ir" 'BEGIN { if (l > 0) printf "%.2f", s / l; else print "-" }')"
+    fi
 done
+if (( log_count > 0 )); then
+    printf "$row_format" "geomean" "" "" "$(awk -v a="$log_sum" -v n="$log_count" 'BEGIN { printf "%.2f", exp(a / n) }')" ""
+fi
 
 if (( failed )); then
     echo "run.sh: at least one workload failed or disagreed with Lua" >&2

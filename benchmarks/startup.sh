@@ -1,0 +1,129 @@
+#!/usr/bin/env bash
+# Start-up benchmark: what a user waits for before the first cycle runs.
+#   one_line  `strun run --virtual --cycles 1` of a one-statement program
+#             (against `lua5.4 -e` of one statement)
+#   check_20k `strun check` of a generated 20 000-line project (200 function
+#             blocks, 200 functions, one program calling them)
+# Prints the best wall-clock time of each (BENCH_REPEATS runs, default 5).
+#
+# usage: benchmarks/startup.sh [path-to-strun]
+set -u
+strun=${1:-build/strun}
+repeats=${BENCH_REPEATS:-5}
+lua=${LUA:-lua5.4}
+if [[ ! -x "$strun" ]]; then
+    echo "startup.sh: strun not found at '$strun' (build it with 'make build')" >&2
+    exit 2
+fi
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+
+best_ms() {  # best_ms CMD...: the fastest of $repeats runs in ms (exit 1 if a run fails)
+    local best="" r start end ns
+    for (( r = 0; r < repeats; r++ )); do
+        start=$(date +%s%N)
+        "$@" >/dev/null 2>"$scratch/err" || { sed 's/^/    /' "$scratch/err" >&2; return 1; }
+        end=$(date +%s%N)
+        ns=$(( end - start ))
+        if [[ -z "$best" ]] || (( ns < best )); then best=$ns; fi
+    done
+    awk -v ns="$best" 'BEGIN { printf "%.1f", ns / 1e6 }'
+}
+
+printf 'PROGRAM Main VAR x : INT; END_VAR x := x + 1; END_PROGRAM\n' >"$scratch/one_line.st"
+
+# A generated project of about 20 000 lines: each FB and function is ~50 lines
+# of ordinary PLC code (declarations, IF/CASE/FOR, arithmetic, calls).
+gen="$scratch/check_20k.st"
+{
+    for (( k = 0; k < 200; k++ )); do
+        cat <<ST
+FUNCTION_BLOCK Block$k
+VAR_INPUT
+    enable : BOOL;
+    setpoint : DINT;
+    gain : REAL := 1.5;
+END_VAR
+VAR_OUTPUT
+    out : DINT;
+    busy : BOOL;
+    alarm : BOOL;
+END_VAR
+VAR
+    state : INT;
+    acc : DINT;
+    history : ARRAY[0..9] OF DINT;
+    i : INT;
+    timer : TON;
+END_VAR
+timer(IN := enable, PT := T#100ms);
+CASE state OF
+    0:
+        IF enable THEN
+            state := 1;
+            acc := 0;
+        END_IF;
+    1:
+        acc := acc + setpoint / 10;
+        IF acc > setpoint THEN
+            state := 2;
+        ELSIF timer.Q THEN
+            alarm := TRUE;
+            state := 3;
+        END_IF;
+    2:
+        FOR i := 0 TO 8 DO
+            history[i] := history[i + 1];
+        END_FOR;
+        history[9] := acc;
+        out := REAL_TO_DINT(DINT_TO_REAL(acc) * gain);
+        state := 0;
+    ELSE
+        IF NOT enable THEN
+            alarm := FALSE;
+            state := 0;
+        END_IF;
+END_CASE;
+busy := state <> 0;
+END_FUNCTION_BLOCK
+
+FUNCTION Scale$k : DINT
+VAR_INPUT
+    raw : DINT;
+    low : DINT;
+    high : DINT;
+END_VAR
+VAR
+    span : DINT;
+END_VAR
+span := high - low;
+IF span = 0 THEN
+    Scale$k := low;
+ELSE
+    Scale$k := low + (raw * span) / 32767;
+END_IF;
+END_FUNCTION
+
+ST
+    done
+    echo "PROGRAM Main"
+    echo "VAR"
+    for (( k = 0; k < 200; k++ )); do echo "    b$k : Block$k;"; done
+    echo "    total : DINT;"
+    echo "END_VAR"
+    for (( k = 0; k < 200; k++ )); do
+        echo "b$k(enable := TRUE, setpoint := Scale$k(raw := total, low := 0, high := 1000));"
+        echo "total := total + b$k.out;"
+    done
+    echo "END_PROGRAM"
+} >"$gen"
+lines=$(wc -l <"$gen")
+
+echo "strun: $strun   best of $repeats runs each (wall ms)"
+printf '%-12s %10s %10s\n' "start-up" "strun ms" "lua ms"
+one=$(best_ms "$strun" run --virtual --cycles 1 "$scratch/one_line.st") || exit 1
+lua_one="-"
+command -v "$lua" >/dev/null 2>&1 && lua_one=$(best_ms "$lua" -e 'local x = 0; x = x + 1')
+printf '%-12s %10s %10s\n' "one_line" "$one" "$lua_one"
+chk=$(best_ms "$strun" check "$gen") || exit 1
+printf '%-12s %10s %10s   (%d lines, %.0f lines/s)\n' "check_20k" "$chk" "-" "$lines" "$(awk -v l="$lines" -v ms="$chk" 'BEGIN { print l / (ms / 1000) }')"
