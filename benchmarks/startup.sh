@@ -34,9 +34,10 @@ printf 'PROGRAM Main VAR x : INT; END_VAR x := x + 1; END_PROGRAM\n' >"$scratch/
 
 # A generated project of about 20 000 lines: each FB and function is ~50 lines
 # of ordinary PLC code (declarations, IF/CASE/FOR, arithmetic, calls).
+blocks=290
 gen="$scratch/check_20k.st"
 {
-    for (( k = 0; k < 200; k++ )); do
+    for (( k = 0; k < blocks; k++ )); do
         cat <<ST
 FUNCTION_BLOCK Block$k
 VAR_INPUT
@@ -108,10 +109,10 @@ ST
     done
     echo "PROGRAM Main"
     echo "VAR"
-    for (( k = 0; k < 200; k++ )); do echo "    b$k : Block$k;"; done
+    for (( k = 0; k < blocks; k++ )); do echo "    b$k : Block$k;"; done
     echo "    total : DINT;"
     echo "END_VAR"
-    for (( k = 0; k < 200; k++ )); do
+    for (( k = 0; k < blocks; k++ )); do
         echo "b$k(enable := TRUE, setpoint := Scale$k(raw := total, low := 0, high := 1000));"
         echo "total := total + b$k.out;"
     done
