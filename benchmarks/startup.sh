@@ -3,7 +3,7 @@
 #   one_line  `strun run --virtual --cycles 1` of a one-statement program
 #             (against `lua5.4 -e` of one statement)
 #   check_20k `strun check` of a generated 20 000-line project (200 function
-#             blocks, 200 functions, one program calling them)
+#             blocks with their functions, one program calling them)
 # Prints the best wall-clock time of each (BENCH_REPEATS runs, default 5).
 #
 # usage: benchmarks/startup.sh [path-to-strun]
