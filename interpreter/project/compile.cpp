@@ -5,15 +5,17 @@
 #include "interpreter/ast/parse.h"
 #include "interpreter/sema/checker.h"
 #include "stdlib/bind/register_builtins.h"
-#include "stdlib/embedded_sources.h"
+#include "interpreter/project/library_selection.h"
 
 namespace strun::project {
 
 std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log) {
     std::vector<ast::CompilationUnit> units;
     std::set<int> libraryFiles;
-    for (const auto& src : stdlib::embeddedSources()) {
-        int index = sources.add(std::string(src.path), std::string(src.text));
+    std::vector<std::string_view> userTexts;
+    for (int f : userFiles) userTexts.push_back(sources.file(f).text);
+    for (const stdlib::EmbeddedSource* src : embeddedSourcesFor(userTexts)) {
+        int index = sources.add(std::string(src->path), std::string(src->text));
         libraryFiles.insert(index);
         units.push_back(ast::parseFile(sources, index, log));
     }

@@ -1,6 +1,6 @@
 // Source files -> checked, runnable program model. Parses the embedded ST
-// standard library together with the user's files, so both are checked as
-// one project.
+// standard library files the project mentions (library_selection.h)
+// together with the user's files, so both are checked as one project.
 #pragma once
 
 #include <memory>

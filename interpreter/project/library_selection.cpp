@@ -1,0 +1,98 @@
+#include "interpreter/project/library_selection.h"
+
+#include <algorithm>
+#include <string>
+#include <unordered_set>
+
+namespace strun::project {
+
+namespace {
+
+bool isIdentStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
+bool isIdentPart(char c) { return isIdentStart(c) || (c >= '0' && c <= '9'); }
+
+std::string upper(std::string_view s) {
+    std::string out(s);
+    for (char& c : out)
+        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+    return out;
+}
+
+// Calls f(word) for every identifier-shaped word of the text.
+template <typename F>
+void forEachWord(std::string_view text, F&& f) {
+    size_t i = 0;
+    const size_t n = text.size();
+    while (i < n) {
+        if (!isIdentStart(text[i])) {
+            // A digit run (16#FF, 2.5E3) is no name: skip it whole.
+            if (text[i] >= '0' && text[i] <= '9')
+                while (i < n && isIdentPart(text[i])) ++i;
+            else
+                ++i;
+            continue;
+        }
+        size_t start = i;
+        while (i < n && isIdentPart(text[i])) ++i;
+        f(text.substr(start, i - start));
+    }
+}
+
+// The names a library file declares: the word after each POU keyword.
+std::vector<std::string> declaredNames(std::string_view text) {
+    std::vector<std::string> names;
+    bool nextIsName = false;
+    forEachWord(text, [&](std::string_view word) {
+        const std::string w = upper(word);
+        if (nextIsName) {
+            names.push_back(w);
+            nextIsName = false;
+        } else if (w == "FUNCTION_BLOCK" || w == "FUNCTION" || w == "INTERFACE" || w == "PROGRAM" || w == "NAMESPACE") {
+            nextIsName = true;
+        }
+    });
+    return names;
+}
+
+struct LibraryIndex {
+    std::vector<std::vector<std::string>> declares;  // parallel to embeddedSources()
+};
+
+const LibraryIndex& libraryIndex() {
+    static const LibraryIndex index = [] {
+        LibraryIndex built;
+        for (const auto& src : stdlib::embeddedSources()) built.declares.push_back(declaredNames(src.text));
+        return built;
+    }();
+    return index;
+}
+
+}  // namespace
+
+std::vector<const stdlib::EmbeddedSource*> embeddedSourcesFor(const std::vector<std::string_view>& projectTexts) {
+    const auto& sources = stdlib::embeddedSources();
+    const auto& index = libraryIndex();
+    std::unordered_set<std::string> mentioned;
+    auto collect = [&](std::string_view text) { forEachWord(text, [&](std::string_view w) { mentioned.insert(upper(w)); }); };
+    for (std::string_view text : projectTexts) collect(text);
+
+    std::vector<bool> selected(sources.size(), false);
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (size_t i = 0; i < sources.size(); ++i) {
+            if (selected[i]) continue;
+            const auto& names = index.declares[i];
+            if (std::any_of(names.begin(), names.end(), [&](const std::string& n) { return mentioned.count(n) > 0; })) {
+                selected[i] = true;
+                collect(sources[i].text);
+                grew = true;
+            }
+        }
+    }
+    std::vector<const stdlib::EmbeddedSource*> out;
+    for (size_t i = 0; i < sources.size(); ++i)
+        if (selected[i]) out.push_back(&sources[i]);
+    return out;
+}
+
+}  // namespace strun::project
