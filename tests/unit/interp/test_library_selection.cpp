@@ -1,0 +1,48 @@
+// The embedded library files a project gets: only those it mentions
+// (interpreter/project/library_selection.h, decision 0150).
+#include <algorithm>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "interpreter/project/library_selection.h"
+
+namespace {
+
+std::vector<std::string> selectedPaths(const std::vector<std::string_view>& texts) {
+    std::vector<std::string> paths;
+    for (const auto* src : strun::project::embeddedSourcesFor(texts)) paths.emplace_back(src->path);
+    return paths;
+}
+
+bool has(const std::vector<std::string>& paths, const std::string& path) {
+    return std::find(paths.begin(), paths.end(), path) != paths.end();
+}
+
+}  // namespace
+
+TEST_CASE("a project that uses no library block gets no library file", "[library]") {
+    CHECK(selectedPaths({"PROGRAM Main VAR x : INT; END_VAR x := x + 1; END_PROGRAM"}).empty());
+}
+
+TEST_CASE("a library block named in any case selects the file that declares it", "[library]") {
+    auto paths = selectedPaths({"PROGRAM Main VAR t : ton; END_VAR t(IN := TRUE, PT := T#1s); END_PROGRAM"});
+    CHECK(has(paths, "stdlib/timers.st"));
+    CHECK_FALSE(has(paths, "stdlib/counters.st"));
+}
+
+TEST_CASE("names are whole words: a longer identifier does not select a block", "[library]") {
+    CHECK(selectedPaths({"PROGRAM Main VAR TONx : INT; myCTU : INT; END_VAR END_PROGRAM"}).empty());
+}
+
+TEST_CASE("selection is over all files of the project together", "[library]") {
+    auto paths = selectedPaths({"PROGRAM Main VAR c : CTU; END_VAR END_PROGRAM", "FUNCTION_BLOCK F VAR e : R_TRIG; END_VAR END_FUNCTION_BLOCK"});
+    CHECK(has(paths, "stdlib/counters.st"));
+    CHECK(has(paths, "stdlib/edges.st"));
+}
+
+TEST_CASE("selected files come in the order of the embedded library", "[library]") {
+    auto paths = selectedPaths({"R_TRIG CTU TON"});
+    REQUIRE(paths.size() == 3);
+    CHECK(std::is_sorted(paths.begin(), paths.end()));
+}
