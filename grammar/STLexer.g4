@@ -12,10 +12,222 @@ lexer grammar STLexer;
 
 channels { PRAGMAS, ERRORS }
 
-// Produced by the BLOCK_COMMENT action, never matched by a rule of its own.
-tokens { UNTERMINATED_BLOCK_COMMENT }
+// Token types without a rule of their own: UNTERMINATED_BLOCK_COMMENT is
+// produced by the BLOCK_COMMENT action, the keywords by IDENTIFIER (see the
+// keywords section below).
+tokens {
+    UNTERMINATED_BLOCK_COMMENT,
+    PROGRAM,
+    END_PROGRAM,
+    FUNCTION,
+    END_FUNCTION,
+    FUNCTION_BLOCK,
+    END_FUNCTION_BLOCK,
+    METHOD,
+    END_METHOD,
+    PROPERTY,
+    END_PROPERTY,
+    INTERFACE,
+    END_INTERFACE,
+    NAMESPACE,
+    END_NAMESPACE,
+    USING,
+    TYPE,
+    END_TYPE,
+    STRUCT,
+    END_STRUCT,
+    UNION,
+    END_UNION,
+    ARRAY,
+    OF,
+    STRING,
+    WSTRING,
+    POINTER,
+    REF_TO,
+    REFERENCE,
+    TO,
+    EXTENDS,
+    IMPLEMENTS,
+    ABSTRACT,
+    FINAL,
+    PUBLIC,
+    PRIVATE,
+    PROTECTED,
+    INTERNAL,
+    THIS,
+    SUPER,
+    END_GET,
+    END_SET,
+    GET,
+    SET,
+    VAR,
+    VAR_INPUT,
+    VAR_OUTPUT,
+    VAR_IN_OUT,
+    VAR_TEMP,
+    VAR_STAT,
+    VAR_INST,
+    VAR_GLOBAL,
+    VAR_EXTERNAL,
+    VAR_ACCESS,
+    VAR_CONFIG,
+    END_VAR,
+    CONSTANT,
+    RETAIN,
+    NON_RETAIN,
+    PERSISTENT,
+    AT,
+    CONFIGURATION,
+    END_CONFIGURATION,
+    RESOURCE,
+    END_RESOURCE,
+    TASK,
+    ON,
+    WITH,
+    READ_ONLY,
+    READ_WRITE,
+    IF,
+    THEN,
+    ELSIF,
+    ELSE,
+    END_IF,
+    CASE,
+    END_CASE,
+    FOR,
+    BY,
+    DO,
+    END_FOR,
+    WHILE,
+    END_WHILE,
+    REPEAT,
+    UNTIL,
+    END_REPEAT,
+    EXIT,
+    CONTINUE,
+    RETURN,
+    JMP,
+    AND_THEN,
+    OR_ELSE,
+    AND,
+    OR,
+    XOR,
+    NOT,
+    MOD,
+    TRUE,
+    FALSE
+}
 
 @members {
+
+  // The token type of an identifier-shaped word: its keyword, else IDENTIFIER.
+  static size_t keywordType(const std::string& word) {
+    static const std::unordered_map<std::string, size_t> keywords = {
+      {"PROGRAM", PROGRAM},
+      {"END_PROGRAM", END_PROGRAM},
+      {"FUNCTION", FUNCTION},
+      {"END_FUNCTION", END_FUNCTION},
+      {"FUNCTION_BLOCK", FUNCTION_BLOCK},
+      {"END_FUNCTION_BLOCK", END_FUNCTION_BLOCK},
+      {"METHOD", METHOD},
+      {"END_METHOD", END_METHOD},
+      {"PROPERTY", PROPERTY},
+      {"END_PROPERTY", END_PROPERTY},
+      {"INTERFACE", INTERFACE},
+      {"END_INTERFACE", END_INTERFACE},
+      {"NAMESPACE", NAMESPACE},
+      {"END_NAMESPACE", END_NAMESPACE},
+      {"USING", USING},
+      {"TYPE", TYPE},
+      {"END_TYPE", END_TYPE},
+      {"STRUCT", STRUCT},
+      {"END_STRUCT", END_STRUCT},
+      {"UNION", UNION},
+      {"END_UNION", END_UNION},
+      {"ARRAY", ARRAY},
+      {"OF", OF},
+      {"STRING", STRING},
+      {"WSTRING", WSTRING},
+      {"POINTER", POINTER},
+      {"REF_TO", REF_TO},
+      {"REFERENCE", REFERENCE},
+      {"TO", TO},
+      {"EXTENDS", EXTENDS},
+      {"IMPLEMENTS", IMPLEMENTS},
+      {"ABSTRACT", ABSTRACT},
+      {"FINAL", FINAL},
+      {"PUBLIC", PUBLIC},
+      {"PRIVATE", PRIVATE},
+      {"PROTECTED", PROTECTED},
+      {"INTERNAL", INTERNAL},
+      {"THIS", THIS},
+      {"SUPER", SUPER},
+      {"END_GET", END_GET},
+      {"END_SET", END_SET},
+      {"GET", GET},
+      {"SET", SET},
+      {"VAR", VAR},
+      {"VAR_INPUT", VAR_INPUT},
+      {"VAR_OUTPUT", VAR_OUTPUT},
+      {"VAR_IN_OUT", VAR_IN_OUT},
+      {"VAR_TEMP", VAR_TEMP},
+      {"VAR_STAT", VAR_STAT},
+      {"VAR_INST", VAR_INST},
+      {"VAR_GLOBAL", VAR_GLOBAL},
+      {"VAR_EXTERNAL", VAR_EXTERNAL},
+      {"VAR_ACCESS", VAR_ACCESS},
+      {"VAR_CONFIG", VAR_CONFIG},
+      {"END_VAR", END_VAR},
+      {"CONSTANT", CONSTANT},
+      {"RETAIN", RETAIN},
+      {"NON_RETAIN", NON_RETAIN},
+      {"PERSISTENT", PERSISTENT},
+      {"AT", AT},
+      {"CONFIGURATION", CONFIGURATION},
+      {"END_CONFIGURATION", END_CONFIGURATION},
+      {"RESOURCE", RESOURCE},
+      {"END_RESOURCE", END_RESOURCE},
+      {"TASK", TASK},
+      {"ON", ON},
+      {"WITH", WITH},
+      {"READ_ONLY", READ_ONLY},
+      {"READ_WRITE", READ_WRITE},
+      {"IF", IF},
+      {"THEN", THEN},
+      {"ELSIF", ELSIF},
+      {"ELSE", ELSE},
+      {"END_IF", END_IF},
+      {"CASE", CASE},
+      {"END_CASE", END_CASE},
+      {"FOR", FOR},
+      {"BY", BY},
+      {"DO", DO},
+      {"END_FOR", END_FOR},
+      {"WHILE", WHILE},
+      {"END_WHILE", END_WHILE},
+      {"REPEAT", REPEAT},
+      {"UNTIL", UNTIL},
+      {"END_REPEAT", END_REPEAT},
+      {"EXIT", EXIT},
+      {"CONTINUE", CONTINUE},
+      {"RETURN", RETURN},
+      {"JMP", JMP},
+      {"AND_THEN", AND_THEN},
+      {"OR_ELSE", OR_ELSE},
+      {"AND", AND},
+      {"OR", OR},
+      {"XOR", XOR},
+      {"NOT", NOT},
+      {"MOD", MOD},
+      {"TRUE", TRUE},
+      {"FALSE", FALSE},
+    };
+    if (word.size() > 18) return IDENTIFIER;  // longer than every keyword
+    std::string upper = word;
+    for (char& c : upper)
+      if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+    auto it = keywords.find(upper);
+    return it == keywords.end() ? IDENTIFIER : it->second;
+  }
   void consumeNestedCommentBody() {
     auto* sim = getInterpreter<antlr4::atn::LexerATNSimulator>();
     int depth = 1;
@@ -96,115 +308,17 @@ fragment DATE_VALUE : [0-9]+ '-' [0-9]+ '-' [0-9]+;
 fragment TOD_VALUE  : [0-9]+ ':' [0-9]+ (':' [0-9]+ ('.' [0-9]+)?)?;
 
 // ------------------------------------------------------------------ keywords
-PROGRAM            : P R O G R A M;
-END_PROGRAM        : E N D '_' P R O G R A M;
-FUNCTION           : F U N C T I O N;
-END_FUNCTION       : E N D '_' F U N C T I O N;
-FUNCTION_BLOCK     : F U N C T I O N '_' B L O C K;
-END_FUNCTION_BLOCK : E N D '_' F U N C T I O N '_' B L O C K;
-METHOD             : M E T H O D;
-END_METHOD         : E N D '_' M E T H O D;
-PROPERTY           : P R O P E R T Y;
-END_PROPERTY       : E N D '_' P R O P E R T Y;
-INTERFACE          : I N T E R F A C E;
-END_INTERFACE      : E N D '_' I N T E R F A C E;
-NAMESPACE          : N A M E S P A C E;
-END_NAMESPACE      : E N D '_' N A M E S P A C E;
-USING              : U S I N G;
-TYPE               : T Y P E;
-END_TYPE           : E N D '_' T Y P E;
-STRUCT             : S T R U C T;
-END_STRUCT         : E N D '_' S T R U C T;
-UNION              : U N I O N;
-END_UNION          : E N D '_' U N I O N;
-ARRAY              : A R R A Y;
-OF                 : O F;
-STRING             : S T R I N G;
-WSTRING            : W S T R I N G;
-POINTER            : P O I N T E R;
-REF_TO             : R E F '_' T O;   // IEC 61131-3 3rd edition references: a typed pointer
-REFERENCE          : R E F E R E N C E;
-TO                 : T O;
-EXTENDS            : E X T E N D S;
-IMPLEMENTS         : I M P L E M E N T S;
-ABSTRACT           : A B S T R A C T;
-FINAL              : F I N A L;
-PUBLIC             : P U B L I C;
-PRIVATE            : P R I V A T E;
-PROTECTED          : P R O T E C T E D;
-INTERNAL           : I N T E R N A L;
-THIS               : T H I S;
-SUPER              : S U P E R;
-END_GET            : E N D '_' G E T;
-END_SET            : E N D '_' S E T;
-// GET and SET are soft keywords (SET is an input of the standard RS block).
-GET                : G E T;
-SET                : S E T;
-
-VAR                : V A R;
-VAR_INPUT          : V A R '_' I N P U T;
-VAR_OUTPUT         : V A R '_' O U T P U T;
-VAR_IN_OUT         : V A R '_' I N '_' O U T;
-VAR_TEMP           : V A R '_' T E M P;
-VAR_STAT           : V A R '_' S T A T;
-VAR_INST           : V A R '_' I N S T;
-VAR_GLOBAL         : V A R '_' G L O B A L;
-VAR_EXTERNAL       : V A R '_' E X T E R N A L;
-VAR_ACCESS         : V A R '_' A C C E S S;
-VAR_CONFIG         : V A R '_' C O N F I G;
-END_VAR            : E N D '_' V A R;
-CONSTANT           : C O N S T A N T;
-RETAIN             : R E T A I N;
-NON_RETAIN         : N O N '_' R E T A I N;
-PERSISTENT         : P E R S I S T E N T;
-AT                 : A T;
-
-CONFIGURATION      : C O N F I G U R A T I O N;
-END_CONFIGURATION  : E N D '_' C O N F I G U R A T I O N;
-RESOURCE           : R E S O U R C E;
-END_RESOURCE       : E N D '_' R E S O U R C E;
-// TASK, ON, WITH, READ_ONLY, READ_WRITE are soft keywords (usable as names).
-TASK               : T A S K;
-ON                 : O N;
-WITH               : W I T H;
-READ_ONLY          : R E A D '_' O N L Y;
-READ_WRITE         : R E A D '_' W R I T E;
-
-IF                 : I F;
-THEN               : T H E N;
-ELSIF              : E L S I F;
-ELSE               : E L S E;
-END_IF             : E N D '_' I F;
-CASE               : C A S E;
-END_CASE           : E N D '_' C A S E;
-FOR                : F O R;
-BY                 : B Y;
-DO                 : D O;
-END_FOR            : E N D '_' F O R;
-WHILE              : W H I L E;
-END_WHILE          : E N D '_' W H I L E;
-REPEAT             : R E P E A T;
-UNTIL              : U N T I L;
-END_REPEAT         : E N D '_' R E P E A T;
-EXIT               : E X I T;
-CONTINUE           : C O N T I N U E;
-RETURN             : R E T U R N;
-JMP                : J M P;
-
-AND_THEN           : A N D '_' T H E N;
-OR_ELSE            : O R '_' E L S E;
-AND                : A N D;
-OR                 : O R;
-XOR                : X O R;
-NOT                : N O T;
-MOD                : M O D;
-TRUE               : T R U E;
-FALSE              : F A L S E;
+// Keywords are lexed by the IDENTIFIER rule and given their token type from
+// a table (keywordType below): one rule instead of a case-insensitive rule
+// per keyword keeps the lexer's state machine small, which made lexing and
+// the ATN deserialisation at every process start several times cheaper.
+// GET, SET, TASK, ON, WITH, READ_ONLY, READ_WRITE are soft keywords: the
+// parser also accepts them as names (SET is an input of the standard RS block).
 
 // ------------------------------------------------------------------ names
 // Letters, digits and underscores. IEC forbids double and trailing underscores,
 // CODESYS does not (its operators __NEW, __ISVALIDREF use them): accepted here.
-IDENTIFIER : IDENT_FRAG;
+IDENTIFIER : IDENT_FRAG { setType(keywordType(getText())); };
 fragment IDENT_FRAG : [A-Za-z_] [A-Za-z0-9_]*;
 
 // ------------------------------------------------------------------ operators

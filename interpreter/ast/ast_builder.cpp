@@ -17,7 +17,16 @@ Loc AstBuilder::loc(const antlr4::Token* token) const {
 
 Loc AstBuilder::loc(antlr4::ParserRuleContext* c) const { return loc(c ? c->getStart() : nullptr); }
 
-std::string AstBuilder::text(antlr4::tree::ParseTree* node) { return node ? node->getText() : std::string(); }
+std::string AstBuilder::text(antlr4::tree::ParseTree* node) {
+    if (node == nullptr) return std::string();
+    // Most calls ask for one token (a name, a literal): take it directly
+    // instead of ParseTree::getText's recursive concatenation of the subtree.
+    if (auto* rule = dynamic_cast<antlr4::ParserRuleContext*>(node); rule && rule->getStart() != nullptr &&
+        rule->getStart() == rule->getStop() && rule->children.size() == 1 &&
+        dynamic_cast<antlr4::tree::TerminalNode*>(rule->children[0]) != nullptr)
+        return rule->getStart()->getText();
+    return node->getText();
+}
 
 std::string AstBuilder::sourceText(antlr4::ParserRuleContext* c) {
     if (c == nullptr || c->getStart() == nullptr || c->getStop() == nullptr) return "";
