@@ -65,6 +65,7 @@ int runCommand(const Options& o, bool execute) {
         if (!o.virtualClock) return usage("--stmt-cost needs --virtual");
         auto r = strun::stdlib::parseDurationLiteral(o.stmtCost);
         if (!r || r.value() < 0) return usage("--stmt-cost: '" + o.stmtCost + "' is not a duration (e.g. 1us, T#2us)");
+        if (r.value() > strun::rt::kMaxStmtCost) return usage("--stmt-cost: '" + o.stmtCost + "' is above the limit of 1d");
         run.stmtCost = r.value();
     } else {
         run.stmtCost = o.virtualClock ? 1000 : 0;
@@ -102,6 +103,7 @@ int runCommand(const Options& o, bool execute) {
 
     std::vector<strun::rt::TaskSpec> specs;
     for (const auto& t : model->tasks) specs.push_back(t.spec);
+    if (run.cycles && specs.empty()) return usage("--cycles: the project declares no TASK (its CONFIGURATION has none)");
     if (!o.task.empty()) {
         if (!strun::rt::Scheduler::hasTask(specs, o.task)) return usage("--task: no task named '" + o.task + "'");
         run.cyclesTask = o.task;

@@ -17,6 +17,10 @@ namespace strun::rt {
 // PLC time: nanoseconds since the PLC went to RUN (virtual or real clock).
 using PlcTime = int64_t;
 constexpr PlcTime kNever = std::numeric_limits<PlcTime>::max();
+// The end of PLC time (2^62 ns, about 146 years): every run stops there, and
+// one statement costs at most kMaxStmtCost, so `now` cannot overflow.
+constexpr PlcTime kPlcTimeLimit = PlcTime{1} << 62;
+constexpr PlcTime kMaxStmtCost = PlcTime{86400} * 1000000000;  // one day
 
 // Every code that can appear in the diagnostic buffer. Documented in
 // docs/diagnostics.md; names (diagCodeName) are the `code` strings of --dump.

@@ -195,7 +195,7 @@ struct FlexIndexPlace final : Expr {
             int64_t lo = loadAs<int64_t>(d + 8 + 16 * k), hi = loadAs<int64_t>(d + 16 + 16 * k);
             int64_t v = index[k]->i(c);
             if (__builtin_expect(v < lo || v > hi, 0)) return outOfRange(c, v, lo, hi);
-            offset = offset * static_cast<uint64_t>(hi - lo + 1) + static_cast<uint64_t>(v - lo);
+            offset = offset * (static_cast<uint64_t>(hi) - static_cast<uint64_t>(lo) + 1) + (static_cast<uint64_t>(v) - static_cast<uint64_t>(lo));
         }
         uint8_t* base = loadAs<uint8_t*>(d);
         return base + offset * elemSize;

@@ -151,8 +151,8 @@ struct IndexPlace final : Expr {
     uint8_t* addr(Ctx& c) override {
         uint64_t offset = 0;
         for (const Dim& d : dims) {
-            int64_t k = d.index->i(c) - d.lo;
-            if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(d.count), 0)) return outOfRange(c, d, k + d.lo);
+            int64_t k = static_cast<int64_t>(static_cast<uint64_t>(d.index->i(c)) - static_cast<uint64_t>(d.lo));
+            if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(d.count), 0)) return outOfRange(c, d, static_cast<int64_t>(static_cast<uint64_t>(k) + static_cast<uint64_t>(d.lo)));
             offset += static_cast<uint64_t>(k) * d.stride;
         }
         return base->addr(c) + offset;
@@ -168,8 +168,8 @@ struct Index1Place final : Expr {
     uint64_t stride;
     Site site;
     uint8_t* addr(Ctx& c) override {
-        int64_t k = index->i(c) - lo;
-        if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return outOfRange(c, k + lo);
+        int64_t k = static_cast<int64_t>(static_cast<uint64_t>(index->i(c)) - static_cast<uint64_t>(lo));
+        if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return outOfRange(c, static_cast<int64_t>(static_cast<uint64_t>(k) + static_cast<uint64_t>(lo)));
         return base->addr(c) + static_cast<uint64_t>(k) * stride;
     }
     uint8_t* outOfRange(Ctx& c, int64_t value);
@@ -191,8 +191,8 @@ struct Index1Fields {
 template <class T, BaseKind B>
 struct Index1Var final : Expr, Index1Fields {
     uint8_t* addr(Ctx& c) override {
-        int64_t k = index->i(c) - lo;
-        if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return indexFault(c, site, k + lo, lo, count);
+        int64_t k = static_cast<int64_t>(static_cast<uint64_t>(index->i(c)) - static_cast<uint64_t>(lo));
+        if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return indexFault(c, site, static_cast<int64_t>(static_cast<uint64_t>(k) + static_cast<uint64_t>(lo)), lo, count);
         uint8_t* base = B == BaseKind::Abs ? abs : baseOf<B>(c, nullptr) + off;
         return base + static_cast<uint64_t>(k) * stride;
     }
