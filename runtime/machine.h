@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "runtime/memory_map.h"
+
 namespace strun::rt {
 
 // PLC time: nanoseconds since the PLC went to RUN (virtual or real clock).
@@ -85,6 +87,8 @@ struct Machine {
     std::atomic<PlcTime> deadline{kNever};
     AttentionHandler* handler = nullptr;
     ProcessImage image;
+    // What pointers may reach (registered by the compiler, the task bodies and the scheduler).
+    MemoryMap memory;
 
     // At every statement boundary and loop back-edge. True: abort the activation.
     inline bool tick() {

@@ -232,9 +232,9 @@ struct TryCastInterface final : Expr {
     TryCastInterface(Expr* s, const void* i) : source(s), itf(i) {}
     int64_t i(Ctx& c) override {
         auto p = reinterpret_cast<uint8_t*>(static_cast<intptr_t>(source->i(c)));
-        if (!p) return 0;
+        if (!p || !c.m->memory.contains(p, sizeof(const ClassDesc*))) return 0;
         auto* desc = loadAs<const ClassDesc*>(p);
-        return desc && desc->implements(itf) ? static_cast<int64_t>(reinterpret_cast<intptr_t>(p)) : 0;
+        return desc && c.m->memory.isObject(desc) && desc->implements(itf) ? static_cast<int64_t>(reinterpret_cast<intptr_t>(p)) : 0;
     }
 };
 

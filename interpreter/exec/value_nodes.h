@@ -121,16 +121,19 @@ struct RefSlotPlace final : Expr {
 };
 
 // p^ : the pointer value (an address) as storage.
+// A pointer that is null or does not lead into the project's memory (moved by
+// arithmetic, forged) faults with NULL_POINTER and yields the fault sink.
 struct DerefPlace final : Expr {
     Expr* pointer;
     Site site;
-    DerefPlace(Expr* p, Site st) : pointer(p), site(st) {}
+    uint32_t targetSize;  // bytes the dereference reads or writes
+    DerefPlace(Expr* p, Site st, uint32_t size) : pointer(p), site(st), targetSize(size) {}
     uint8_t* addr(Ctx& c) override {
         auto p = reinterpret_cast<uint8_t*>(static_cast<intptr_t>(pointer->i(c)));
-        if (__builtin_expect(p == nullptr, 0)) return nullTarget(c);
+        if (__builtin_expect(p == nullptr || !c.m->memory.contains(p, targetSize), 0)) return badTarget(c, p);
         return p;
     }
-    uint8_t* nullTarget(Ctx& c);
+    uint8_t* badTarget(Ctx& c, const uint8_t* p);
 };
 
 // ADR(x) / REF(x): the address of a place as a pointer value.

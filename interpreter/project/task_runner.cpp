@@ -10,6 +10,8 @@ TaskRunner::TaskRunner(sema::ProgramModel& model, const sema::ConfiguredTask& ta
     size_t frame = static_cast<size_t>(model.maxFrameSize) + 64;
     stack_.resize(frame * (exec::kMaxCallDepth + 2) + 4096);
     sink_.resize(std::max<size_t>(exec::kFaultSinkSize, model.largestType + 64));
+    model.machine.memory.add(stack_.data(), stack_.size());
+    model.machine.memory.add(sink_.data(), sink_.size());
     ctx_.m = &model.machine;
     ctx_.faultSink = sink_.data();
 }

@@ -523,6 +523,7 @@ void Checker::layoutPou(PouInfo* pou) {
             // Every FB instance starts with its class (methods dispatch through it).
             if (!pou->classDesc) {
                 model_.classes.emplace_back();
+                model_.machine.memory.addObject(&model_.classes.back());
                 pou->classDesc = &model_.classes.back();
                 pou->classDesc->name = pou->name;
             }
