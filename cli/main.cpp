@@ -13,6 +13,7 @@
 #include "interpreter/project/compile.h"
 #include "interpreter/project/dump_json.h"
 #include "interpreter/project/task_runner.h"
+#include "interpreter/source/read_source.h"
 #include "runtime/scheduler.h"
 #include "stdlib/time_literals.h"
 #include "stdlib/value_format.h"
@@ -44,14 +45,9 @@ int usage(const std::string& message) {
 
 bool readFiles(const std::vector<std::string>& files, strun::SourceSet& sources, std::vector<int>& indices, std::string& error) {
     for (const auto& f : files) {
-        std::ifstream in(f, std::ios::binary);
-        if (!in) {
-            error = "cannot open '" + f + "'";
-            return false;
-        }
-        std::stringstream ss;
-        ss << in.rdbuf();
-        indices.push_back(sources.add(f, ss.str()));
+        int index = 0;
+        if (!strun::readSourceFile(f, sources, index, error)) return false;
+        indices.push_back(index);
     }
     return true;
 }

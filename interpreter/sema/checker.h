@@ -164,6 +164,10 @@ private:
     // ---- CODESYS FB_init (checker_fb_init.cpp)
     void buildFbInitCalls();
     void collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth);
+    bool holdsFbInit(const Type* t);
+    static constexpr size_t kMaxFbInitCalls = 100000;
+    std::map<const Type*, bool> holdsFbInit_;
+    bool fbInitLimitReported_ = false;
 
     ProgramModel& model_;
     CompileLog& log_;
