@@ -46,6 +46,10 @@ bool buildRunOptions(const CommandLine& line, rt::RunOptions& run, std::string& 
         error = "--start needs --virtual";
         return false;
     }
+    if (line.stmtCost && *line.stmtCost > rt::kMaxStmtCost) {
+        error = "--stmt-cost: above the limit of 1d";
+        return false;
+    }
     run.stmtCost = line.stmtCost.value_or(line.virtualClock ? 1000 : 0);
     run.cycles = line.cycles;
     run.duration = line.forDuration;
@@ -110,6 +114,7 @@ int runCommand(const CommandLine& line) {
 
     std::vector<rt::TaskSpec> specs;
     for (const auto& t : model.tasks) specs.push_back(t.spec);
+    if (run.cycles && specs.empty()) return usage("--cycles: the project declares no TASK (its CONFIGURATION has none)");
     if (!line.task.empty()) {
         if (!rt::Scheduler::hasTask(specs, line.task)) return usage("--task: no task named '" + line.task + "'");
         run.cyclesTask = line.task;

@@ -12,11 +12,17 @@
 #include <string_view>
 #include <vector>
 
+#include "runtime/memory_map.h"
+
 namespace strun::rt {
 
 // PLC time: nanoseconds since the PLC went to RUN (virtual or real clock).
 using PlcTime = int64_t;
 constexpr PlcTime kNever = std::numeric_limits<PlcTime>::max();
+// The end of PLC time (2^62 ns, about 146 years): every run stops there, and
+// one statement costs at most kMaxStmtCost, so `now` cannot overflow.
+constexpr PlcTime kPlcTimeLimit = PlcTime{1} << 62;
+constexpr PlcTime kMaxStmtCost = PlcTime{86400} * 1000000000;  // one day
 
 // Every code that can appear in the diagnostic buffer. Documented in
 // docs/diagnostics.md; names (diagCodeName) are the `code` strings of --dump.
@@ -81,6 +87,8 @@ struct Machine {
     std::atomic<PlcTime> deadline{kNever};
     AttentionHandler* handler = nullptr;
     ProcessImage image;
+    // What pointers may reach (registered by the compiler, the task bodies and the scheduler).
+    MemoryMap memory;
 
     // At every statement boundary and loop back-edge. True: abort the activation.
     inline bool tick() {

@@ -126,9 +126,14 @@ PlcState Scheduler::run() {
     // between installing the handler and this call still stops the run.
     runningMachine_.store(&machine_);
     machine_.handler = this;
+    for (const std::vector<uint8_t>* area : {&machine_.image.inputs, &machine_.image.outputs, &machine_.image.memory})
+        machine_.memory.add(area->data(), area->size());
     machine_.now = 0;
     machine_.deadline.store(kNever);
-    forEnd_ = options_.duration.value_or(kNever);
+    // PLC time ends at kPlcTimeLimit (about 146 years) even without --for:
+    // with --stmt-cost at most kMaxStmtCost, Machine::tick can then never
+    // overflow the clock (docs/limits.md).
+    forEnd_ = std::min(options_.duration.value_or(kNever), kPlcTimeLimit);
     if (options_.virtualClock) {
         machine_.stmtCost = std::max<PlcTime>(options_.stmtCost, 1);
         calendarBase_ = options_.startCalendarNanos;
@@ -165,6 +170,9 @@ PlcState Scheduler::run() {
     if (options_.cycles && *options_.cycles == 0) ending_ = true;
 
     mainLoop();
+    if (state_ == PlcState::Run && machine_.now >= kPlcTimeLimit && (!options_.duration || *options_.duration > kPlcTimeLimit))
+        (options_.warnings ? *options_.warnings : std::cerr)
+            << "strun: warning: PLC time reached its limit of " << formatDuration(kPlcTimeLimit) << "; the run ends\n";
 
     // A fault stop ends the run at the fault, not at the statement boundary where the task unwound.
     endTime_ = state_ == PlcState::Run ? machine_.now : stopTime_;
@@ -194,6 +202,17 @@ void Scheduler::mainLoop() {
 void Scheduler::idle() {
     PlcTime next = std::min(earliestRelease_, forEnd_);
     if (hasTriggers_) next = std::min(next, nextSample_);
+    if (options_.virtualClock && earliestRelease_ == kNever && !options_.duration) {
+        // No task runs and none is due at any time: only task code could raise
+        // an event or status trigger, so nothing can ever run again. End here
+        // instead of sampling (or sleeping) forever (docs/limits.md).
+        std::ostream& out = options_.warnings ? *options_.warnings : std::cerr;
+        out << "strun: warning: no task can ever run again; the run ends at " << formatDuration(machine_.now);
+        if (cyclesTask_) out << " (" << cyclesTask_->spec.name << " completed " << cyclesTask_->cycles << " of " << *options_.cycles << " cycles)";
+        out << '\n';
+        ending_ = true;
+        return;
+    }
     if (options_.virtualClock) {
         if (next != kNever) {
             machine_.now = std::max(machine_.now, next);

@@ -1,6 +1,7 @@
 #include "runtime/task_rules.h"
 
 #include <cctype>
+#include <map>
 #include <string_view>
 
 #include "runtime/civil_time.h"
@@ -49,14 +50,13 @@ private:
     void checkName(size_t index) {
         const TaskSpec& task = tasks_[index];
         if (std::string problem = taskNameProblem(task.name); !problem.empty()) report(task, problem);
-        std::string key = lowered(task.name);
-        for (size_t j = 0; j < index; ++j) {
-            if (lowered(tasks_[j].name) != key) continue;
+        // A map, not a scan of the earlier tasks: 20 000 TASKs took 28 s.
+        auto [first, isNew] = firstByName_.emplace(lowered(task.name), index);
+        if (!isNew)
             report(task, "duplicate task name '" + task.name + "' (first declared at line " +
-                             std::to_string(tasks_[j].loc.line) + ")");
-            return;
-        }
+                             std::to_string(tasks_[first->second].loc.line) + ")");
     }
+    std::map<std::string, size_t> firstByName_;
 
     void checkCount(const TaskSpec& task, int countOfKind, int total) {
         if (total == profile_.maxTasks + 1) {

@@ -65,7 +65,7 @@ public:
 
     CompilationUnit run() {
         warnAboutInvalidUtf8();
-        tokens_.fill();
+        if (!lexWithinLimit()) return emptyUnit();
         if (!reportLexerErrors()) return emptyUnit();
         CompilationUnit unit = emptyUnit();
         runWithLargeStack([&] {
@@ -106,6 +106,22 @@ private:
         log_.warning(Loc{fileIndex_, line, col},
                      "the file is not valid UTF-8: " + std::to_string(invalidBytes_) +
                          " byte(s) replaced by U+FFFD, the first here");
+    }
+
+    // Lexes the whole file, stopping with an error past kMaxTokensPerFile
+    // tokens (comments and pragmas included), so that memory stays bounded.
+    bool lexWithinLimit() {
+        while (tokens_.LA(1) != antlr4::Token::EOF) {
+            tokens_.consume();
+            if (tokens_.size() > kMaxTokensPerFile) {
+                const antlr4::Token* at = tokens_.get(tokens_.size() - 1);
+                log_.error(Loc{fileIndex_, static_cast<int>(at->getLine()), static_cast<int>(at->getCharPositionInLine()) + 1},
+                           "the file has more than " + std::to_string(kMaxTokensPerFile) + " tokens (the limit per source file)");
+                return false;
+            }
+        }
+        tokens_.seek(0);
+        return true;
     }
 
     // Reports error tokens and runs the nesting guard; false if parsing must

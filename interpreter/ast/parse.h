@@ -4,10 +4,16 @@
 // and reports further errors. Never throws.
 #pragma once
 
+#include <cstddef>
+
 #include "interpreter/ast/ast.h"
 #include "interpreter/source/source_set.h"
 
 namespace strun::ast {
+
+// Tokens of one file (comments and pragmas included); past it the file is
+// rejected with an error (docs/limits.md).
+inline constexpr std::size_t kMaxTokensPerFile = 1000000;
 
 CompilationUnit parseFile(const SourceSet& sources, int fileIndex, CompileLog& log);
 

@@ -195,7 +195,7 @@ struct FlexIndexPlace final : Expr {
             int64_t lo = loadAs<int64_t>(d + 8 + 16 * k), hi = loadAs<int64_t>(d + 16 + 16 * k);
             int64_t v = index[k]->i(c);
             if (__builtin_expect(v < lo || v > hi, 0)) return outOfRange(c, v, lo, hi);
-            offset = offset * static_cast<uint64_t>(hi - lo + 1) + static_cast<uint64_t>(v - lo);
+            offset = offset * (static_cast<uint64_t>(hi) - static_cast<uint64_t>(lo) + 1) + (static_cast<uint64_t>(v) - static_cast<uint64_t>(lo));
         }
         uint8_t* base = loadAs<uint8_t*>(d);
         return base + offset * elemSize;
@@ -232,9 +232,9 @@ struct TryCastInterface final : Expr {
     TryCastInterface(Expr* s, const void* i) : source(s), itf(i) {}
     int64_t i(Ctx& c) override {
         auto p = reinterpret_cast<uint8_t*>(static_cast<intptr_t>(source->i(c)));
-        if (!p) return 0;
+        if (!p || !c.m->memory.contains(p, sizeof(const ClassDesc*))) return 0;
         auto* desc = loadAs<const ClassDesc*>(p);
-        return desc && desc->implements(itf) ? static_cast<int64_t>(reinterpret_cast<intptr_t>(p)) : 0;
+        return desc && c.m->memory.isObject(desc) && desc->implements(itf) ? static_cast<int64_t>(reinterpret_cast<intptr_t>(p)) : 0;
     }
 };
 

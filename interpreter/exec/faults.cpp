@@ -59,12 +59,20 @@ uint8_t* RefSlotPlace::nullTarget(Ctx& c) {
     return sink(c);
 }
 
-uint8_t* DerefPlace::nullTarget(Ctx& c) {
-    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line, "dereference of a null pointer");
+uint8_t* DerefPlace::badTarget(Ctx& c, const uint8_t* p) {
+    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line,
+                          p ? "dereference of a pointer outside the project's memory" : "dereference of a null pointer");
     return sink(c);
 }
 
 PouCode* CallPou::dispatch(Ctx& c, uint8_t* inst) {
+    // The instance may come from a pointer or interface forged by arithmetic:
+    // it must lie in project memory and start with a real class descriptor.
+    if (inst && !(c.m->memory.contains(inst, sizeof(const ClassDesc*)) && c.m->memory.isObject(loadAs<const ClassDesc*>(inst)))) {
+        c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line,
+                              fmt::format("call of {} through a pointer that does not lead to an instance", callee->name));
+        return nullptr;
+    }
     const ClassDesc* desc = inst ? loadAs<const ClassDesc*>(inst) : nullptr;
     PouCode* code = desc && static_cast<size_t>(virtualSlot) < desc->methods.size() ? desc->methods[static_cast<size_t>(virtualSlot)] : nullptr;
     if (!code) {

@@ -121,16 +121,19 @@ struct RefSlotPlace final : Expr {
 };
 
 // p^ : the pointer value (an address) as storage.
+// A pointer that is null or does not lead into the project's memory (moved by
+// arithmetic, forged) faults with NULL_POINTER and yields the fault sink.
 struct DerefPlace final : Expr {
     Expr* pointer;
     Site site;
-    DerefPlace(Expr* p, Site st) : pointer(p), site(st) {}
+    uint32_t targetSize;  // bytes the dereference reads or writes
+    DerefPlace(Expr* p, Site st, uint32_t size) : pointer(p), site(st), targetSize(size) {}
     uint8_t* addr(Ctx& c) override {
         auto p = reinterpret_cast<uint8_t*>(static_cast<intptr_t>(pointer->i(c)));
-        if (__builtin_expect(p == nullptr, 0)) return nullTarget(c);
+        if (__builtin_expect(p == nullptr || !c.m->memory.contains(p, targetSize), 0)) return badTarget(c, p);
         return p;
     }
-    uint8_t* nullTarget(Ctx& c);
+    uint8_t* badTarget(Ctx& c, const uint8_t* p);
 };
 
 // ADR(x) / REF(x): the address of a place as a pointer value.
@@ -151,8 +154,8 @@ struct IndexPlace final : Expr {
     uint8_t* addr(Ctx& c) override {
         uint64_t offset = 0;
         for (const Dim& d : dims) {
-            int64_t k = d.index->i(c) - d.lo;
-            if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(d.count), 0)) return outOfRange(c, d, k + d.lo);
+            int64_t k = static_cast<int64_t>(static_cast<uint64_t>(d.index->i(c)) - static_cast<uint64_t>(d.lo));
+            if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(d.count), 0)) return outOfRange(c, d, static_cast<int64_t>(static_cast<uint64_t>(k) + static_cast<uint64_t>(d.lo)));
             offset += static_cast<uint64_t>(k) * d.stride;
         }
         return base->addr(c) + offset;
@@ -168,8 +171,8 @@ struct Index1Place final : Expr {
     uint64_t stride;
     Site site;
     uint8_t* addr(Ctx& c) override {
-        int64_t k = index->i(c) - lo;
-        if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return outOfRange(c, k + lo);
+        int64_t k = static_cast<int64_t>(static_cast<uint64_t>(index->i(c)) - static_cast<uint64_t>(lo));
+        if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return outOfRange(c, static_cast<int64_t>(static_cast<uint64_t>(k) + static_cast<uint64_t>(lo)));
         return base->addr(c) + static_cast<uint64_t>(k) * stride;
     }
     uint8_t* outOfRange(Ctx& c, int64_t value);
@@ -191,8 +194,8 @@ struct Index1Fields {
 template <class T, BaseKind B>
 struct Index1Var final : Expr, Index1Fields {
     uint8_t* addr(Ctx& c) override {
-        int64_t k = index->i(c) - lo;
-        if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return indexFault(c, site, k + lo, lo, count);
+        int64_t k = static_cast<int64_t>(static_cast<uint64_t>(index->i(c)) - static_cast<uint64_t>(lo));
+        if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return indexFault(c, site, static_cast<int64_t>(static_cast<uint64_t>(k) + static_cast<uint64_t>(lo)), lo, count);
         uint8_t* base = B == BaseKind::Abs ? abs : baseOf<B>(c, nullptr) + off;
         return base + static_cast<uint64_t>(k) * stride;
     }

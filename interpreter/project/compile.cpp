@@ -1,7 +1,9 @@
 #include "interpreter/project/compile.h"
 
+#include <exception>
 #include <set>
 
+#include "interpreter/ast/large_stack.h"
 #include "interpreter/ast/parse.h"
 #include "interpreter/sema/checker.h"
 #include "stdlib/bind/register_builtins.h"
@@ -27,7 +29,18 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     checker.setLibraryFiles(libraryFiles);
     checker.setCompileOptions(options);
     stdlib::registerBuiltins(checker);
-    checker.run(units);
+    // The checker recurses once per nested declaration and expression level;
+    // both are capped (docs/limits.md), and the large stack gives the caps a
+    // wide margin, also under sanitizers.
+    std::exception_ptr failure;
+    ast::runWithLargeStack([&] {
+        try {
+            checker.run(units);
+        } catch (...) {
+            failure = std::current_exception();
+        }
+    });
+    if (failure) std::rethrow_exception(failure);
     if (log.hasErrors()) return nullptr;
     // The AST is referenced by nothing at run time: all names are resolved.
     return model;

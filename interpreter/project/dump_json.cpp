@@ -59,11 +59,19 @@ bool omitted(const Type* t) {
     return t->kind == TK::Pointer || t->kind == TK::Reference || t->kind == TK::Interface;
 }
 
+// Appends a member whose name the checker already made unique in its scope.
+// ordered_json's operator[] searches linearly, which made dumping 100 000
+// variables quadratic (11 s); appending to the underlying vector is O(1).
+void append(json& obj, const std::string& key, json value) {
+    auto& members = static_cast<json::object_t::Container&>(obj.get_ref<json::object_t&>());
+    members.emplace_back(key, std::move(value));
+}
+
 void membersJson(json& obj, const Type* t, const uint8_t* p) {
     if (t->parent) membersJson(obj, t->parent, p);
     for (const auto& f : t->fields) {
         if (omitted(f.type)) continue;
-        obj[f.name] = valueToJson(f.type, p + f.offset);
+        append(obj, f.name, valueToJson(f.type, p + f.offset));
     }
 }
 
@@ -124,8 +132,7 @@ json globalsJson(const sema::ProgramModel& model) {
     json obj = json::object();
     for (const sema::VarSym* g : model.globals) {
         if (omitted(g->type)) continue;
-        if (g->bit >= 0) obj[g->name] = ((*g->abs >> g->bit) & 1) != 0;
-        else obj[g->name] = valueToJson(g->type, g->abs);
+        append(obj, g->name, g->bit >= 0 ? json(((*g->abs >> g->bit) & 1) != 0) : valueToJson(g->type, g->abs));
     }
     return obj;
 }
@@ -138,10 +145,9 @@ json programsJson(const sema::ProgramModel& model) {
             if (v->section == ast::VarSection::Temp || v->byRef || omitted(v->type)) continue;
             const uint8_t* p = v->storage == sema::Storage::Self ? inst.memory + v->offset : v->abs;
             if (!p) continue;
-            if (v->bit >= 0) vars[v->name] = ((*p >> v->bit) & 1) != 0;
-            else vars[v->name] = valueToJson(v->type, p);
+            append(vars, v->name, v->bit >= 0 ? json(((*p >> v->bit) & 1) != 0) : valueToJson(v->type, p));
         }
-        obj[inst.name] = std::move(vars);
+        append(obj, inst.name, std::move(vars));
     }
     return obj;
 }

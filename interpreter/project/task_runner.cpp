@@ -5,11 +5,20 @@
 
 namespace strun::project {
 
-TaskRunner::TaskRunner(sema::ProgramModel& model, const sema::ConfiguredTask& task) : model_(model), calls_(task.calls) {
-    // Deep enough for kMaxCallDepth nested frames of the largest POU, plus temporaries.
-    size_t frame = static_cast<size_t>(model.maxFrameSize) + 64;
-    stack_.resize(frame * (exec::kMaxCallDepth + 2) + 4096);
-    sink_.resize(std::max<size_t>(exec::kFaultSinkSize, model.largestType + 64));
+namespace {
+// Deep enough for kMaxCallDepth nested frames of the largest POU, plus temporaries.
+size_t frameStackBytes(const sema::ProgramModel& model) {
+    return (static_cast<size_t>(model.maxFrameSize) + 64) * (exec::kMaxCallDepth + 2) + 4096;
+}
+}  // namespace
+
+TaskRunner::TaskRunner(sema::ProgramModel& model, const sema::ConfiguredTask& task)
+    : model_(model),
+      calls_(task.calls),
+      stack_(frameStackBytes(model)),
+      sink_(std::max<size_t>(exec::kFaultSinkSize, model.largestType + 64)) {
+    model.machine.memory.add(stack_.data(), stack_.size());
+    model.machine.memory.add(sink_.data(), sink_.size());
     ctx_.m = &model.machine;
     ctx_.faultSink = sink_.data();
 }

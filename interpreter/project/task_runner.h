@@ -8,6 +8,7 @@
 
 #include "interpreter/exec/call_nodes.h"
 #include "interpreter/sema/program_model.h"
+#include "runtime/reserved_memory.h"
 #include "runtime/task_spec.h"
 
 namespace strun::project {
@@ -22,8 +23,8 @@ private:
     void runInitCalls();
     sema::ProgramModel& model_;
     std::vector<sema::Invocation> calls_;
-    std::vector<uint8_t> stack_;
-    std::vector<uint8_t> sink_;
+    rt::ReservedMemory stack_;
+    rt::ReservedMemory sink_;
     exec::Ctx ctx_;
 };
 

@@ -96,6 +96,14 @@ private:
     void writeScalar(uint8_t* p, const Type* t, const Checked& v);
     uint8_t* mapAddress(const std::string& address, const Type* t, const ast::Loc& loc, int& bit);
 
+    // ---- cycles and depth of declarations (checker_cycles.cpp)
+    void breakInheritanceCycles();
+    bool rejectByValueCycle(const Type* t, const ast::Loc& loc);
+    std::string cyclePath(const std::string& name) const;
+    // Type declarations and POUs whose resolution is in progress, outermost first.
+    std::vector<std::string> declStack_;
+    friend class DeclDepthGuard;
+
     // ---- object orientation (checker_oop.cpp)
     int methodSlot(const std::string& upperName);
     void buildClasses();
@@ -161,6 +169,10 @@ private:
     // ---- CODESYS FB_init (checker_fb_init.cpp)
     void buildFbInitCalls();
     void collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth);
+    bool holdsFbInit(const Type* t);
+    static constexpr size_t kMaxFbInitCalls = 100000;
+    std::map<const Type*, bool> holdsFbInit_;
+    bool fbInitLimitReported_ = false;
 
     ProgramModel& model_;
     CompileLog& log_;
@@ -196,6 +208,24 @@ private:
 public:
     // Files whose POUs are the standard library (no unused-variable warnings).
     void setLibraryFiles(std::set<int> files) { libraryFiles_ = std::move(files); }
+};
+
+// Pushes a declaration onto Checker::declStack_ for the time it is resolved.
+// Type resolution and layout recurse once per declaration nested by value,
+// by alias or by EXTENDS; past kMaxDeclarationDepth that is a compile error
+// (docs/limits.md), so hostile chains cannot exhaust the stack.
+class DeclDepthGuard {
+public:
+    static constexpr size_t kMaxDeclarationDepth = 1000;
+    DeclDepthGuard(Checker& checker, const std::string& name, const ast::Loc& loc);
+    ~DeclDepthGuard();
+    DeclDepthGuard(const DeclDepthGuard&) = delete;
+    DeclDepthGuard& operator=(const DeclDepthGuard&) = delete;
+    bool ok() const { return ok_; }
+
+private:
+    Checker& checker_;
+    bool ok_ = false;
 };
 
 }  // namespace strun::sema

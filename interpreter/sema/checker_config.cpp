@@ -225,6 +225,7 @@ void Checker::buildConfiguration() {
 
 void Checker::run(std::vector<ast::CompilationUnit>& units) {
     for (auto& u : units) collect(u);
+    breakInheritanceCycles();
     // Types and enumerations first, so that enumeration values are known everywhere.
     for (auto& [key, decl] : typeDecls_) resolveTypeDecl(key, decl->loc);
     declareGlobals();

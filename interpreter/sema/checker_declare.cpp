@@ -162,6 +162,8 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         error(decl->loc, fmt::format("type '{}' is defined in terms of itself", decl->name));
         return nullptr;
     }
+    DeclDepthGuard depth(*this, decl->name, decl->nameLoc.line ? decl->nameLoc : decl->loc);
+    if (!depth.ok()) return nullptr;
     resolvingTypes_.insert(key);
     const Type* result = nullptr;
     const ast::TypeSpec* spec = decl->spec.get();
@@ -170,11 +172,14 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         resolvedTypes_[key] = t;  // allows POINTER TO self inside
         t->kind = TK::Struct;
         t->name = decl->name;
+        t->incomplete = true;
         uint32_t off = 0;
         uint32_t align = 1;
         if (!decl->extends.empty()) {
             const Type* base = resolveNamedType(decl->extends, decl->loc);
-            if (base && base->kind == TK::Struct) {
+            if (base && base->incomplete) {
+                error(decl->loc, fmt::format("inheritance cycle: {}", cyclePath(base->name)));
+            } else if (base && base->kind == TK::Struct) {
                 t->parent = base;
                 off = base->size;
                 align = base->align;
@@ -187,7 +192,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         uint32_t unionSize = 0;
         for (const auto& f : spec->fields) {
             const Type* ft = resolveTypeSpec(f.type.get(), decl->name);
-            if (!ft) continue;
+            if (!ft || rejectByValueCycle(ft, f.type ? f.type->loc : f.loc)) continue;
             for (size_t n = 0; n < f.names.size(); ++n) {
                 if (t->findField(upper(f.names[n]))) {
                     error(f.loc, fmt::format("duplicate member '{}' in structure '{}'", f.names[n], decl->name));
@@ -222,6 +227,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         if (t->parent && !t->parent->defaultImage.empty()) nonZero = true;
         for (uint8_t b : image) nonZero = nonZero || b != 0;
         if (nonZero) t->defaultImage = std::move(image);
+        t->incomplete = false;
         result = t;
     } else if (spec && spec->kind == ast::TypeSpecKind::Enum) {
         Type t;
@@ -299,7 +305,9 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
             if (!elem) return nullptr;
             std::vector<ArrayDim> dims;
             bool flexible = false;
-            uint64_t total = elem->size;
+            // Bytes, counting a zero-size element (an empty STRUCT) as one byte so
+            // that the element count is capped too (docs/limits.md).
+            uint64_t total = std::max<uint32_t>(elem->size, 1);
             for (const auto& r : spec->dims) {
                 if (r.star) { flexible = true; dims.push_back({0, -1}); continue; }
                 int64_t lo = 0, hi = 0;
@@ -309,12 +317,13 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
                     error(spec->loc, fmt::format("array upper bound {} is below lower bound {}", hi, lo));
                     return nullptr;
                 }
-                uint64_t n = static_cast<uint64_t>(hi - lo) + 1;
-                total *= n;
-                if (n > kMaxStorage || total > kMaxStorage) {
+                // Unsigned span: LINT#-9223372036854775808..LINT#9223372036854775807 has 2^64 elements.
+                const uint64_t span = static_cast<uint64_t>(hi) - static_cast<uint64_t>(lo);
+                if (span >= kMaxStorage || (span + 1) > kMaxStorage / total) {
                     error(spec->loc, "array too large (more than 256 MiB)");
                     return nullptr;
                 }
+                total *= span + 1;
                 dims.push_back({lo, hi});
             }
             const Type* t = types().array(elem, std::move(dims), flexible);
@@ -420,10 +429,11 @@ bool Checker::constIntExpr(const ast::Expr* e, int64_t& out, const char* what) {
 
 void Checker::layoutPou(PouInfo* pou) {
     if (pou->laidOut) return;
-    if (pou->layingOut) {
-        error(pou->ast->loc, fmt::format("'{}' contains an instance of itself", pou->name));
-        return;
-    }
+    // Laid out again while in progress: the caller reports the cycle
+    // (rejectByValueCycle on the incomplete instance type).
+    if (pou->layingOut) return;
+    DeclDepthGuard depth(*this, pou->name, pou->ast->nameLoc.line ? pou->ast->nameLoc : pou->ast->loc);
+    if (!depth.ok()) return;
     pou->layingOut = true;
     PouInfo* savedPou = pou_;
     pou_ = pou;
@@ -437,6 +447,7 @@ void Checker::layoutPou(PouInfo* pou) {
         inst->kind = TK::FunctionBlock;
         inst->name = pou->name;
         inst->pou = pou;
+        inst->incomplete = true;
         pou->instanceType = inst;
         if (pou->kind == ast::PouKind::FunctionBlock) instOff = kFbHeader;
         if (!pou->ast->extends.empty() && pou->kind == ast::PouKind::FunctionBlock) {
@@ -445,6 +456,8 @@ void Checker::layoutPou(PouInfo* pou) {
                 error(pou->ast->loc, fmt::format("unknown function block '{}' in EXTENDS", pou->ast->extends));
             } else {
                 layoutPou(it->second);
+            }
+            if (it != pous_.end() && it->second->kind == ast::PouKind::FunctionBlock && it->second->laidOut) {
                 pou->parent = it->second;
                 inst->parent = pou->parent->instanceType;
                 instOff = pou->parent->instanceType ? pou->parent->instanceType->size : kFbHeader;
@@ -496,6 +509,7 @@ void Checker::layoutPou(PouInfo* pou) {
         inst->fields = std::move(fields);
         inst->size = alignUp(std::max<uint32_t>(instOff, 1), align);
         inst->align = align;
+        inst->incomplete = false;
         // Initial image: parent image, then own members.
         std::vector<uint8_t> image(inst->size, 0);
         if (pou->parent && pou->parent->instanceType)
@@ -509,6 +523,7 @@ void Checker::layoutPou(PouInfo* pou) {
             // Every FB instance starts with its class (methods dispatch through it).
             if (!pou->classDesc) {
                 model_.classes.emplace_back();
+                model_.machine.memory.addObject(&model_.classes.back());
                 pou->classDesc = &model_.classes.back();
                 pou->classDesc->name = pou->name;
             }
@@ -543,6 +558,7 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
             bool isExternal = block.section == ast::VarSection::External;
             if (decl.type) t = resolveTypeSpec(decl.type.get(), pou->name);
             if (!t && !isExternal) continue;
+            if (t && block.section != ast::VarSection::InOut && rejectByValueCycle(t, decl.type ? decl.type->loc : decl.loc)) continue;
             for (size_t n = 0; n < decl.names.size(); ++n) {
                 const std::string& name = decl.names[n];
                 ast::Loc loc = n < decl.nameLocs.size() ? decl.nameLocs[n] : decl.loc;

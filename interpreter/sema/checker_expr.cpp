@@ -411,7 +411,7 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
     const Type* t = base.type;
     // Auto-dereference of REFERENCE TO.
     if (t->kind == TK::Reference) {
-        exec::Expr* place = pool().make<exec::DerefPlace>(base.node, site(loc));
+        exec::Expr* place = pool().make<exec::DerefPlace>(base.node, site(loc), t->target->size);
         Checked d;
         d.ok = true;
         d.loc = loc;
@@ -723,7 +723,7 @@ Checked Checker::checkExpr(const ast::Expr& e) {
             c.type = p.type->target;
             c.isPlace = true;
             c.hasCall = p.hasCall;
-            c.node = loadFrom(pool().make<exec::DerefPlace>(p.node, site(e.loc)), c.type);
+            c.node = loadFrom(pool().make<exec::DerefPlace>(p.node, site(e.loc), c.type->size), c.type);
             c.node->type = c.type;
             return c;
         }

@@ -15,11 +15,33 @@ namespace {
 constexpr int kMaxNesting = 64;  // instances inside instances: far beyond real programs
 }
 
+// Whether a value of type `t` holds any FB instance with an FB_init: arrays of
+// types without one are skipped instead of visited element by element.
+bool Checker::holdsFbInit(const Type* t) {
+    if (!t) return false;
+    auto known = holdsFbInit_.find(t);
+    if (known != holdsFbInit_.end()) return known->second;
+    holdsFbInit_[t] = false;  // a cycle (already an error) ends here
+    bool result = false;
+    if (t->kind == TK::Array) result = holdsFbInit(t->elem);
+    else if (t->kind == TK::Struct)
+        for (const Type* p = t; p && !result; p = p->parent)
+            for (const auto& f : p->fields) result = result || holdsFbInit(f.type);
+    else if (t->kind == TK::FunctionBlock && t->pou) {
+        result = t->pou->kind == ast::PouKind::FunctionBlock && findMethod(t->pou, "FB_INIT");
+        for (PouInfo* p = t->pou; p && !result; p = p->parent)
+            for (auto& v : p->ownedVars)
+                if (v->storage == Storage::Self && !v->byRef) result = result || holdsFbInit(v->type);
+    }
+    holdsFbInit_[t] = result;
+    return result;
+}
+
 void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth) {
-    if (!t || depth > kMaxNesting) return;
+    if (!t || depth > kMaxNesting || !holdsFbInit(t)) return;
     if (t->kind == TK::Array) {
         if (t->elem && (t->elem->kind == TK::FunctionBlock || t->elem->kind == TK::Struct || t->elem->kind == TK::Array))
-            for (uint64_t k = 0; k < t->elemCount; ++k) collectFbInits(t->elem, addr + k * t->elem->size, nullptr, depth + 1);
+            for (uint64_t k = 0; k < t->elemCount && !fbInitLimitReported_; ++k) collectFbInits(t->elem, addr + k * t->elem->size, nullptr, depth + 1);
         return;
     }
     if (t->kind == TK::Struct) {
@@ -35,6 +57,15 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
                 collectFbInits(v->type, addr + v->offset, v->decl ? v->decl->type.get() : nullptr, depth + 1);
     PouInfo* init = fb->kind == ast::PouKind::FunctionBlock ? findMethod(fb, "FB_INIT") : nullptr;
     if (!init) return;
+    // One resolved call per instance: cap them (docs/limits.md) so that an
+    // array of ten million such blocks is an error, not gigabytes and minutes.
+    if (model_.initCalls.size() >= kMaxFbInitCalls) {
+        if (!fbInitLimitReported_)
+            error(declSpec ? declSpec->loc : init->ast->loc,
+                  fmt::format("more than {} instances of function blocks with FB_init (the limit per project)", kMaxFbInitCalls));
+        fbInitLimitReported_ = true;
+        return;
+    }
     ast::Expr call;
     call.kind = ast::ExprKind::Call;
     call.loc = declSpec ? declSpec->loc : init->ast->loc;

@@ -260,7 +260,7 @@ Checked Checker::autoDeref(Checked c) {
     d.hasCall = c.hasCall;
     d.readOnly = c.readOnly;
     d.readOnlyWhy = c.readOnlyWhy;
-    d.node = loadFrom(pool().make<exec::DerefPlace>(c.node, site(c.loc)), target);
+    d.node = loadFrom(pool().make<exec::DerefPlace>(c.node, site(c.loc), target->size), target);
     d.node->type = target;
     return d;
 }

@@ -1,4 +1,6 @@
 // Statements and POU bodies.
+#include <map>
+
 #include <fmt/format.h>
 
 #include "interpreter/sema/checker.h"
@@ -278,6 +280,7 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
     auto* n = pool().make<exec::CaseStmt>();
     n->selector = sel.node;
     n->isUnsigned64 = repOf(st) == Rep::U64;
+    std::map<int64_t, int64_t> used;
     for (const auto& br : s.cases) {
         size_t index = n->blocks.size();
         for (const auto& lab : br.labels) {
@@ -309,11 +312,14 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
             hi = lo;
             if (lab.hi && !one(lab.hi.get(), hi)) continue;
             if (hi < lo) error(lab.lo->loc, fmt::format("empty CASE range {}..{}", lo, hi));
-            for (const auto& e : n->entries)
-                if (!(hi < e.lo || lo > e.hi)) {
-                    error(lab.lo->loc, fmt::format("CASE label {} is already used", lo == hi ? std::to_string(lo) : fmt::format("{}..{}", lo, hi)));
-                    break;
-                }
+            // The labels so far, as disjoint ranges by their start: only the
+            // range starting last at or before `hi` can overlap (O(log n) per
+            // label; a linear scan made 200 000 arms take 19 s).
+            auto after = used.upper_bound(hi);
+            if (after != used.begin() && std::prev(after)->second >= lo)
+                error(lab.lo->loc, fmt::format("CASE label {} is already used", lo == hi ? std::to_string(lo) : fmt::format("{}..{}", lo, hi)));
+            else if (lo <= hi)
+                used.emplace(lo, hi);
             n->entries.push_back({lo, hi, index});
         }
         n->blocks.push_back(checkBlock(br.body));

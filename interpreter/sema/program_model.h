@@ -64,6 +64,7 @@ struct ProgramModel {
 
     uint8_t* allocate(size_t size) {
         blocks.push_back(std::make_unique<uint8_t[]>(size ? size : 1));
+        machine.memory.add(blocks.back().get(), size ? size : 1);
         return blocks.back().get();
     }
 };

@@ -74,6 +74,9 @@ struct Type {
     // Initial image of a value of this type when it is not all zeros
     // (structs with member initialisers, enums, aliases with an initial value, FB instances).
     std::vector<uint8_t> defaultImage;
+    // Struct / FB whose layout is still being computed: containing it by value
+    // (directly, through an array or another type) is a cycle (checker_cycles.cpp).
+    bool incomplete = false;
 
     const Field* findField(const std::string& upperName) const;
 };

@@ -1,0 +1,36 @@
+// The memory that belongs to a running project: storage blocks (globals,
+// instances), the tasks' frame stacks and fault sinks, the process image.
+// A pointer moved by arithmetic, or forged through a UNION, may point
+// anywhere; dereferences and method calls through pointers check it here
+// first and raise NULL_POINTER instead of touching host memory
+// (docs/diagnostics.md). Regions are registered before the run; lookups are
+// a binary search, done only for pointer dereferences, not for ordinary
+// variable access.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace strun::rt {
+
+class MemoryMap {
+public:
+    void add(const void* begin, size_t size);
+    // True when [p, p + size) lies inside one registered region.
+    bool contains(const void* p, size_t size) const;
+    // Objects that may be the target of a hidden pointer (class descriptors of FB instances).
+    void addObject(const void* object);
+    bool isObject(const void* p) const;
+
+private:
+    void sort() const;
+    struct Region {
+        uintptr_t begin, end;
+    };
+    mutable std::vector<Region> regions_;
+    mutable std::vector<uintptr_t> objects_;
+    mutable bool sorted_ = true;
+};
+
+}  // namespace strun::rt
