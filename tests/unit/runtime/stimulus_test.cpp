@@ -99,12 +99,16 @@ TEST_CASE("--dump tasks and diagnostics keep a fixed key order", "[dump]") {
     FakeBody& body = s.add(cyclic("Cyc", 1, 10 * us), 3);
     body.faultAt = 1;
     body.fault = DiagCode::DivByZero;
-    RunOptions options = virtualFor(5 * us);
+    RunOptions options = virtualFor(25 * us);
     options.sourceFiles = {"a.st"};
     s.run(options);
+    REQUIRE(s.scheduler->tasksJson().size() == 1);
+    REQUIRE(s.scheduler->diagnosticsJson().size() >= 1);
     std::vector<std::string> taskKeys, diagKeys;
-    for (const auto& item : s.scheduler->tasksJson()[0].items()) taskKeys.push_back(item.key());
-    for (const auto& item : s.scheduler->diagnosticsJson()[0].items()) diagKeys.push_back(item.key());
+    const auto tasks = s.scheduler->tasksJson();
+    const auto diagnostics = s.scheduler->diagnosticsJson();
+    for (const auto& item : tasks[0].items()) taskKeys.push_back(item.key());
+    for (const auto& item : diagnostics[0].items()) diagKeys.push_back(item.key());
     CHECK(std::vector<std::string>(taskKeys.begin(), taskKeys.begin() + 6) ==
           std::vector<std::string>{"name", "kind", "priority", "cycles", "overruns", "watchdog_trips"});
     CHECK(diagKeys == std::vector<std::string>{"time", "code", "task", "pou", "file", "line", "col", "message"});
