@@ -176,6 +176,7 @@ PlcState Scheduler::run() {
 
     // A fault stop ends the run at the fault, not at the statement boundary where the task unwound.
     endTime_ = state_ == PlcState::Run ? machine_.now : stopTime_;
+    if (options_.observer) options_.observer->runEnded(std::max(endTime_, machine_.now));
     timer_.reset();
     runningMachine_.store(nullptr);
     stopRequested_.store(false);
@@ -394,6 +395,7 @@ void Scheduler::runActivation(TaskRun& task) {
     ++activations_;
     stack_.push_back(&task);
     trace(&task, "start");
+    observeRunning(task, true);
 
     // --set variable writes due by now, then the input phase.
     if (options_.stimulus) options_.stimulus->applyVariablesDue(start, options_.trace);
@@ -407,6 +409,10 @@ void Scheduler::runActivation(TaskRun& task) {
     // freewheeling task can never spin at a standstill on the virtual clock.
     if (options_.virtualClock && machine_.now == start) machine_.now += machine_.stmtCost;
     refreshNow();
+    if (options_.observer) {
+        options_.observer->activationEnded(size_t(&task - tasks_.data()), machine_.now);
+        observeRunning(task, false);
+    }
     stack_.pop_back();
     task.phase = Phase::Idle;
     task.watchdogAt = kNever;
@@ -464,11 +470,17 @@ bool Scheduler::onAttention() {
         }
         TaskRun* next = pickReady(&current);
         if (!next) break;
-        if (!preempted) trace(&current, "preempt");
+        if (!preempted) {
+            trace(&current, "preempt");
+            observeRunning(current, false);
+        }
         preempted = true;
         runActivation(*next);
     }
-    if (preempted) trace(&current, "resume");
+    if (preempted) {
+        trace(&current, "resume");
+        observeRunning(current, true);
+    }
     armNextAttention();
     return false;
 }
@@ -488,18 +500,24 @@ void Scheduler::tripWatchdog(TaskRun& task) {
     trace(&task, "watchdog");
     bool timeoutTaskTripped = &task == timeoutTask_;
     std::string pou;
-    int line = 0;
-    if (task.body) task.body->currentPosition(pou, line);
+    int line = 0, file = -1, col = 0;
+    if (task.body) {
+        task.body->currentPosition(pou, line);
+        task.body->currentFileAndColumn(file, col);
+    }
     record(DiagCode::Watchdog, &task, pou, line,
            std::string(timeoutTaskTripped ? "the execution-timeout task '" : "task '") + task.spec.name +
                "' reached its watchdog of " + formatDuration(task.spec.watchdog) + " (running for " +
-               formatDuration(machine_.now - task.startedAt) + ", preemptions included); the activation is aborted");
+               formatDuration(machine_.now - task.startedAt) + ", preemptions included); the activation is aborted",
+           file, col);
     PlcState reaction = profile_.watchdogReaction == WatchdogReaction::Halt ? PlcState::Halt : PlcState::Stop;
     if (timeoutTaskTripped || !timeoutTask_) faultStop(&task, DiagCode::Watchdog, reaction);
     else release(*timeoutTask_, machine_.now, false);
 }
 
 void Scheduler::faultStop(const TaskRun* task, DiagCode code, PlcState state) {
+    // The entry just recorded is the fault that stops the PLC.
+    if (!diagnostics_.entries().empty()) stopFaults_.push_back(diagnostics_.entries().back());
     if (state_ == PlcState::Run) {
         state_ = state;
         stopTime_ = machine_.now;
@@ -512,11 +530,11 @@ void Scheduler::faultStop(const TaskRun* task, DiagCode code, PlcState state) {
     machine_.requestAttention();
 }
 
-void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::string message) {
+void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::string message, int file, int col) {
     refreshNow();
     TaskRun* current = stack_.empty() ? nullptr : stack_.back();
     trace(current, "error", diagCodeName(code));
-    record(code, current, pou, line, std::move(message));
+    record(code, current, pou, line, std::move(message), file, col);
     switch (code) {
     case DiagCode::DivByZero:
     case DiagCode::Overrun:
@@ -537,8 +555,8 @@ void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::stri
     }
 }
 
-void Scheduler::record(DiagCode code, const TaskRun* task, std::string_view pou, int line, std::string message) {
-    diagnostics_.add({machine_.now, code, task ? task->spec.name : std::string(), std::string(pou), line, std::move(message)});
+void Scheduler::record(DiagCode code, const TaskRun* task, std::string_view pou, int line, std::string message, int file, int col) {
+    diagnostics_.add({machine_.now, code, task ? task->spec.name : std::string(), std::string(pou), line, std::move(message), file, col});
 }
 
 // ---------------------------------------------------------------- attention
@@ -568,6 +586,10 @@ int64_t Scheduler::calendarNanos() {
     return realtimeNanos();
 }
 
+void Scheduler::observeRunning(const TaskRun& task, bool running) {
+    if (options_.observer) options_.observer->taskRunning(size_t(&task - tasks_.data()), running, machine_.now);
+}
+
 std::string Scheduler::currentTaskName() const { return stack_.empty() ? std::string() : stack_.back()->spec.name; }
 
 // ---------------------------------------------------------------- output
@@ -589,12 +611,12 @@ void Scheduler::trace(const TaskRun* task, const char* event, const char* detail
     options_.trace->write(traceLine_.data(), std::streamsize(traceLine_.size()));
 }
 
-nlohmann::json Scheduler::tasksJson() const {
-    nlohmann::json array = nlohmann::json::array();
+nlohmann::ordered_json Scheduler::tasksJson() const {
+    nlohmann::ordered_json array = nlohmann::ordered_json::array();
     for (const TaskRun& task : tasks_) {
         bool ran = task.cycles > 0;
         bool started = task.started > 0;
-        array.push_back({
+        array.push_back(nlohmann::ordered_json{
             {"name", task.spec.name},
             {"kind", taskKindName(task.spec.kind)},
             {"priority", task.spec.priority},
@@ -612,15 +634,18 @@ nlohmann::json Scheduler::tasksJson() const {
     return array;
 }
 
-nlohmann::json Scheduler::diagnosticsJson() const {
-    nlohmann::json array = nlohmann::json::array();
+nlohmann::ordered_json Scheduler::diagnosticsJson() const {
+    nlohmann::ordered_json array = nlohmann::ordered_json::array();
     for (const DiagEntry& entry : diagnostics_.entries()) {
-        array.push_back({
+        bool known = entry.file >= 0 && size_t(entry.file) < options_.sourceFiles.size();
+        array.push_back(nlohmann::ordered_json{
             {"time", formatDuration(entry.time)},
             {"code", diagCodeName(entry.code)},
             {"task", entry.task},
             {"pou", entry.pou},
+            {"file", known ? options_.sourceFiles[size_t(entry.file)] : std::string()},
             {"line", entry.line},
+            {"col", entry.col},
             {"message", entry.message},
         });
     }
