@@ -35,6 +35,7 @@ struct Options {
     bool dump = false;
     bool trace = false;
     bool realtime = false;
+    std::string target;
 };
 
 int usage(const std::string& message) {
@@ -89,13 +90,19 @@ int runCommand(const Options& o, bool execute) {
     }
     run.realtime = o.realtime;
     if (o.trace) run.trace = &std::cerr;
+    const strun::rt::PlcProfile* profile = &strun::rt::defaultProfile();
+    if (!o.target.empty()) {
+        profile = strun::rt::findProfile(o.target);
+        if (!profile) return usage("--target: unknown target '" + o.target + "'; the targets are " + strun::rt::profileIds());
+    }
+    run.profile = profile;
 
     strun::SourceSet sources;
     std::vector<int> files;
     std::string err;
     if (!readFiles(o.files, sources, files, err)) return usage(err);
     strun::CompileLog log;
-    auto model = strun::project::compileProject(sources, files, log);
+    auto model = strun::project::compileProject(sources, files, log, *profile);
     log.print(std::cerr, sources);
     if (!model) return kExitCompile;
     if (!execute) return kExitOk;
@@ -123,6 +130,7 @@ int runCommand(const Options& o, bool execute) {
     if (o.dump) {
         nlohmann::ordered_json out;
         out["state"] = strun::rt::plcStateName(state);
+        out["target"] = std::string(profile->id);
         out["time"] = strun::stdlib::formatDuration(scheduler.endTime());
         out["globals"] = strun::project::globalsJson(*model);
         out["programs"] = strun::project::programsJson(*model);
@@ -151,8 +159,10 @@ int main(int argc, char** argv) {
         run->add_flag("--dump", o.dump, "print the final state as JSON on stdout");
         run->add_flag("--trace", o.trace, "print task events on stderr");
         run->add_flag("--realtime", o.realtime, "ask for SCHED_FIFO and locked memory");
+        run->add_option("--target", o.target, "PLC family: " + strun::rt::profileIds());
         auto* check = app.add_subcommand("check", "compile only; print diagnostics");
         check->add_option("FILE", o.files, "source files")->required();
+        check->add_option("--target", o.target, "PLC family: " + strun::rt::profileIds());
         try {
             app.parse(argc, argv);
         } catch (const CLI::CallForHelp& e) {
