@@ -25,12 +25,14 @@ void SystemArea::start(const std::array<PlcTime, kSlots>& periods, PlcTime maste
 }
 
 void SystemArea::enter(int slot) {
+    running_ = slot;
     if (slot < 0 || slot >= kSlots) return;
     setBit(kOverrunBit, overrun_[size_t(slot)]);
     setWord(kMasterWatchdogWord, masterWatchdogMs_);  // not modifiable by the program
 }
 
 void SystemArea::leave(int slot) {
+    running_ = -1;
     if (slot < 0 || slot >= kSlots) return;
     overrun_[size_t(slot)] = bit(kOverrunBit);  // the program may have reset it
 }
@@ -38,6 +40,7 @@ void SystemArea::leave(int slot) {
 void SystemArea::setOverrun(int slot) {
     if (slot < 0 || slot >= kSlots) return;
     overrun_[size_t(slot)] = true;
+    if (slot == running_) setBit(kOverrunBit, true);  // the task sees it at once; leave() keeps it
 }
 
 void SystemArea::recordExecution(int slot, PlcTime exec) {

@@ -54,6 +54,7 @@ private:
     std::array<uint16_t, kSlots> minMs_{};
     std::array<bool, kSlots> measured_{};
     uint16_t masterWatchdogMs_ = 0;
+    int running_ = -1;  // the slot whose %S19 is in the bit now
 };
 
 }  // namespace strun::rt
