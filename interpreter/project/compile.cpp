@@ -10,7 +10,7 @@
 namespace strun::project {
 
 std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
-                                                   const rt::PlcProfile& profile) {
+                                                   const sema::CompileOptions& options) {
     std::vector<ast::CompilationUnit> units;
     std::set<int> libraryFiles;
     for (const auto& src : stdlib::embeddedSources()) {
@@ -23,7 +23,8 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     auto model = std::make_unique<sema::ProgramModel>();
     sema::Checker checker(*model, log);
     checker.setLibraryFiles(libraryFiles);
-    checker.setProfile(profile);
+    checker.setCompileOptions(options);
+    if (const rt::PlcProfile* profile = rt::findProfile(options.target)) checker.setProfile(*profile);
     stdlib::registerBuiltins(checker);
     checker.run(units);
     if (log.hasErrors()) return nullptr;
