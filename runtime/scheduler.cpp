@@ -176,6 +176,8 @@ PlcState Scheduler::run() {
         system_->start(periods, master_ ? master_->spec.watchdog : 0);
     }
     masterOnlyPhase_ = profile_.firstCycle == FirstCyclePolicy::MasterOnly && master_;
+    if (options_.stimulus)
+        options_.stimulus->setInputListener([this](const StimulusWrite&, PlcTime at) { physicalInputsChanged(at); });
     recomputeEarliestRelease();
     if (startup_) release(*startup_, 0, false);
     else startRegularTasks();
@@ -515,8 +517,7 @@ void Scheduler::setPeriod(TaskRun& task, PlcTime period) {
     if (!stack_.empty()) armNextAttention();
 }
 
-void Scheduler::physicalInputsChanged() {
-    PlcTime now = machine_.now;
+void Scheduler::physicalInputsChanged(PlcTime now) {
     bool planned = false;
     for (TaskRun& task : tasks_) {
         if (task.spec.kind != TaskKind::External) continue;

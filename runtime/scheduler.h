@@ -90,11 +90,12 @@ public:
     PlcTime currentTaskInterval() override;
     bool setCurrentTaskInterval(PlcTime period) override;
 
-    // Call after writing ProcessImage::physicalInputs at PLC time
-    // machine.now (the stimulus does): each EXTERNAL task whose input bit
-    // changed with one of its edges is released at now + the target's
-    // detection delay (no sooner than its minimum spacing after the last one).
-    void physicalInputsChanged();
+    // Called (through the stimulus's input listener) after a write to
+    // ProcessImage::physicalInputs that took effect at PLC time `at`: each
+    // EXTERNAL task whose input bit changed with one of its edges is released
+    // at `at` + the target's detection delay (no sooner than its minimum
+    // spacing after its previous release).
+    void physicalInputsChanged(PlcTime at);
 
 private:
     enum class Phase : uint8_t { Idle, Ready, Active };
