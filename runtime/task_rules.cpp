@@ -125,9 +125,6 @@ private:
     void checkFixedTask(const TaskSpec& task, const FixedTask& fixed) {
         std::string where = " of task '" + task.name + "'";
         std::string on = " on " + std::string(profile_.description);
-        if (task.priority != fixed.priority)
-            report(task, "priority " + std::to_string(task.priority) + where + " is fixed at " +
-                             std::to_string(fixed.priority) + on);
         if (task.kind == TaskKind::Freewheeling) {
             if (!fixed.freewheelingAllowed)
                 report(task, "task '" + task.name + "' needs an INTERVAL in " + formatDuration(fixed.minInterval) + ".." +
@@ -166,12 +163,7 @@ private:
     }
 
     void checkPriority(const TaskSpec& task) {
-        if (task.kind == TaskKind::Startup && profile_.startupPriorityFixed) {
-            if (task.priorityGiven)
-                report(task, "the priority of startup task '" + task.name + "' is fixed on " +
-                                 std::string(profile_.description) + "; remove PRIORITY");
-            return;
-        }
+        if (task.kind == TaskKind::Startup && profile_.startupPriorityFixed) return;  // applyTaskDefaults fixed it
         const KindLimits& limits = profile_.limits(task.kind);
         if (task.priority >= limits.minPriority && task.priority <= limits.maxPriority) return;
         report(task, "priority " + std::to_string(task.priority) + " of task '" + task.name + "' is outside " +
@@ -249,20 +241,29 @@ std::string taskNameProblem(const std::string& name) {
     return "";
 }
 
-void applyTaskDefaults(const PlcProfile& profile, TaskSpec& task) {
+std::string applyTaskDefaults(const PlcProfile& profile, TaskSpec& task) {
+    std::string warning;
+    auto fixPriority = [&](int fixedPriority) {
+        if (task.priorityGiven && task.priority != fixedPriority)
+            warning = "the priority of task '" + task.name + "' is fixed at " + std::to_string(fixedPriority) + " on " +
+                      std::string(profile.description) + "; PRIORITY := " + std::to_string(task.priority) + " is ignored";
+        task.priority = fixedPriority;
+    };
     if (const FixedTask* fixed = profile.fixedTask(task.name)) {
         task.systemSlot = profile.fixedTaskIndex(task.name);
-        if (!task.priorityGiven) task.priority = fixed->priority;
+        fixPriority(fixed->priority);
         if (!task.watchdogGiven) task.watchdog = fixed->defaultWatchdog;
         if (!task.intervalGiven && task.kind == TaskKind::Freewheeling && fixed->defaultInterval > 0) {
             task.interval = fixed->defaultInterval;
             task.kind = TaskKind::Cyclic;
         }
-        return;
+        return warning;
     }
     const KindLimits& limits = profile.limits(task.kind);
+    if (task.kind == TaskKind::Startup && profile.startupPriorityFixed) fixPriority(limits.defaultPriority);
     if (!task.priorityGiven) task.priority = limits.defaultPriority;
     if (!task.watchdogGiven) task.watchdog = limits.defaultWatchdog;
+    return warning;
 }
 
 std::string programCountProblem(const PlcProfile& profile, const TaskSpec& task, int programCount) {

@@ -21,8 +21,10 @@ struct TaskRuleViolation {
 // Fills in what the TASK declaration left out from the profile: the kind's
 // default PRIORITY and WATCHDOG; on a family with fixed tasks (M340) the
 // task's fixed priority, default period (none: freewheeling) and watchdog,
-// and its system-variable slot. Call before checkTaskRules.
-void applyTaskDefaults(const PlcProfile& profile, TaskSpec& task);
+// and its system-variable slot. A written PRIORITY where the family fixes
+// it (M340 tasks, the Baosky startup task) is replaced; the returned warning
+// says so ("" when none). Call before checkTaskRules.
+std::string applyTaskDefaults(const PlcProfile& profile, TaskSpec& task);
 
 // Violations in declaration order of the offending task; empty when the
 // configuration is valid for `profile`.

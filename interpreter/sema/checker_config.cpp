@@ -154,7 +154,7 @@ void Checker::buildConfiguration() {
             }
         }
         if (hasInterval && s.kind == rt::TaskKind::Freewheeling) s.kind = rt::TaskKind::Cyclic;
-        rt::applyTaskDefaults(profile(), s);
+        if (std::string warning = rt::applyTaskDefaults(profile(), s); !warning.empty()) log_.warning(s.loc, warning);
         model_.tasks.push_back(std::move(task));
     }
     std::vector<rt::TaskSpec> specs;
