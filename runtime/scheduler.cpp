@@ -176,7 +176,9 @@ PlcState Scheduler::run() {
         system_->start(periods, master_ ? master_->spec.watchdog : 0);
     }
     masterOnlyPhase_ = profile_.firstCycle == FirstCyclePolicy::MasterOnly && master_;
-    if (options_.stimulus)
+    // The stimulus tells the scheduler about input changes only when an EXTERNAL task listens.
+    bool hasExternal = std::any_of(tasks_.begin(), tasks_.end(), [](const TaskRun& t) { return t.spec.kind == TaskKind::External; });
+    if (options_.stimulus && hasExternal)
         options_.stimulus->setInputListener([this](const StimulusWrite&, PlcTime at) { physicalInputsChanged(at); });
     recomputeEarliestRelease();
     if (startup_) release(*startup_, 0, false);

@@ -68,7 +68,9 @@ TEST_CASE("defaults fill what a TASK leaves out", "[targets]") {
 
 TEST_CASE("M340 rules: fixed names, AUX needs a periodic MAST", "[targets]") {
     const PlcProfile& m340 = *findProfile("m340");
-    std::vector<TaskSpec> tasks{named("MAST"), named("AUX1"), named("Conveyor")};
+    TaskSpec conveyor = named("Conveyor", TaskKind::Cyclic);
+    conveyor.interval = 20 * ms;
+    std::vector<TaskSpec> tasks{named("MAST"), named("AUX1"), conveyor};
     for (TaskSpec& t : tasks) applyTaskDefaults(m340, t);
     auto violations = checkTaskRules(m340, tasks);
     REQUIRE(violations.size() == 2);
