@@ -28,6 +28,8 @@ struct CommandLine {
     bool quiet = false;
     std::vector<std::string> sets;           // --set NAME=VALUE[@TIME], in the order given
     std::vector<std::string> stimulusFiles;  // --stimulus FILE
+    std::string vcdFile;                     // --vcd FILE
+    std::vector<std::string> watches;        // --watch PATTERN
 };
 
 }  // namespace strun::cli

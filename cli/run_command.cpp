@@ -1,5 +1,8 @@
 // strun run [options] FILE...: compile the FILEs as one project and run it.
+#include <cerrno>
 #include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <memory>
 
@@ -9,8 +12,11 @@
 #include "cli/compile_step.h"
 #include "cli/exit_codes.h"
 #include "cli/option_types.h"
+#include "cli/run_report.h"
 #include "cli/stimulus_args.h"
 #include "interpreter/project/stimulus_build.h"
+#include "interpreter/project/vcd_signals.h"
+#include "runtime/vcd_recorder.h"
 #include "interpreter/project/dump_json.h"
 #include "interpreter/project/task_runner.h"
 #include "runtime/plc_profile.h"
@@ -86,11 +92,17 @@ CLI::App* addRunCommand(CLI::App& app, CommandLine& line) {
         ->type_name("DT");
     run->add_flag("--dump", line.dump, "when the run stops, print the final state as one JSON object on stdout");
     run->add_flag("--trace", line.trace, "print task events with PLC time on stderr");
+    run->add_flag("--quiet", line.quiet, "no summary on stderr when the run ends (fault lines are still printed)");
     run->add_flag("--realtime", line.realtime, "ask for SCHED_FIFO and locked memory (real clock)");
     run->add_option("--set", line.sets,
                     "at PLC time TIME (default 0) write the ST literal VALUE to a variable or direct input (repeatable)")
         ->type_name("NAME=VALUE[@TIME]")
         ->allow_extra_args(false);  // one value per --set: FILEs follow
+    run->add_option("--vcd", line.vcdFile, "write a Value Change Dump of the run (tasks and variables; opens in GTKWave)")
+        ->type_name("FILE");
+    run->add_option("--watch", line.watches, "the variables --vcd records, by path with * wildcards (repeatable; default: all)")
+        ->type_name("PATTERN")
+        ->allow_extra_args(false);
     run->add_option("--stimulus", line.stimulusFiles, "a CSV file of TIME,NAME,VALUE lines: many --set at once")
         ->check(readableFileValidator())
         ->type_name("FILE")
@@ -102,12 +114,14 @@ int runCommand(const CommandLine& line) {
     rt::RunOptions run;
     std::string error;
     if (!buildRunOptions(line, run, error)) return usage(error);
+    if (!line.watches.empty() && line.vcdFile.empty()) return usage("--watch selects what --vcd records: give --vcd FILE too");
 
     Compiled compiled;
     compileCommandLine(line, compiled);
     if (!compiled.model) return compiled.exitCode;
     sema::ProgramModel& model = *compiled.model;
 
+    for (int i = 0; i < compiled.sources.size(); ++i) run.sourceFiles.push_back(compiled.sources.file(i).path);
     std::vector<rt::TaskSpec> specs;
     for (const auto& t : model.tasks) specs.push_back(t.spec);
     if (!line.task.empty()) {
@@ -130,6 +144,22 @@ int runCommand(const CommandLine& line) {
         return usage(error);
     if (!stimulus.empty()) run.stimulus = &stimulus;
 
+    // --vcd: the recorder observes the run; without it the scheduler has no observer at all.
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> vcdFile(nullptr, std::fclose);
+    std::unique_ptr<rt::VcdRecorder> recorder;
+    if (!line.vcdFile.empty()) {
+        vcdFile.reset(std::fopen(line.vcdFile.c_str(), "wb"));
+        if (!vcdFile) return usage("--vcd: cannot write '" + line.vcdFile + "': " + std::strerror(errno));
+        std::vector<std::string> unmatched;
+        std::vector<rt::VcdSignal> signals = project::vcdSignals(model, line.watches, unmatched);
+        for (const std::string& pattern : unmatched)
+            std::cerr << "strun: warning: --watch '" << pattern << "' matches no variable\n";
+        std::vector<std::string> taskNames;
+        for (const auto& t : model.tasks) taskNames.push_back(t.spec.name);
+        recorder = std::make_unique<rt::VcdRecorder>(vcdFile.get(), taskNames, std::move(signals), "strun " STRUN_VERSION);
+        run.observer = recorder.get();
+    }
+
     std::vector<std::unique_ptr<project::TaskRunner>> runners;
     std::vector<rt::TaskBody*> bodies;
     for (const auto& t : model.tasks) {
@@ -142,6 +172,8 @@ int runCommand(const CommandLine& line) {
     rt::PlcState state = scheduler.run();
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
+    printFaultReport(std::cerr, scheduler);
+    if (!line.dump && !line.quiet) printRunSummary(std::cerr, scheduler, state);
     if (line.dump) {
         nlohmann::ordered_json out;
         out["state"] = rt::plcStateName(state);

@@ -18,6 +18,8 @@ struct DiagEntry {
     std::string pou;   // "" for scheduler events (OVERRUN, WATCHDOG)
     int line = 0;      // 0 when unknown
     std::string message;
+    int file = -1;     // source index (RunOptions::sourceFiles), -1 when unknown
+    int col = 0;       // 0 when unknown
 };
 
 class DiagBuffer {

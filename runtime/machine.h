@@ -69,7 +69,9 @@ public:
     // Records it in the diagnostic buffer and decides what follows (nothing,
     // release the program-error task, STOP); anything that must interrupt the
     // running code makes the next tick call onAttention().
-    virtual void onFault(DiagCode code, std::string_view pou, int line, std::string message) = 0;
+    // `file` (an index of the project's source files, -1 unknown) and `col`
+    // complete the location for the fault report and --dump.
+    virtual void onFault(DiagCode code, std::string_view pou, int line, std::string message, int file = -1, int col = 0) = 0;
     // Current PLC time in ns (virtual clock: Machine::now; real clock: read now).
     virtual PlcTime currentTime() = 0;
     // Calendar date-time now, as nanoseconds since 1970-01-01-00:00:00 (UTC),

@@ -189,6 +189,7 @@ PlcState Scheduler::run() {
 
     // A fault stop ends the run at the fault, not at the statement boundary where the task unwound.
     endTime_ = state_ == PlcState::Run ? machine_.now : stopTime_;
+    if (options_.observer) options_.observer->runEnded(std::max(endTime_, machine_.now));
     timer_.reset();
     runningMachine_.store(nullptr);
     stopRequested_.store(false);
@@ -426,6 +427,7 @@ void Scheduler::runActivation(TaskRun& task) {
     ++activations_;
     stack_.push_back(&task);
     trace(&task, task.inhibited ? "inhibited" : "start");
+    observeRunning(task, true);
     int slot = task.spec.systemSlot;
     if (system_) system_->enter(slot);
 
@@ -442,6 +444,10 @@ void Scheduler::runActivation(TaskRun& task) {
     // freewheeling task can never spin at a standstill on the virtual clock.
     if (options_.virtualClock && machine_.now == start) machine_.now += machine_.stmtCost;
     refreshNow();
+    if (options_.observer) {
+        options_.observer->activationEnded(size_t(&task - tasks_.data()), machine_.now);
+        observeRunning(task, false);
+    }
     stack_.pop_back();
     task.phase = Phase::Idle;
     task.watchdogAt = kNever;
@@ -577,6 +583,7 @@ bool Scheduler::onAttention() {
         if (!next) break;
         if (!preempted) {
             trace(&current, "preempt");
+            observeRunning(current, false);
             if (system_) system_->leave(current.spec.systemSlot);
         }
         preempted = true;
@@ -584,6 +591,7 @@ bool Scheduler::onAttention() {
     }
     if (preempted) {
         trace(&current, "resume");
+        observeRunning(current, true);
         if (system_) system_->enter(current.spec.systemSlot);
     }
     armNextAttention();
@@ -606,18 +614,24 @@ void Scheduler::tripWatchdog(TaskRun& task) {
     if (system_) system_->setWatchdogOverflow();
     bool timeoutTaskTripped = &task == timeoutTask_;
     std::string pou;
-    int line = 0;
-    if (task.body) task.body->currentPosition(pou, line);
+    int line = 0, file = -1, col = 0;
+    if (task.body) {
+        task.body->currentPosition(pou, line);
+        task.body->currentFileAndColumn(file, col);
+    }
     record(DiagCode::Watchdog, &task, pou, line,
            std::string(timeoutTaskTripped ? "the execution-timeout task '" : "task '") + task.spec.name +
                "' reached its watchdog of " + formatDuration(task.spec.watchdog) + " (running for " +
-               formatDuration(machine_.now - task.startedAt) + ", preemptions included); the activation is aborted");
+               formatDuration(machine_.now - task.startedAt) + ", preemptions included); the activation is aborted",
+           file, col);
     PlcState reaction = profile_.watchdogReaction == WatchdogReaction::Halt ? PlcState::Halt : PlcState::Stop;
     if (timeoutTaskTripped || !timeoutTask_) faultStop(&task, DiagCode::Watchdog, reaction);
     else release(*timeoutTask_, machine_.now, false);
 }
 
 void Scheduler::faultStop(const TaskRun* task, DiagCode code, PlcState state) {
+    // The entry just recorded is the fault that stops the PLC.
+    if (!diagnostics_.entries().empty()) stopFaults_.push_back(diagnostics_.entries().back());
     if (state_ == PlcState::Run) {
         state_ = state;
         stopTime_ = machine_.now;
@@ -630,11 +644,11 @@ void Scheduler::faultStop(const TaskRun* task, DiagCode code, PlcState state) {
     machine_.requestAttention();
 }
 
-void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::string message) {
+void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::string message, int file, int col) {
     refreshNow();
     TaskRun* current = stack_.empty() ? nullptr : stack_.back();
     trace(current, "error", diagCodeName(code));
-    record(code, current, pou, line, std::move(message));
+    record(code, current, pou, line, std::move(message), file, col);
     switch (code) {
     case DiagCode::DivByZero:
     case DiagCode::Overrun:
@@ -655,8 +669,8 @@ void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::stri
     }
 }
 
-void Scheduler::record(DiagCode code, const TaskRun* task, std::string_view pou, int line, std::string message) {
-    diagnostics_.add({machine_.now, code, task ? task->spec.name : std::string(), std::string(pou), line, std::move(message)});
+void Scheduler::record(DiagCode code, const TaskRun* task, std::string_view pou, int line, std::string message, int file, int col) {
+    diagnostics_.add({machine_.now, code, task ? task->spec.name : std::string(), std::string(pou), line, std::move(message), file, col});
 }
 
 // ---------------------------------------------------------------- attention
@@ -686,6 +700,10 @@ int64_t Scheduler::calendarNanos() {
     return realtimeNanos();
 }
 
+void Scheduler::observeRunning(const TaskRun& task, bool running) {
+    if (options_.observer) options_.observer->taskRunning(size_t(&task - tasks_.data()), running, machine_.now);
+}
+
 std::string Scheduler::currentTaskName() const { return stack_.empty() ? std::string() : stack_.back()->spec.name; }
 
 // ---------------------------------------------------------------- output
@@ -707,12 +725,12 @@ void Scheduler::trace(const TaskRun* task, const char* event, const char* detail
     options_.trace->write(traceLine_.data(), std::streamsize(traceLine_.size()));
 }
 
-nlohmann::json Scheduler::tasksJson() const {
-    nlohmann::json array = nlohmann::json::array();
+nlohmann::ordered_json Scheduler::tasksJson() const {
+    nlohmann::ordered_json array = nlohmann::ordered_json::array();
     for (const TaskRun& task : tasks_) {
         bool ran = task.cycles > 0;
         bool started = task.started > 0;
-        array.push_back({
+        array.push_back(nlohmann::ordered_json{
             {"name", task.spec.name},
             {"kind", taskKindName(task.spec.kind)},
             {"priority", task.spec.priority},
@@ -730,15 +748,18 @@ nlohmann::json Scheduler::tasksJson() const {
     return array;
 }
 
-nlohmann::json Scheduler::diagnosticsJson() const {
-    nlohmann::json array = nlohmann::json::array();
+nlohmann::ordered_json Scheduler::diagnosticsJson() const {
+    nlohmann::ordered_json array = nlohmann::ordered_json::array();
     for (const DiagEntry& entry : diagnostics_.entries()) {
-        array.push_back({
+        bool known = entry.file >= 0 && size_t(entry.file) < options_.sourceFiles.size();
+        array.push_back(nlohmann::ordered_json{
             {"time", formatDuration(entry.time)},
             {"code", diagCodeName(entry.code)},
             {"task", entry.task},
             {"pou", entry.pou},
+            {"file", known ? options_.sourceFiles[size_t(entry.file)] : std::string()},
             {"line", entry.line},
+            {"col", entry.col},
             {"message", entry.message},
         });
     }

@@ -25,6 +25,7 @@
 #include "runtime/diag_buffer.h"
 #include "runtime/machine.h"
 #include "runtime/plc_profile.h"
+#include "runtime/run_observer.h"
 #include "runtime/stimulus.h"
 #include "runtime/task_spec.h"
 
@@ -47,6 +48,8 @@ struct RunOptions {
     size_t diagnosticCapacity = 1000;     // entries kept; older ones are dropped and counted
     std::ostream* warnings = nullptr;     // --realtime notes ("strun: warning: ..."); nullptr: std::cerr
     Stimulus* stimulus = nullptr;         // --set / --stimulus writes (runtime/stimulus.h); nullptr: none
+    RunObserver* observer = nullptr;      // --vcd recorder (runtime/run_observer.h); nullptr: none
+    std::vector<std::string> sourceFiles;  // paths by source index, for the "file" of diagnostics
 };
 
 enum class PlcState { Run, Stop, Halt };
@@ -74,17 +77,21 @@ public:
 
     PlcState state() const { return state_; }
     PlcTime endTime() const { return endTime_; }
-    nlohmann::json tasksJson() const;        // the --dump "tasks" array
-    nlohmann::json diagnosticsJson() const;  // the --dump "diagnostics" array
+    // The --dump "tasks" and "diagnostics" arrays; keys in a fixed order (docs/cli.md).
+    nlohmann::ordered_json tasksJson() const;
+    nlohmann::ordered_json diagnosticsJson() const;
     const std::vector<DiagEntry>& diagnostics() const { return diagnostics_.entries(); }
     uint64_t droppedDiagnostics() const { return diagnostics_.dropped(); }
+    // The faults that sent the PLC to STOP/HALT (usually one), in order.
+    const std::vector<DiagEntry>& stopFaults() const { return stopFaults_; }
+    const std::vector<std::string>& sourceFiles() const { return options_.sourceFiles; }
     std::string currentTaskName() const;
     // Activations started, all tasks together (the benchmark's task switches).
     uint64_t activations() const { return activations_; }
 
     // AttentionHandler (called by the interpreter).
     bool onAttention() override;
-    void onFault(DiagCode code, std::string_view pou, int line, std::string message) override;
+    void onFault(DiagCode code, std::string_view pou, int line, std::string message, int file = -1, int col = 0) override;
     PlcTime currentTime() override;
     int64_t calendarNanos() override;
     PlcTime currentTaskInterval() override;
@@ -145,9 +152,10 @@ private:
     void tripWatchdog(TaskRun& task);
     void faultStop(const TaskRun* task, DiagCode code, PlcState state);
     void armNextAttention();
-    void record(DiagCode code, const TaskRun* task, std::string_view pou, int line, std::string message);
+    void record(DiagCode code, const TaskRun* task, std::string_view pou, int line, std::string message, int file = -1, int col = 0);
     void trace(const TaskRun* task, const char* event, const char* detail = nullptr);
     PlcTime calendarToPlc(int64_t calendar) const;
+    void observeRunning(const TaskRun& task, bool running);
 
     Machine& machine_;
     std::vector<TaskRun> tasks_;
@@ -177,6 +185,7 @@ private:
     uint64_t activations_ = 0;
     std::unique_ptr<AttentionTimer> timer_;
     std::string traceLine_;
+    std::vector<DiagEntry> stopFaults_;
 
     static std::atomic<bool> stopRequested_;
     static std::atomic<Machine*> runningMachine_;

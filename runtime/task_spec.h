@@ -73,6 +73,8 @@ public:
     // Where the activation is now (for the WATCHDOG diagnostic): the POU and
     // source line of the statement being executed. False when unknown.
     virtual bool currentPosition(std::string& pou, int& line) const { return false; }
+    // The source file index and column of that statement (for the fault report).
+    virtual bool currentFileAndColumn(int& file, int& col) const { return false; }
 };
 
 }  // namespace strun::rt

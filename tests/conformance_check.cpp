@@ -18,6 +18,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -48,10 +49,11 @@ struct Directives {
 
 // `{dir}` in an argument stands for the directory of the program (a stimulus
 // file next to it), `{file}` for the program's path.
-std::string expandTokens(std::string arg, const std::string& programPath) {
+std::string expandTokens(std::string arg, const std::string& programPath, const std::string& vcdPath = "") {
     const auto slash = programPath.find_last_of('/');
     const std::string dir = slash == std::string::npos ? "." : programPath.substr(0, slash);
-    for (const auto& [token, value] : {std::pair<std::string, std::string>{"{dir}", dir}, {"{file}", programPath}})
+    for (const auto& [token, value] :
+         {std::pair<std::string, std::string>{"{dir}", dir}, {"{file}", programPath}, {"{vcd}", vcdPath}})
         for (std::size_t at; (at = arg.find(token)) != std::string::npos;) arg.replace(at, token.size(), value);
     return arg;
 }
@@ -210,10 +212,13 @@ std::vector<std::string> missingPatterns(const std::string& patternsText, const 
     for (std::string pattern; std::getline(in, pattern);) {
         if (!pattern.empty() && pattern.back() == '\r') pattern.pop_back();
         if (trim(pattern).empty()) continue;
+        // `!text`: no line may contain text (reported as the pattern itself).
+        const bool negated = pattern[0] == '!';
+        const std::string text = negated ? pattern.substr(1) : pattern;
         bool found = false;
         for (const auto& l : stderrLines)
-            if (l.find(pattern) != std::string::npos) { found = true; break; }
-        if (!found) missing.push_back(pattern);
+            if (l.find(text) != std::string::npos) { found = true; break; }
+        if (found == negated) missing.push_back(pattern);
     }
     return missing;
 }
@@ -264,6 +269,121 @@ std::string traceDifference(const std::vector<std::string>& expected, const std:
     for (std::size_t k = i + 1; k < std::min(actual.size(), i + 1 + context); ++k)
         d << "\n        " << (k + 1) << "   " << actual[k] << "   (actual)";
     return d.str();
+}
+
+// ---------------------------------------------------------------- VCD expectations
+
+// A Value Change Dump as written by `strun run --vcd`, parsed: every signal by
+// its full path (scopes joined with '.', e.g. `Main.valve.cmd`, `tasks.MainTask`)
+// with its changes in time order ($dumpvars values are changes at time 0).
+struct VcdChanges {
+    std::map<std::string, std::vector<std::pair<long long, std::string>>> bySignal;
+    std::string error;  // a structural problem of the file
+};
+
+VcdChanges parseVcd(const std::string& text) {
+    VcdChanges out;
+    std::istringstream in(text);
+    std::vector<std::string> scopes;
+    std::map<std::string, std::string> pathOfId;
+    bool definitions = true, timescale = false;
+    long long now = -1;
+    for (std::string word; in >> word;) {
+        if (definitions) {
+            if (word == "$timescale") {
+                std::string unit, end;
+                in >> unit >> end;
+                timescale = unit == "1ns" && end == "$end";
+            } else if (word == "$scope") {
+                std::string kind, name, end;
+                in >> kind >> name >> end;
+                scopes.push_back(name);
+            } else if (word == "$upscope") {
+                std::string end;
+                in >> end;
+                if (scopes.empty()) return out.error = "$upscope without $scope", out;
+                scopes.pop_back();
+            } else if (word == "$var") {
+                std::string kind, width, id, name, end;
+                in >> kind >> width >> id >> name >> end;
+                if (end != "$end") return out.error = "malformed $var " + name, out;
+                std::string path;
+                for (const auto& sc : scopes) path += sc + ".";
+                pathOfId[id] = path + name;
+                out.bySignal[path + name];
+            } else if (word == "$enddefinitions") {
+                definitions = false;
+                if (!scopes.empty()) return out.error = "unclosed $scope", out;
+                if (!timescale) return out.error = "no `$timescale 1ns $end`", out;
+            } else if (word[0] == '$' && word != "$end") {
+                for (std::string skip; in >> skip && skip != "$end";) {}
+            }
+            continue;
+        }
+        if (word == "$dumpvars" || word == "$end") continue;
+        if (word[0] == '#') {
+            long long t = std::atoll(word.c_str() + 1);
+            if (t <= now) return out.error = "time " + word + " does not increase", out;
+            now = t;
+            continue;
+        }
+        if (now < 0) return out.error = "a value before the first #time", out;
+        std::string value, id;
+        if (word[0] == 'b' || word[0] == 'r') {
+            value = word;
+            in >> id;
+        } else {
+            value = word.substr(0, 1);
+            id = word.substr(1);
+        }
+        auto it = pathOfId.find(id);
+        if (it == pathOfId.end()) return out.error = "undeclared identifier '" + id + "'", out;
+        out.bySignal[it->second].push_back({now, value});
+    }
+    if (definitions) out.error = "no $enddefinitions";
+    return out;
+}
+
+// Lines of a .vcd expectation:
+//   PATH TIME VALUE     the signal changes to VALUE at TIME ns (`1`, `b101`, `r2.5`)
+//   PATH changes N      the signal has exactly N changes (the initial value counts)
+//   PATH absent         no such signal
+// `#` starts a comment line.
+std::vector<std::string> vcdMismatches(const std::string& expectation, const VcdChanges& vcd) {
+    std::vector<std::string> out;
+    if (!vcd.error.empty()) return {"the VCD is malformed: " + vcd.error};
+    std::istringstream in(expectation);
+    for (std::string line; std::getline(in, line);) {
+        line = trim(line);
+        if (line.empty() || line[0] == '#') continue;
+        auto words = splitWords(line);
+        auto it = vcd.bySignal.find(words[0]);
+        if (words.size() == 2 && words[1] == "absent") {
+            if (it != vcd.bySignal.end()) out.push_back("signal " + words[0] + " should not be recorded");
+            continue;
+        }
+        if (it == vcd.bySignal.end()) {
+            out.push_back("no signal " + words[0]);
+            continue;
+        }
+        if (words.size() == 3 && words[1] == "changes") {
+            if (std::to_string(it->second.size()) != words[2])
+                out.push_back(words[0] + ": " + std::to_string(it->second.size()) + " changes, expected " + words[2]);
+            continue;
+        }
+        if (words.size() != 3) {
+            out.push_back("bad .vcd expectation line: " + line);
+            continue;
+        }
+        bool found = false;
+        for (const auto& [t, v] : it->second) found = found || (std::to_string(t) == words[1] && v == words[2]);
+        if (!found) {
+            std::string seen;
+            for (const auto& [t, v] : it->second) seen += " " + std::to_string(t) + ":" + v;
+            out.push_back(words[0] + ": no change to " + words[2] + " at " + words[1] + " (changes:" + seen + ")");
+        }
+    }
+    return out;
 }
 
 // ---------------------------------------------------------------- running strun
@@ -405,6 +525,18 @@ int checkOne(const std::string& strun, const std::string& programPath) {
     const auto expectedTrace = readFile(base + ".trace");
     const auto expectedStderr = readFile(base + ".stderr");
     const auto expectedStdout = readFile(base + ".stdout");
+    const auto expectedVcd = readFile(base + ".vcd");
+    // `{vcd}` in the args: a temporary file strun writes the VCD to, checked against <name>.vcd.
+    std::string vcdPath;
+    for (const auto& a : directives.args)
+        if (a.find("{vcd}") != std::string::npos && vcdPath.empty()) {
+            vcdPath = std::string(std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "/tmp") + "/conformance_vcd_" +
+                      std::to_string(getpid()) + ".vcd";
+        }
+    if (expectedVcd && vcdPath.empty()) {
+        std::cerr << "conformance_check: " << programPath << " has a .vcd expectation but no {vcd} in its args\n";
+        return 2;
+    }
     if (expectedJsonText && expectedErr) {
         std::cerr << "conformance_check: " << programPath << " has both a .json and a .err expectation\n";
         return 2;
@@ -431,7 +563,7 @@ int checkOne(const std::string& strun, const std::string& programPath) {
     std::vector<std::string> argv{strun};
     bool hasDump = false, hasTrace = false;
     for (const auto& a : directives.args) {
-        argv.push_back(expandTokens(a, programPath));
+        argv.push_back(expandTokens(a, programPath, vcdPath));
         hasDump = hasDump || a == "--dump";
         hasTrace = hasTrace || a == "--trace";
     }
@@ -474,6 +606,13 @@ int checkOne(const std::string& strun, const std::string& programPath) {
             traceDifference(expectedTraceLines(*expectedTrace), actualTraceLines(run.err));
         if (!difference.empty()) failures.push_back(difference);
     }
+    if (ranToEnd && expectedVcd) {
+        const auto vcdText = readFile(vcdPath);
+        if (!vcdText) failures.push_back("strun wrote no VCD file");
+        else
+            for (const auto& m : vcdMismatches(*expectedVcd, parseVcd(*vcdText))) failures.push_back("vcd: " + m);
+    }
+    if (!vcdPath.empty()) unlink(vcdPath.c_str());
     if (ranToEnd && expectedStderr)
         for (const auto& p : missingPatterns(*expectedStderr, run.err))
             failures.push_back("no stderr line contains the pattern \"" + p + "\"");
@@ -560,6 +699,8 @@ int selfTest() {
     expect(missingPatterns(":4:6: error:\n", err).size() == 1, "wrong column reported missing");
     expect(missingPatterns(":4:5: error: undeclared variable 'q'\n\n", err).empty(), "blank lines ignored");
     expect(missingPatterns(":9:1: error:", err).size() == 1, "warning is not an error");
+    expect(missingPatterns("!fatal\n", err).empty() && missingPatterns("!undeclared\n", err).size() == 1,
+           "a !pattern must not occur");
 
     {
         const std::string stderrText =
@@ -606,6 +747,17 @@ int selfTest() {
         expect(parseDirectives("(* strun-test\n dump: maybe\n*)", badDump).has_value(), "bad dump directive rejected");
         expect(expandTokens("{dir}/s.csv", "/a/b/t.st") == "/a/b/s.csv", "{dir} is the program's directory");
         expect(expandTokens("x={file}", "/a/b/t.st") == "x=/a/b/t.st", "{file} is the program's path");
+        const std::string vcd = "$version x $end\n$timescale 1ns $end\n$scope module tasks $end\n$var wire 1 ! T $end\n"
+                                "$upscope $end\n$scope module Main $end\n$var wire 16 \" n $end\n$upscope $end\n"
+                                "$enddefinitions $end\n#0\n$dumpvars\n0!\nb0 \"\n$end\n1!\n#5\nb11 \"\n0!\n";
+        const auto parsed = parseVcd(vcd);
+        expect(parsed.error.empty() && parsed.bySignal.at("Main.n").size() == 2 && parsed.bySignal.at("tasks.T").size() == 3,
+               "VCD parsed by signal path");
+        expect(vcdMismatches("Main.n 5 b11\ntasks.T changes 3\nMain.x absent\n", parsed).empty(), "VCD expectations met");
+        expect(vcdMismatches("Main.n 4 b11\n", parsed).size() == 1, "VCD change at the wrong time");
+        expect(vcdMismatches("Main.n changes 1\n", parsed).size() == 1, "VCD change count differs");
+        expect(!parseVcd("$timescale 1ns $end\n$enddefinitions $end\n#5\n#5\n").error.empty(), "VCD times must increase");
+        expect(!parseVcd("$timescale 1ns $end\n$enddefinitions $end\n#0\n1?\n").error.empty(), "VCD undeclared id");
         Directives badExit;
         expect(parseDirectives("(* strun-test\n exit: x\n*)", badExit).has_value(), "bad exit rejected");
     }

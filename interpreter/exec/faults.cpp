@@ -22,45 +22,45 @@ uint8_t* sink(Ctx& c) {
 }  // namespace
 
 void reportDivByZero(Ctx& c, const Site& site) {
-    c.m->handler->onFault(rt::DiagCode::DivByZero, pouOf(site), site.line, "division by zero; divisor 1 used");
+    c.m->handler->onFault(rt::DiagCode::DivByZero, pouOf(site), site.line, "division by zero; divisor 1 used", site.file, site.col);
 }
 
 void reportCallDepth(Ctx& c, const Site& site, const std::string& callee) {
     c.m->handler->onFault(rt::DiagCode::CallDepth, pouOf(site), site.line,
-                          fmt::format("call nesting deeper than {} (calling {})", kMaxCallDepth, callee));
+                          fmt::format("call nesting deeper than {} (calling {})", kMaxCallDepth, callee), site.file, site.col);
     c.aborting = true;
 }
 
 uint8_t* IndexPlace::outOfRange(Ctx& c, const Dim& d, int64_t value) {
     c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(site), site.line,
-                          fmt::format("subscript {} outside {}..{}", value, d.lo, d.lo + d.count - 1));
+                          fmt::format("subscript {} outside {}..{}", value, d.lo, d.lo + d.count - 1), site.file, site.col);
     return sink(c);
 }
 
 uint8_t* indexFault(Ctx& c, const Site& site, int64_t value, int64_t lo, int64_t count) {
     c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(site), site.line,
-                          fmt::format("subscript {} outside {}..{}", value, lo, lo + count - 1));
+                          fmt::format("subscript {} outside {}..{}", value, lo, lo + count - 1), site.file, site.col);
     return sink(c);
 }
 
 uint8_t* Index1Place::outOfRange(Ctx& c, int64_t value) {
     c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(site), site.line,
-                          fmt::format("subscript {} outside {}..{}", value, lo, lo + count - 1));
+                          fmt::format("subscript {} outside {}..{}", value, lo, lo + count - 1), site.file, site.col);
     return sink(c);
 }
 
 uint8_t* FlexIndexPlace::outOfRange(Ctx& c, int64_t value, int64_t lo, int64_t hi) {
-    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(site), site.line, fmt::format("subscript {} outside {}..{}", value, lo, hi));
+    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(site), site.line, fmt::format("subscript {} outside {}..{}", value, lo, hi), site.file, site.col);
     return sink(c);
 }
 
 uint8_t* RefSlotPlace::nullTarget(Ctx& c) {
-    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line, "reference is not bound");
+    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line, "reference is not bound", site.file, site.col);
     return sink(c);
 }
 
 uint8_t* DerefPlace::nullTarget(Ctx& c) {
-    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line, "dereference of a null pointer");
+    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line, "dereference of a null pointer", site.file, site.col);
     return sink(c);
 }
 
@@ -70,7 +70,7 @@ PouCode* CallPou::dispatch(Ctx& c, uint8_t* inst) {
     if (!code) {
         c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line,
                               inst ? fmt::format("method {} not implemented by the instance", callee->name)
-                                   : fmt::format("call of {} through an unbound interface or pointer", callee->name));
+                                   : fmt::format("call of {} through an unbound interface or pointer", callee->name), site.file, site.col);
     }
     return code;
 }

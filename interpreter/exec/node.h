@@ -43,6 +43,8 @@ struct Ctx {
 struct Site {
     const std::string* pou = nullptr;
     int line = 0;
+    int file = -1;  // source index, for the fault report's FILE:LINE:COL
+    int col = 0;
 };
 
 struct Expr {
@@ -63,6 +65,8 @@ enum class Flow : uint8_t { Next, Exit, Continue, Return, Jump, Abort };
 
 struct Stmt {
     int line = 0;
+    int file = -1;  // source index and column: where a WATCHDOG stopped it
+    int col = 0;
     virtual ~Stmt() = default;
     virtual Flow exec(Ctx&) = 0;
 };

@@ -69,4 +69,11 @@ bool TaskRunner::currentPosition(std::string& pou, int& line) const {
     return true;
 }
 
+bool TaskRunner::currentFileAndColumn(int& file, int& col) const {
+    if (!ctx_.stmt) return false;
+    file = ctx_.stmt->file;
+    col = ctx_.stmt->col;
+    return true;
+}
+
 }  // namespace strun::project

@@ -17,6 +17,7 @@ public:
     TaskRunner(sema::ProgramModel& model, const sema::ConfiguredTask& task);
     bool runActivation() override;
     bool currentPosition(std::string& pou, int& line) const override;
+    bool currentFileAndColumn(int& file, int& col) const override;
 
 private:
     void runInitCalls();

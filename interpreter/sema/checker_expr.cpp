@@ -42,7 +42,7 @@ TK naturalIntKind(const Checked& c) {
 
 }  // namespace
 
-exec::Site Checker::site(const ast::Loc& loc) { return exec::Site{currentPouName_, loc.line}; }
+exec::Site Checker::site(const ast::Loc& loc) { return exec::Site{currentPouName_, loc.line, loc.file, loc.col}; }
 
 Checked Checker::constInt(int64_t v, const Type* t, const ast::Loc& loc) {
     Checked c;

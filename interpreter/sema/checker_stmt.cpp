@@ -129,6 +129,8 @@ exec::Block* Checker::checkBlock(const ast::StmtList& list) {
         exec::Stmt* st = checkStmt(*s);
         if (st) {
             st->line = s->loc.line;
+            st->file = s->loc.file;
+            st->col = s->loc.col;
             block->stmts.push_back(st);
         }
     }

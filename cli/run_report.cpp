@@ -1,0 +1,58 @@
+#include "cli/run_report.h"
+
+#include <string>
+
+#include "stdlib/value_format.h"
+
+namespace strun::cli {
+
+namespace {
+
+constexpr size_t kSummaryDiagnostics = 20;  // more are counted, not listed
+
+// FILE:LINE:COL of an entry; the POU's name stands in for an unknown file.
+std::string location(const rt::DiagEntry& e, const std::vector<std::string>& files) {
+    std::string where;
+    if (e.file >= 0 && size_t(e.file) < files.size()) where = files[size_t(e.file)];
+    else if (!e.pou.empty()) where = e.pou;
+    else where = "strun";
+    return where + ":" + std::to_string(e.line > 0 ? e.line : 1) + ":" + std::to_string(e.col > 0 ? e.col : 1);
+}
+
+std::string microsText(const nlohmann::ordered_json& micros) {
+    double us = micros.is_number() ? micros.get<double>() : 0.0;
+    return stdlib::formatDuration(int64_t(us * 1000.0 + (us >= 0 ? 0.5 : -0.5)));
+}
+
+}  // namespace
+
+void printFaultReport(std::ostream& out, const rt::Scheduler& scheduler) {
+    for (const rt::DiagEntry& e : scheduler.stopFaults())
+        out << location(e, scheduler.sourceFiles()) << ": runtime error: " << rt::diagCodeName(e.code) << " in "
+            << (e.task.empty() ? std::string("-") : e.task) << ": " << e.message << "\n";
+}
+
+void printRunSummary(std::ostream& out, const rt::Scheduler& scheduler, rt::PlcState state) {
+    out << "strun: PLC " << rt::plcStateName(state) << " at " << stdlib::formatDuration(scheduler.endTime()) << "\n";
+    for (const auto& task : scheduler.tasksJson()) {
+        out << "  task " << task["name"].get<std::string>() << ": " << task["cycles"].get<uint64_t>() << " cycles, "
+            << task["overruns"].get<uint64_t>() << " overruns, max execution " << microsText(task["max_exec_us"]) << "\n";
+    }
+    const auto& entries = scheduler.diagnostics();
+    uint64_t total = entries.size() + scheduler.droppedDiagnostics();
+    if (total == 0) {
+        out << "  diagnostics: none\n";
+        return;
+    }
+    out << "  diagnostics: " << total << "\n";
+    for (size_t i = 0; i < entries.size() && i < kSummaryDiagnostics; ++i) {
+        const rt::DiagEntry& e = entries[i];
+        out << "    " << stdlib::formatDuration(e.time) << " " << rt::diagCodeName(e.code);
+        if (!e.task.empty()) out << " in " << e.task;
+        if (!e.pou.empty()) out << " at " << location(e, scheduler.sourceFiles());
+        out << ": " << e.message << "\n";
+    }
+    if (total > kSummaryDiagnostics) out << "    ... " << (total - std::min<uint64_t>(entries.size(), kSummaryDiagnostics)) << " more\n";
+}
+
+}  // namespace strun::cli

@@ -1,0 +1,17 @@
+// What `strun run` tells a person on stderr when the run ends: one line per
+// fault that sent the PLC to STOP/HALT (always), and unless --dump or
+// --quiet, a short summary: final state, PLC time, per task cycles /
+// overruns / maximum execution time, and the diagnostic buffer.
+#pragma once
+
+#include <ostream>
+
+#include "runtime/scheduler.h"
+
+namespace strun::cli {
+
+// `FILE:LINE:COL: runtime error: CODE in TASK: MESSAGE`, one per stopping fault.
+void printFaultReport(std::ostream& out, const rt::Scheduler& scheduler);
+void printRunSummary(std::ostream& out, const rt::Scheduler& scheduler, rt::PlcState state);
+
+}  // namespace strun::cli

@@ -1,0 +1,112 @@
+#include "interpreter/project/vcd_signals.h"
+
+#include <cctype>
+#include <map>
+
+#include "interpreter/project/variable_path.h"
+
+namespace strun::project {
+
+using sema::TK;
+
+bool matchesPattern(std::string_view pattern, std::string_view text) {
+    // Iterative glob with backtracking to the last '*': linear in practice.
+    size_t p = 0, t = 0, star = std::string_view::npos, mark = 0;
+    auto same = [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b)); };
+    while (t < text.size()) {
+        if (p < pattern.size() && pattern[p] == '*') {
+            star = p++;
+            mark = t;
+        } else if (p < pattern.size() && same(pattern[p], text[t])) {
+            ++p;
+            ++t;
+        } else if (star != std::string_view::npos) {
+            p = star + 1;
+            t = ++mark;
+        } else {
+            return false;
+        }
+    }
+    while (p < pattern.size() && pattern[p] == '*') ++p;
+    return p == pattern.size();
+}
+
+namespace {
+
+// How a type is drawn; false for what is not recorded (strings).
+bool encode(const sema::Type* t, rt::VcdSignal& s) {
+    TK k = t->kind;
+    s.size = t->size;
+    if (k == TK::Bool) {
+        s.kind = rt::VcdSignal::Kind::Bit;
+        return true;
+    }
+    if (k == TK::Real || k == TK::LReal) {
+        s.kind = k == TK::Real ? rt::VcdSignal::Kind::Real32 : rt::VcdSignal::Kind::Real64;
+        return true;
+    }
+    if (k == TK::String || k == TK::WString) return false;
+    s.kind = rt::VcdSignal::Kind::Vector;
+    if (sema::isTimeLike(k) || sema::isDateLike(k)) {
+        // TIME as its nanoseconds (dates too: ns since 1970).
+        s.width = 64;
+        s.isSigned = k == TK::Time || t->size == 8;
+        s.scale = sema::nanosPerUnit(k);
+        return true;
+    }
+    if (k == TK::Enum) {
+        s.width = int(t->size * 8);
+        s.isSigned = t->base && sema::isSignedInt(t->base->kind);
+        return true;
+    }
+    if (!(sema::isInteger(k) || sema::isBitString(k) || sema::isCharType(k))) return false;
+    s.width = int(t->size * 8);
+    s.isSigned = sema::isSignedInt(k);
+    return true;
+}
+
+// `levels[3]` would read as a bit select in a VCD reference: `levels(3)`.
+std::string leafName(std::string name) {
+    for (char& c : name) {
+        if (c == '[') c = '(';
+        else if (c == ']') c = ')';
+    }
+    return name;
+}
+
+}  // namespace
+
+std::vector<rt::VcdSignal> vcdSignals(const sema::ProgramModel& model, const std::vector<std::string>& patterns,
+                                      std::vector<std::string>& unmatched) {
+    std::map<const sema::ProgramInstance*, int> taskOf;
+    for (size_t i = 0; i < model.tasks.size(); ++i)
+        for (const auto& call : model.tasks[i].calls)
+            if (call.program && !taskOf.count(call.program)) taskOf[call.program] = int(i);
+    std::vector<bool> used(patterns.size(), false);
+    std::vector<rt::VcdSignal> signals;
+    forEachElementary(model, [&](const ElementaryVar& v) {
+        rt::VcdSignal s;
+        if (!encode(v.ref.type, s)) return;
+        if (!patterns.empty()) {
+            bool any = false;
+            for (size_t i = 0; i < patterns.size(); ++i)
+                if (matchesPattern(patterns[i], v.ref.path)) any = used[i] = true;
+            if (!any) return;
+        }
+        for (const std::string& scope : v.scopes) s.scopes.push_back(leafName(scope));
+        if (s.scopes.empty()) s.scopes.push_back("globals");
+        s.name = leafName(v.name);
+        s.addr = v.ref.addr;
+        s.bit = v.ref.bit;
+        if (v.ref.program) {
+            auto it = taskOf.find(v.ref.program);
+            s.task = it == taskOf.end() ? -2 : it->second;  // -2: no task runs it, sampled never
+        }
+        signals.push_back(std::move(s));
+    });
+    for (size_t i = 0; i < patterns.size(); ++i)
+        if (!used[i]) unmatched.push_back(patterns[i]);
+    return signals;
+}
+
+}  // namespace strun::project

@@ -1,0 +1,23 @@
+// The variables --vcd records, as the runtime's VcdSignals: every elementary
+// variable of every program instance and global (no --watch), or those whose
+// path matches a --watch pattern (`*` matches any run of characters,
+// case-insensitive: `Main.*`, `*.level`). Strings are not recorded
+// (decision 0081).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "interpreter/sema/program_model.h"
+#include "runtime/vcd_recorder.h"
+
+namespace strun::project {
+
+// `unmatched` gets the patterns that match no recordable variable.
+std::vector<rt::VcdSignal> vcdSignals(const sema::ProgramModel& model, const std::vector<std::string>& patterns,
+                                      std::vector<std::string>& unmatched);
+
+// `*`-glob match, case-insensitive.
+bool matchesPattern(std::string_view pattern, std::string_view text);
+
+}  // namespace strun::project

@@ -1,0 +1,198 @@
+#include "runtime/vcd_recorder.h"
+
+#include <cstring>
+#include <map>
+
+namespace strun::rt {
+
+namespace {
+
+// VCD identifier codes: printable ASCII '!'..'~', as a base-94 number.
+std::string idCode(size_t n) {
+    std::string id;
+    do {
+        id += char('!' + n % 94);
+        n /= 94;
+    } while (n);
+    return id;
+}
+
+// A scope tree, so signals of one scope are declared together whatever their order.
+struct Scope {
+    std::vector<std::pair<std::string, Scope>> children;  // declaration order
+    std::vector<std::string> vars;                        // "$var ... $end" lines
+    Scope& child(const std::string& name) {
+        for (auto& [n, s] : children)
+            if (n == name) return s;
+        children.emplace_back(name, Scope{});
+        return children.back().second;
+    }
+    void write(std::FILE* out) const {
+        for (const std::string& v : vars) std::fputs(v.c_str(), out);
+        for (const auto& [name, scope] : children) {
+            std::fprintf(out, "$scope module %s $end\n", name.c_str());
+            scope.write(out);
+            std::fputs("$upscope $end\n", out);
+        }
+    }
+};
+
+// VCD references may not contain blanks.
+std::string reference(std::string name) {
+    for (char& c : name)
+        if (c == ' ' || c == '\t') c = '_';
+    return name;
+}
+
+}  // namespace
+
+VcdRecorder::VcdRecorder(std::FILE* out, const std::vector<std::string>& taskNames, std::vector<VcdSignal> signals,
+                         const std::string& version)
+    : out_(out), signals_(std::move(signals)) {
+    Scope root;
+    Scope& tasks = root.child("tasks");
+    for (size_t i = 0; i < taskNames.size(); ++i) {
+        taskIds_.push_back(idCode(i));
+        tasks.vars.push_back("$var wire 1 " + taskIds_.back() + " " + reference(taskNames[i]) + " $end\n");
+    }
+    byTask_.assign(taskNames.size(), {});
+    for (size_t i = 0; i < signals_.size(); ++i) {
+        const VcdSignal& s = signals_[i];
+        signalIds_.push_back(idCode(taskNames.size() + i));
+        Scope* scope = &root;
+        for (const std::string& name : s.scopes) scope = &scope->child(reference(name));
+        std::string decl;
+        switch (s.kind) {
+            case VcdSignal::Kind::Bit: decl = "$var wire 1 "; break;
+            case VcdSignal::Kind::Vector: decl = "$var wire " + std::to_string(s.width) + " "; break;
+            case VcdSignal::Kind::Real32:
+            case VcdSignal::Kind::Real64: decl = "$var real 64 "; break;
+        }
+        scope->vars.push_back(decl + signalIds_.back() + " " + reference(s.name) + " $end\n");
+        for (size_t t = 0; t < byTask_.size(); ++t)
+            if (s.task == -1 || (s.task >= 0 && size_t(s.task) == t)) byTask_[t].push_back(i);
+    }
+    std::fprintf(out_, "$version %s $end\n$timescale 1ns $end\n", version.c_str());
+    root.write(out_);
+    std::fputs("$enddefinitions $end\n#0\n$dumpvars\n", out_);
+    stamped_ = 0;
+    taskState_.assign(taskNames.size(), 0);
+    for (const std::string& id : taskIds_) std::fprintf(out_, "0%s\n", id.c_str());
+    last_.resize(signals_.size());
+    for (size_t i = 0; i < signals_.size(); ++i) {
+        last_[i] = read(signals_[i]);
+        writeValue(signals_[i], last_[i], signalIds_[i]);
+    }
+    std::fputs(buffer_.c_str(), out_);
+    buffer_.clear();
+    std::fputs("$end\n", out_);
+}
+
+uint64_t VcdRecorder::read(const VcdSignal& s) const {
+    switch (s.kind) {
+        case VcdSignal::Kind::Bit: return s.bit >= 0 ? ((*s.addr >> s.bit) & 1) : (*s.addr != 0);
+        case VcdSignal::Kind::Real32: {
+            uint32_t bits;
+            std::memcpy(&bits, s.addr, 4);
+            return bits;
+        }
+        case VcdSignal::Kind::Real64: {
+            uint64_t bits;
+            std::memcpy(&bits, s.addr, 8);
+            return bits;
+        }
+        case VcdSignal::Kind::Vector: break;
+    }
+    uint64_t raw = 0;
+    std::memcpy(&raw, s.addr, s.size);  // little-endian host: the low bytes
+    if (s.isSigned && s.size < 8) {
+        unsigned shift = 64 - 8 * s.size;
+        raw = uint64_t(int64_t(raw << shift) >> shift);
+    }
+    return s.scale == 1 ? raw : uint64_t(int64_t(raw) * s.scale);
+}
+
+void VcdRecorder::writeValue(const VcdSignal& s, uint64_t value, const std::string& id) {
+    char text[80];
+    switch (s.kind) {
+        case VcdSignal::Kind::Bit:
+            buffer_ += value ? '1' : '0';
+            break;
+        case VcdSignal::Kind::Real32: {
+            float f;
+            uint32_t bits = uint32_t(value);
+            std::memcpy(&f, &bits, 4);
+            std::snprintf(text, sizeof text, "r%.9g ", double(f));
+            buffer_ += text;
+            break;
+        }
+        case VcdSignal::Kind::Real64: {
+            double d;
+            std::memcpy(&d, &value, 8);
+            std::snprintf(text, sizeof text, "r%.17g ", d);
+            buffer_ += text;
+            break;
+        }
+        case VcdSignal::Kind::Vector: {
+            // Leading zeros left out (VCD extends a value with 0 to the left).
+            if (s.width < 64) value &= (uint64_t(1) << s.width) - 1;
+            buffer_ += 'b';
+            int top = 63;
+            while (top > 0 && !((value >> top) & 1)) --top;
+            for (int b = top; b >= 0; --b) buffer_ += ((value >> b) & 1) ? '1' : '0';
+            buffer_ += ' ';
+            break;
+        }
+    }
+    buffer_ += id;
+    buffer_ += '\n';
+}
+
+void VcdRecorder::stampTime(PlcTime now) {
+    if (now <= stamped_) return;  // VCD times only increase; same-time changes share a stamp
+    stamped_ = now;
+    buffer_ += '#';
+    buffer_ += std::to_string(now);
+    buffer_ += '\n';
+}
+
+void VcdRecorder::taskRunning(size_t task, bool running, PlcTime now) {
+    if (task >= taskState_.size() || taskState_[task] == uint8_t(running)) return;
+    taskState_[task] = running;
+    stampTime(now);
+    buffer_ += running ? '1' : '0';
+    buffer_ += taskIds_[task];
+    buffer_ += '\n';
+    flushIfLarge();
+}
+
+void VcdRecorder::activationEnded(size_t task, PlcTime now) {
+    if (task < byTask_.size()) sample(byTask_[task], now);
+    flushIfLarge();
+}
+
+void VcdRecorder::flushIfLarge() {
+    if (buffer_.size() < (1u << 16)) return;
+    std::fwrite(buffer_.data(), 1, buffer_.size(), out_);
+    buffer_.clear();
+}
+
+void VcdRecorder::sample(const std::vector<size_t>& which, PlcTime now) {
+    for (size_t i : which) {
+        uint64_t value = read(signals_[i]);
+        if (value == last_[i]) continue;
+        last_[i] = value;
+        stampTime(now);
+        writeValue(signals_[i], value, signalIds_[i]);
+    }
+}
+
+void VcdRecorder::runEnded(PlcTime end) {
+    for (size_t t = 0; t < taskState_.size(); ++t) taskRunning(t, false, end);
+    stampTime(end);  // the waveform reaches the end of the run
+    std::fwrite(buffer_.data(), 1, buffer_.size(), out_);
+    buffer_.clear();
+    std::fflush(out_);
+}
+
+}  // namespace strun::rt
