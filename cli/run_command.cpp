@@ -145,7 +145,8 @@ int runCommand(const CommandLine& line) {
     for (const std::string& file : line.stimulusFiles)
         if (!readStimulusFile(file, entries, error)) return usage(error);
     rt::Stimulus stimulus;
-    if (!project::buildStimulus(model, entries, stimulus, error)) return usage(error);
+    if (!project::buildStimulus(model, entries, stimulus, error, run.profile ? *run.profile : rt::defaultProfile()))
+        return usage(error);
     if (!stimulus.empty()) run.stimulus = &stimulus;
 
     // --vcd: the recorder observes the run; without it the scheduler has no observer at all.

@@ -292,8 +292,8 @@ WSTRING_LITERAL : DQ_STRING;
 UNTERMINATED_STRING : '\'' ( ~['$\r\n] | '$' ~[\r\n] )* '$'? -> channel(ERRORS);
 UNTERMINATED_WSTRING : '"' ( ~["$\r\n] | '$' ~[\r\n] )* '$'? -> channel(ERRORS);
 
-// %IX0.0, %QW2, %MD10, %I*, %Q*
-DIRECT_ADDRESS : '%' (I | Q | M) (X | B | W | D | L)? ( [0-9]+ ('.' [0-9]+)* | '*' );
+// %IX0.0, %QW2, %MD10, %I*, %Q*; %S11, %SW30 (system bits and words of a target that has them)
+DIRECT_ADDRESS : '%' (I | Q | M | S) (X | B | W | D | L)? ( [0-9]+ ('.' [0-9]+)* | '*' );
 // x.%X3 (partial access of a bit string)
 PARTIAL_ACCESS : '%' (X | B | W | D | L) [0-9]+;
 

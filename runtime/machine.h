@@ -47,6 +47,13 @@ struct ProcessImage {
     std::vector<uint8_t> memory = std::vector<uint8_t>(kSize);   // %M
     std::vector<uint8_t> physicalInputs = std::vector<uint8_t>(kSize);   // what the "field" presents
     std::vector<uint8_t> physicalOutputs = std::vector<uint8_t>(kSize);  // what the field last received
+    // The system bits %S0..%S255 (bit n: byte n/8, bit n%8) and system words
+    // %SW0..%SW1023 (word n: bytes 2n..2n+1, little-endian) of a target that
+    // has them (runtime/system_area.h); unused elsewhere.
+    static constexpr size_t kSystemBits = 256;
+    static constexpr size_t kSystemWords = 1024;
+    std::vector<uint8_t> systemBits = std::vector<uint8_t>(kSystemBits / 8);
+    std::vector<uint8_t> systemWords = std::vector<uint8_t>(kSystemWords * 2);
     // Bytes of %I / %Q the project addresses at all. The scheduler copies
     // that many at every task start (inputs) and end (outputs), so the
     // checker should lower them to the highest byte any direct address
@@ -76,6 +83,10 @@ public:
     // Calendar date-time now, as nanoseconds since 1970-01-01-00:00:00 (UTC),
     // from --start on the virtual clock or the system clock on the real one.
     virtual int64_t calendarNanos() = 0;
+    // The running task's period (0: not a cyclic task) and a request to change
+    // it (M241 GetCurrentTaskCycle / SetCurrentTaskCycle). False: refused.
+    virtual PlcTime currentTaskInterval() { return 0; }
+    virtual bool setCurrentTaskInterval(PlcTime) { return false; }
 };
 
 struct Machine {

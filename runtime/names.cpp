@@ -28,6 +28,7 @@ const char* taskKindName(TaskKind kind) {
     case TaskKind::ProgramError: return "program_error";
     case TaskKind::ExecTimeout: return "exec_timeout";
     case TaskKind::TimeEvent: return "time_event";
+    case TaskKind::External: return "external";
     }
     return "unknown";
 }

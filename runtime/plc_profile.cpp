@@ -1,10 +1,13 @@
 #include "runtime/plc_profile.h"
 
 #include <cctype>
+#include <string>
 
 namespace strun::rt {
 
 namespace {
+
+constexpr PlcTime kDay = 24 * 3600 * kSecond;
 
 constexpr KindLimits kOne0to31{1, 0, 31, true};
 constexpr KindLimits kMany0to31{100, 0, 31, true};
@@ -19,33 +22,38 @@ constexpr PlcProfile makeGeneric() {
     p.kinds[kindIndex(TaskKind::Event)] = kMany0to31;
     p.kinds[kindIndex(TaskKind::Status)] = kMany0to31;
     p.kinds[kindIndex(TaskKind::TimeEvent)] = kMany0to31;
+    p.kinds[kindIndex(TaskKind::External)] = kMany0to31;
     p.kinds[kindIndex(TaskKind::Startup)] = kOne0to31;
     p.kinds[kindIndex(TaskKind::ProgramError)] = kOne0to31;
     p.kinds[kindIndex(TaskKind::ExecTimeout)] = kOne0to31;
     p.minInterval = 1 * kMicrosecond;
-    p.maxInterval = 24 * 3600 * kSecond;
+    p.maxInterval = kDay;
     p.minWatchdog = 1 * kMicrosecond;
-    p.maxWatchdog = 24 * 3600 * kSecond;
+    p.maxWatchdog = kDay;
     return p;
 }
 
 // Seed 000: 25 tasks (9 cyclic, 1 continuous, 15 event-triggered: 1 startup,
-// 6 + 6 time events, 1 program error, 1 execution timeout); cyclic priorities
-// 5..25, event-triggered 5..29; periods 1 ms..60 s; watchdogs 10 ms..60 s,
-// a cyclic task's never below its period; no watchdog on the timeout task.
+// 6 once + 6 repeat time events, 1 program error, 1 execution timeout); 99
+// programs per task; cyclic priorities 5..25 (11 when omitted), event-triggered
+// 5..29; the continuous task 30 with a 200 ms watchdog, below every cyclic
+// one; periods 1 ms..60 s; watchdogs 10 ms..60 s, a cyclic task's never below
+// its period; no watchdog on the timeout task; the startup priority is fixed.
 constexpr PlcProfile makeBaosky() {
     PlcProfile p;
-    p.id = "baosky-t3";
+    p.id = "baosky";
     p.description = "Baosky T3/T4";
     p.maxTasks = 25;
-    p.kinds[kindIndex(TaskKind::Cyclic)] = {9, 5, 25, true};
-    p.kinds[kindIndex(TaskKind::Freewheeling)] = {1, 0, 31, true};
-    p.kinds[kindIndex(TaskKind::Event)] = {0, 0, 31, true};
-    p.kinds[kindIndex(TaskKind::Status)] = {0, 0, 31, true};
-    p.kinds[kindIndex(TaskKind::TimeEvent)] = {12, 5, 29, true};
-    p.kinds[kindIndex(TaskKind::Startup)] = {1, 0, 31, true};
-    p.kinds[kindIndex(TaskKind::ProgramError)] = {1, 5, 29, true};
-    p.kinds[kindIndex(TaskKind::ExecTimeout)] = {1, 5, 29, false};
+    p.kinds[kindIndex(TaskKind::Cyclic)] = {9, 5, 25, true, 11, 0};
+    p.kinds[kindIndex(TaskKind::Freewheeling)] = {1, 0, 31, true, 30, 200 * kMillisecond};
+    p.kinds[kindIndex(TaskKind::TimeEvent)] = {12, 5, 29, true, 29, 0};
+    p.kinds[kindIndex(TaskKind::Startup)] = {1, 0, 31, true, 0, 0};
+    p.kinds[kindIndex(TaskKind::ProgramError)] = {1, 5, 29, true, 29, 0};
+    p.kinds[kindIndex(TaskKind::ExecTimeout)] = {1, 5, 29, false, 29, 0};
+    p.maxOnceTimeEvents = 6;
+    p.maxRepeatTimeEvents = 6;
+    p.maxProgramsPerTask = 99;
+    p.startupPriorityFixed = true;
     p.minInterval = 1 * kMillisecond;
     p.maxInterval = 60'000 * kMillisecond;
     p.minWatchdog = 10 * kMillisecond;
@@ -55,7 +63,109 @@ constexpr PlcProfile makeBaosky() {
     return p;
 }
 
-constexpr PlcProfile kProfiles[] = {makeGeneric(), makeBaosky()};
+// Seed 001: priorities 0..31; cyclic, event (rising edge), freewheeling,
+// status (while TRUE) and external-event tasks; nothing else.
+constexpr PlcProfile makeAx3() {
+    PlcProfile p = makeGeneric();
+    p.id = "ax3";
+    p.description = "AX-3";
+    p.kinds[kindIndex(TaskKind::TimeEvent)] = {};
+    p.kinds[kindIndex(TaskKind::Startup)] = {};
+    p.kinds[kindIndex(TaskKind::ProgramError)] = {};
+    p.kinds[kindIndex(TaskKind::ExecTimeout)] = {};
+    return p;
+}
+
+// Seed 002: the six tasks of a Modicon M340/Premium with their fixed
+// priorities (FAST above MAST above AUX0..AUX3), periods and watchdogs.
+constexpr FixedTask kM340Tasks[] = {
+    {"MAST", 1, 1 * kMillisecond, 255 * kMillisecond, kMillisecond, 0, true, false, 10 * kMillisecond,
+     1500 * kMillisecond, 250 * kMillisecond, 1},
+    {"FAST", 0, 1 * kMillisecond, 255 * kMillisecond, kMillisecond, 5 * kMillisecond, false, false,
+     10 * kMillisecond, 500 * kMillisecond, 100 * kMillisecond, 1},
+    {"AUX0", 2, 10 * kMillisecond, 2550 * kMillisecond, 10 * kMillisecond, 100 * kMillisecond, false, true,
+     100 * kMillisecond, 5000 * kMillisecond, 2000 * kMillisecond, 10},
+    {"AUX1", 3, 10 * kMillisecond, 2550 * kMillisecond, 10 * kMillisecond, 200 * kMillisecond, false, true,
+     100 * kMillisecond, 5000 * kMillisecond, 2000 * kMillisecond, 10},
+    {"AUX2", 4, 10 * kMillisecond, 2550 * kMillisecond, 10 * kMillisecond, 300 * kMillisecond, false, true,
+     100 * kMillisecond, 5000 * kMillisecond, 2000 * kMillisecond, 10},
+    {"AUX3", 5, 10 * kMillisecond, 2550 * kMillisecond, 10 * kMillisecond, 400 * kMillisecond, false, true,
+     100 * kMillisecond, 5000 * kMillisecond, 2000 * kMillisecond, 10},
+};
+
+constexpr PlcProfile makeM340() {
+    PlcProfile p;
+    p.id = "m340";
+    p.description = "Modicon M340";
+    p.maxTasks = 6;
+    p.kinds[kindIndex(TaskKind::Cyclic)] = {6, 0, 5, true};
+    p.kinds[kindIndex(TaskKind::Freewheeling)] = {1, 0, 5, true};
+    p.fixedTasks = kM340Tasks;
+    p.minInterval = 1 * kMillisecond;
+    p.maxInterval = 2550 * kMillisecond;
+    p.minWatchdog = 10 * kMillisecond;
+    p.maxWatchdog = 5000 * kMillisecond;
+    p.watchdogReaction = WatchdogReaction::Halt;
+    p.firstCycle = FirstCyclePolicy::MasterOnly;
+    p.systemVariables = SystemVariables::Modicon;
+    return p;
+}
+
+// Seed 003: CODESYS-based; cyclic (>= 4 ms, a multiple of 4 ms; a too short
+// period restarts the task right after its outputs), freewheeling (a short
+// system-processing gap between scans), event (rising edge) and external
+// event tasks on the fast inputs FI0/FI1 (1.5 ms minimum between triggers).
+constexpr InputAlias kM241Inputs[] = {{"FI0", 0, 0}, {"FI1", 0, 1}};
+
+constexpr PlcProfile makeM241() {
+    PlcProfile p = makeGeneric();
+    p.id = "m241";
+    p.description = "Modicon M241";
+    p.kinds[kindIndex(TaskKind::Status)] = {};
+    p.kinds[kindIndex(TaskKind::TimeEvent)] = {};
+    p.kinds[kindIndex(TaskKind::Startup)] = {};
+    p.kinds[kindIndex(TaskKind::ProgramError)] = {};
+    p.kinds[kindIndex(TaskKind::ExecTimeout)] = {};
+    p.minInterval = 4 * kMillisecond;
+    p.intervalStep = 4 * kMillisecond;
+    p.overrun = OverrunPolicy::RestartAtEnd;
+    p.freewheelingGap = 1 * kMillisecond;
+    p.externalMinSpacing = 1500 * kMicrosecond;
+    p.inputAliases = kM241Inputs;
+    p.taskCycleFunctions = true;
+    return p;
+}
+
+// Seed 004: 8 time-driven (10 ms units), 8 external-interrupt (rising edge,
+// 1 ms detection) and 8 internal-interrupt tasks (rising edge or ON state of a
+// BOOL, seen when the scan program ends); priorities 0..7; programs without a
+// task form the scan program, below every task.
+constexpr GroupLimit kXgiGroups[] = {{kindBit(TaskKind::Event) | kindBit(TaskKind::Status), 8, "internal interrupt"}};
+
+constexpr PlcProfile makeXgi() {
+    PlcProfile p;
+    p.id = "xgi";
+    p.description = "LS XGI";
+    p.maxTasks = 24;
+    p.kinds[kindIndex(TaskKind::Cyclic)] = {8, 0, 7, true, 7, 0};
+    p.kinds[kindIndex(TaskKind::External)] = {8, 0, 7, true, 7, 0};
+    p.kinds[kindIndex(TaskKind::Event)] = {8, 0, 7, true, 7, 0};
+    p.kinds[kindIndex(TaskKind::Status)] = {8, 0, 7, true, 7, 0};
+    p.groupLimits = kXgiGroups;
+    p.minInterval = 10 * kMillisecond;
+    p.maxInterval = 4'294'967'290 * kMillisecond;
+    p.intervalStep = 10 * kMillisecond;
+    p.minWatchdog = 1 * kMillisecond;
+    p.maxWatchdog = kDay;
+    p.unassignedTaskName = "Scan";
+    p.unassignedTaskPriority = 8;
+    p.triggerSampling = TriggerSampling::EndOfScan;
+    p.externalEdges = kEdgeRising;
+    p.externalDetectionDelay = 1 * kMillisecond;
+    return p;
+}
+
+constexpr PlcProfile kProfiles[] = {makeGeneric(), makeBaosky(), makeAx3(), makeM340(), makeM241(), makeXgi()};
 
 bool equalsIgnoreCase(std::string_view a, std::string_view b) {
     if (a.size() != b.size()) return false;
@@ -67,6 +177,17 @@ bool equalsIgnoreCase(std::string_view a, std::string_view b) {
 
 }  // namespace
 
+const FixedTask* PlcProfile::fixedTask(std::string_view name) const {
+    int index = fixedTaskIndex(name);
+    return index < 0 ? nullptr : &fixedTasks[size_t(index)];
+}
+
+int PlcProfile::fixedTaskIndex(std::string_view name) const {
+    for (size_t i = 0; i < fixedTasks.size(); ++i)
+        if (equalsIgnoreCase(fixedTasks[i].name, name)) return int(i);
+    return -1;
+}
+
 const PlcProfile& defaultProfile() { return kProfiles[0]; }
 
 std::span<const PlcProfile> allProfiles() { return kProfiles; }
@@ -75,6 +196,33 @@ const PlcProfile* findProfile(std::string_view id) {
     for (const PlcProfile& profile : kProfiles)
         if (equalsIgnoreCase(profile.id, id)) return &profile;
     return nullptr;
+}
+
+std::string profileIds() {
+    std::string ids;
+    for (const PlcProfile& profile : kProfiles) {
+        if (!ids.empty()) ids += ", ";
+        ids += profile.id;
+    }
+    return ids;
+}
+
+const PlcProfile* profileWithSystemVariables() {
+    for (const PlcProfile& profile : kProfiles)
+        if (profile.systemVariables != SystemVariables::None) return &profile;
+    return nullptr;
+}
+
+const PlcProfile* profileWithTaskCycleFunctions() {
+    for (const PlcProfile& profile : kProfiles)
+        if (profile.taskCycleFunctions) return &profile;
+    return nullptr;
+}
+
+std::optional<InputAlias> findInputAlias(const PlcProfile& profile, std::string_view name) {
+    for (const InputAlias& alias : profile.inputAliases)
+        if (equalsIgnoreCase(alias.name, name)) return alias;
+    return std::nullopt;
 }
 
 }  // namespace strun::rt

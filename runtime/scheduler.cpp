@@ -11,6 +11,7 @@
 #include "runtime/duration_text.h"
 #include "runtime/real_clock.h"
 #include "runtime/realtime.h"
+#include "runtime/system_area.h"
 #include "runtime/time_event.h"
 
 namespace strun::rt {
@@ -43,6 +44,7 @@ int kindRank(TaskKind kind) {
     case TaskKind::ExecTimeout: return 0;
     case TaskKind::Event:
     case TaskKind::Status:
+    case TaskKind::External:
     case TaskKind::TimeEvent: return 1;
     case TaskKind::Cyclic: return 2;
     case TaskKind::Freewheeling: return 3;
@@ -83,6 +85,9 @@ Scheduler::Scheduler(Machine& machine, std::vector<TaskSpec> tasks, std::vector<
         run.spec = std::move(tasks[i]);
         run.body = bodies[i];
         run.isFaultTask = run.spec.kind == TaskKind::ProgramError || run.spec.kind == TaskKind::ExecTimeout;
+        run.period = run.spec.interval;
+        if (run.spec.systemSlot == 0 && !master_) master_ = &run;
+        if (run.spec.isScanProgram && profile_.triggerSampling == TriggerSampling::EndOfScan) scanSampling_ = true;
         if (run.spec.kind == TaskKind::Startup && !startup_) startup_ = &run;
         if (run.spec.kind == TaskKind::ProgramError && !errorTask_) errorTask_ = &run;
         if (run.spec.kind == TaskKind::ExecTimeout && !timeoutTask_) timeoutTask_ = &run;
@@ -109,6 +114,8 @@ Scheduler::Scheduler(Machine& machine, std::vector<TaskSpec> tasks, std::vector<
         if (!cyclesTask_) throw std::invalid_argument("--task: no task named '" + name + "'");
     }
     stack_.reserve(tasks_.size() + 1);
+    if (profile_.systemVariables == SystemVariables::Modicon)
+        system_ = std::make_unique<SystemArea>(machine_.image, profile_);
 }
 
 Scheduler::~Scheduler() = default;
@@ -158,12 +165,26 @@ PlcState Scheduler::run() {
     for (TaskRun& task : tasks_) {
         // Event tasks react to rising edges after RUN: a BOOL already TRUE at RUN is no edge.
         if (task.spec.kind == TaskKind::Event) task.lastTrigger = task.spec.trigger.byte && task.spec.trigger.read();
+        if (task.spec.kind == TaskKind::External)
+            task.lastTrigger = (machine_.image.physicalInputs[task.spec.inputByte] >> task.spec.inputBit) & 1;
         // Time events follow the calendar from RUN on; one due during the startup task waits for its end.
         if (task.spec.kind == TaskKind::TimeEvent) {
             task.nextOccurrence = nextTimeEventOccurrence(task.spec.atCalendarNanos, task.spec.repeat, calendarBase_);
             task.nextRelease = calendarToPlc(task.nextOccurrence);
         }
     }
+    if (system_) {
+        std::array<PlcTime, SystemArea::kSlots> periods{};
+        for (const TaskRun& task : tasks_)
+            if (task.spec.systemSlot >= 0 && task.spec.systemSlot < SystemArea::kSlots)
+                periods[size_t(task.spec.systemSlot)] = task.spec.interval;
+        system_->start(periods, master_ ? master_->spec.watchdog : 0);
+    }
+    masterOnlyPhase_ = profile_.firstCycle == FirstCyclePolicy::MasterOnly && master_;
+    // The stimulus tells the scheduler about input changes only when an EXTERNAL task listens.
+    bool hasExternal = std::any_of(tasks_.begin(), tasks_.end(), [](const TaskRun& t) { return t.spec.kind == TaskKind::External; });
+    if (options_.stimulus && hasExternal)
+        options_.stimulus->setInputListener([this](const StimulusWrite&, PlcTime at) { physicalInputsChanged(at); });
     recomputeEarliestRelease();
     if (startup_) release(*startup_, 0, false);
     else startRegularTasks();
@@ -202,7 +223,7 @@ void Scheduler::mainLoop() {
 // Nothing is ready: wait for the next moment anything can happen.
 void Scheduler::idle() {
     PlcTime next = std::min(earliestRelease_, forEnd_);
-    if (hasTriggers_) next = std::min(next, nextSample_);
+    if (sampleOnTicks()) next = std::min(next, nextSample_);
     if (options_.virtualClock && earliestRelease_ == kNever && !options_.duration) {
         // No task runs and none is due at any time: only task code could raise
         // an event or status trigger, so nothing can ever run again. End here
@@ -236,14 +257,37 @@ void Scheduler::refreshNow() {
 
 // STOP -> RUN is over (no startup task, or it has ended): the other tasks
 // begin, cyclic grids and the first samples counting from this moment.
+// Under the M340 first-cycle policy only the master task begins here; the
+// others begin when its first cycle ends (onMasterEnd).
 void Scheduler::startRegularTasks() {
     regularStarted_ = true;
     PlcTime now = machine_.now;
-    for (TaskRun& task : tasks_) {
+    for (TaskRun& task : tasks_)
+        if (!masterOnlyPhase_ || &task == master_) startTask(task, now);
+    if (sampleOnTicks()) nextSample_ = (now / profile_.schedulerTick + 1) * profile_.schedulerTick;
+    recomputeEarliestRelease();
+}
+
+// The end of a MAST cycle: the activation bits %S30..%S35 are tested; after
+// the first one, the other tasks begin.
+void Scheduler::onMasterEnd() {
+    if (system_)
+        for (TaskRun& task : tasks_)
+            if (task.spec.systemSlot >= 0) task.inhibited = !system_->taskActive(task.spec.systemSlot);
+    if (!masterOnlyPhase_) return;
+    masterOnlyPhase_ = false;
+    PlcTime now = machine_.now;
+    for (TaskRun& task : tasks_)
+        if (&task != master_) startTask(task, now);
+    if (sampleOnTicks()) nextSample_ = (now / profile_.schedulerTick + 1) * profile_.schedulerTick;
+    recomputeEarliestRelease();
+}
+
+void Scheduler::startTask(TaskRun& task, PlcTime now) {
         switch (task.spec.kind) {
         case TaskKind::Cyclic:
             release(task, now, true);
-            task.nextRelease = task.spec.interval > 0 ? now + task.spec.interval : kNever;
+            task.nextRelease = task.period > 0 ? now + task.period : kNever;
             break;
         case TaskKind::Freewheeling: release(task, now, false); break;
         case TaskKind::Event: {
@@ -259,13 +303,11 @@ void Scheduler::startRegularTasks() {
             if (task.spec.trigger.byte && task.spec.trigger.read()) release(task, now, false);
             break;
         case TaskKind::TimeEvent:  // scheduled at RUN (run()): they follow the calendar
+        case TaskKind::External:   // released by physicalInputsChanged()
         case TaskKind::Startup:
         case TaskKind::ProgramError:
         case TaskKind::ExecTimeout: break;
         }
-    }
-    if (hasTriggers_) nextSample_ = (now / profile_.schedulerTick + 1) * profile_.schedulerTick;
-    recomputeEarliestRelease();
 }
 
 PlcTime Scheduler::calendarToPlc(int64_t calendar) const {
@@ -289,7 +331,7 @@ void Scheduler::processDue() {
         }
         recomputeEarliestRelease();
     }
-    if (hasTriggers_ && nextSample_ <= now) {
+    if (sampleOnTicks() && nextSample_ <= now) {
         // Missed ticks are not caught up: sampling twice at one moment sees the same values.
         nextSample_ = (now / profile_.schedulerTick + 1) * profile_.schedulerTick;
         sampleTriggers();
@@ -298,7 +340,7 @@ void Scheduler::processDue() {
 
 void Scheduler::scheduleNext(TaskRun& task) {
     if (task.spec.kind == TaskKind::Cyclic) {
-        task.nextRelease += task.spec.interval;  // the grid, whatever happened to this activation
+        task.nextRelease += task.period;  // the grid, whatever happened to this activation
     } else if (task.spec.kind == TaskKind::TimeEvent) {
         task.nextOccurrence = nextTimeEventOccurrence(task.spec.atCalendarNanos, task.spec.repeat, task.nextOccurrence + 1);
         task.nextRelease = calendarToPlc(task.nextOccurrence);
@@ -320,11 +362,20 @@ void Scheduler::recomputeEarliestRelease() {
 bool Scheduler::release(TaskRun& task, PlcTime nominal, bool reportOverrun) {
     if (task.phase != Phase::Idle) {
         if (reportOverrun) {
+            // M241: a cyclic task whose period is too short starts again right after its outputs.
+            bool restart = profile_.overrun == OverrunPolicy::RestartAtEnd && task.spec.kind == TaskKind::Cyclic &&
+                           task.phase == Phase::Active;
             ++task.overruns;
+            if (system_) system_->setOverrun(task.spec.systemSlot);
             trace(&task, "overrun");
             record(DiagCode::Overrun, &task, "", 0,
                    "task '" + task.spec.name + "' released at " + formatDuration(nominal) + " while its previous activation is still " +
-                       (task.phase == Phase::Ready ? "waiting" : "running") + "; the activation is dropped");
+                       (task.phase == Phase::Ready ? "waiting" : "running") +
+                       (restart ? "; it restarts right after writing its outputs" : "; the activation is dropped"));
+            if (restart && !task.restartPending) {
+                task.restartPending = true;
+                task.restartNominal = nominal;
+            }
         }
         return false;
     }
@@ -394,16 +445,19 @@ void Scheduler::runActivation(TaskRun& task) {
     ++task.started;
     ++activations_;
     stack_.push_back(&task);
-    trace(&task, "start");
+    trace(&task, task.inhibited ? "inhibited" : "start");
     observeRunning(task, true);
+    int slot = task.spec.systemSlot;
+    if (system_) system_->enter(slot);
 
     // --set variable writes due by now, then the input phase.
     if (options_.stimulus) options_.stimulus->applyVariablesDue(start, options_.trace);
     ProcessImage& image = machine_.image;
-    std::memcpy(image.inputs.data(), image.physicalInputs.data(), std::min(image.inputExtent, ProcessImage::kSize));
+    if (!system_ || !system_->inputsInhibited(slot))
+        std::memcpy(image.inputs.data(), image.physicalInputs.data(), std::min(image.inputExtent, ProcessImage::kSize));
     armNextAttention();
 
-    bool completed = task.body ? task.body->runActivation() : true;
+    bool completed = task.inhibited || !task.body ? true : task.body->runActivation();
 
     // An activation costs at least one statement, even an empty one, so a
     // freewheeling task can never spin at a standstill on the virtual clock.
@@ -416,6 +470,7 @@ void Scheduler::runActivation(TaskRun& task) {
     stack_.pop_back();
     task.phase = Phase::Idle;
     task.watchdogAt = kNever;
+    if (system_) system_->leave(task.spec.systemSlot);
     finishActivation(task, completed);
 }
 
@@ -425,21 +480,96 @@ void Scheduler::finishActivation(TaskRun& task, bool completed) {
         task.abortRequested = false;
         if (!ending_) trace(&task, "abort");  // after a STOP the "stop" line says it all
     } else if (completed) {
-        PlcTime exec = now - task.startedAt;
-        ++task.cycles;
-        task.lastExec = exec;
-        task.minExec = std::min(task.minExec, exec);
-        task.maxExec = std::max(task.maxExec, exec);
-        task.sumExec += exec;
+        int slot = task.spec.systemSlot;
         ProcessImage& image = machine_.image;
-        std::memcpy(image.physicalOutputs.data(), image.outputs.data(), std::min(image.outputExtent, ProcessImage::kSize));
-        trace(&task, "end");
-        if (&task == cyclesTask_ && task.cycles >= *options_.cycles) ending_ = true;
+        // An inhibited M340 task still writes its outputs (seed 002).
+        if (!system_ || !system_->outputsInhibited(slot))
+            std::memcpy(image.physicalOutputs.data(), image.outputs.data(), std::min(image.outputExtent, ProcessImage::kSize));
+        if (!task.inhibited) {
+            PlcTime exec = now - task.startedAt;
+            ++task.cycles;
+            task.lastExec = exec;
+            task.minExec = std::min(task.minExec, exec);
+            task.maxExec = std::max(task.maxExec, exec);
+            task.sumExec += exec;
+            if (system_) system_->recordExecution(slot, exec);
+            trace(&task, "end");
+            if (&task == cyclesTask_ && task.cycles >= *options_.cycles) ending_ = true;
+        }
     }
     if (ending_) return;
     if (&task == startup_ && !regularStarted_) startRegularTasks();
-    if (task.spec.kind == TaskKind::Freewheeling) release(task, now, false);
-    if (hasTriggers_) sampleTriggers();
+    if (&task == master_) onMasterEnd();
+    if (system_)
+        for (TaskRun& other : tasks_)
+            if (other.spec.kind == TaskKind::Cyclic) setPeriod(other, system_->requestedPeriod(other.spec.systemSlot, other.period));
+    if (task.restartPending) {
+        task.restartPending = false;
+        release(task, task.restartNominal, false);
+    }
+    if (task.spec.kind == TaskKind::Freewheeling) {
+        if (profile_.freewheelingGap > 0) {
+            task.nextRelease = now + profile_.freewheelingGap;  // system processing before the next scan
+            recomputeEarliestRelease();
+        } else {
+            release(task, now, false);
+        }
+    }
+    if (hasTriggers_ && (!scanSampling_ || task.spec.isScanProgram)) sampleTriggers();
+}
+
+// ---------------------------------------------------------------- periods and external inputs
+
+PlcTime Scheduler::currentTaskInterval() {
+    if (stack_.empty() || stack_.back()->spec.kind != TaskKind::Cyclic) return 0;
+    return stack_.back()->period;
+}
+
+bool Scheduler::setCurrentTaskInterval(PlcTime period) {
+    if (stack_.empty()) return false;
+    TaskRun& task = *stack_.back();
+    if (task.spec.kind != TaskKind::Cyclic || period < profile_.minInterval || period > profile_.maxInterval ||
+        period % profile_.intervalStep != 0)
+        return false;
+    setPeriod(task, period);
+    return true;
+}
+
+// The grid restarts from the current (or last) activation's release.
+void Scheduler::setPeriod(TaskRun& task, PlcTime period) {
+    if (period == task.period || period <= 0) return;
+    task.period = period;
+    if (task.nextRelease != kNever) task.nextRelease = task.releasedAt + period;
+    recomputeEarliestRelease();
+    if (!stack_.empty()) armNextAttention();
+}
+
+void Scheduler::physicalInputsChanged(PlcTime now) {
+    bool planned = false;
+    for (TaskRun& task : tasks_) {
+        if (task.spec.kind != TaskKind::External) continue;
+        bool value = (machine_.image.physicalInputs[task.spec.inputByte] >> task.spec.inputBit) & 1;
+        if (value == task.lastTrigger) continue;
+        task.lastTrigger = value;
+        if (!(task.spec.edges & (value ? kEdgeRising : kEdgeFalling))) continue;
+        if (task.nextRelease != kNever) {
+            ++task.overruns;
+            trace(&task, "overrun");
+            record(DiagCode::Overrun, &task, "", 0,
+                   "external task '" + task.spec.name + "' triggered at " + formatDuration(now) +
+                       " while its previous trigger still waits for its release; the trigger is dropped");
+            continue;
+        }
+        PlcTime at = now + profile_.externalDetectionDelay;
+        if (task.hasExternalRelease) at = std::max(at, task.lastExternalRelease + profile_.externalMinSpacing);
+        task.nextRelease = at;
+        task.lastExternalRelease = at;
+        task.hasExternalRelease = true;
+        planned = true;
+    }
+    if (!planned) return;
+    recomputeEarliestRelease();
+    if (!stack_.empty()) armNextAttention();
 }
 
 bool Scheduler::onAttention() {
@@ -473,6 +603,7 @@ bool Scheduler::onAttention() {
         if (!preempted) {
             trace(&current, "preempt");
             observeRunning(current, false);
+            if (system_) system_->leave(current.spec.systemSlot);
         }
         preempted = true;
         runActivation(*next);
@@ -480,6 +611,7 @@ bool Scheduler::onAttention() {
     if (preempted) {
         trace(&current, "resume");
         observeRunning(current, true);
+        if (system_) system_->enter(current.spec.systemSlot);
     }
     armNextAttention();
     return false;
@@ -498,6 +630,7 @@ void Scheduler::tripWatchdog(TaskRun& task) {
     task.abortRequested = true;
     ++task.watchdogTrips;
     trace(&task, "watchdog");
+    if (system_) system_->setWatchdogOverflow();
     bool timeoutTaskTripped = &task == timeoutTask_;
     std::string pou;
     int line = 0, file = -1, col = 0;
@@ -565,7 +698,7 @@ void Scheduler::record(DiagCode code, const TaskRun* task, std::string_view pou,
 // end of --for, or watchdog expiry of an active activation.
 void Scheduler::armNextAttention() {
     PlcTime at = std::min(earliestRelease_, forEnd_);
-    if (hasTriggers_) at = std::min(at, nextSample_);
+    if (sampleOnTicks()) at = std::min(at, nextSample_);
     for (const TaskRun* task : stack_) at = std::min(at, task->watchdogAt);
     if (options_.virtualClock) {
         machine_.deadline.store(at);

@@ -32,6 +32,7 @@
 namespace strun::rt {
 
 class AttentionTimer;
+class SystemArea;
 
 struct RunOptions {
     bool virtualClock = true;
@@ -93,6 +94,15 @@ public:
     void onFault(DiagCode code, std::string_view pou, int line, std::string message, int file = -1, int col = 0) override;
     PlcTime currentTime() override;
     int64_t calendarNanos() override;
+    PlcTime currentTaskInterval() override;
+    bool setCurrentTaskInterval(PlcTime period) override;
+
+    // Called (through the stimulus's input listener) after a write to
+    // ProcessImage::physicalInputs that took effect at PLC time `at`: each
+    // EXTERNAL task whose input bit changed with one of its edges is released
+    // at `at` + the target's detection delay (no sooner than its minimum
+    // spacing after its previous release).
+    void physicalInputsChanged(PlcTime at);
 
 private:
     enum class Phase : uint8_t { Idle, Ready, Active };
@@ -102,6 +112,12 @@ private:
         TaskBody* body = nullptr;
         int tieRank = 0;  // order among equal priority and equal waiting time
         bool isFaultTask = false;  // program-error or execution-timeout task
+        PlcTime period = 0;        // cyclic: the current period (SetCurrentTaskCycle, %SW0..%SW5 change it)
+        bool inhibited = false;    // M340 %S30..%S35 = 0: released, inputs and outputs copied, body not run
+        bool restartPending = false;  // M241: released again as soon as this activation has written its outputs
+        PlcTime restartNominal = 0;
+        PlcTime lastExternalRelease = 0;  // EXTERNAL: the latest planned release (minimum spacing)
+        bool hasExternalRelease = false;
         Phase phase = Phase::Idle;
         bool abortRequested = false;  // its watchdog tripped; abort at its next statement boundary
         bool lastTrigger = false;     // event tasks: the BOOL at the previous sample
@@ -120,6 +136,10 @@ private:
     void idle();
     void refreshNow();
     void startRegularTasks();
+    void startTask(TaskRun& task, PlcTime now);
+    void onMasterEnd();
+    void setPeriod(TaskRun& task, PlcTime period);
+    bool sampleOnTicks() const { return hasTriggers_ && !scanSampling_; }
     void processDue();
     void recomputeEarliestRelease();
     void scheduleNext(TaskRun& task);
@@ -147,6 +167,10 @@ private:
     TaskRun* errorTask_ = nullptr;
     TaskRun* timeoutTask_ = nullptr;
     TaskRun* cyclesTask_ = nullptr;
+    TaskRun* master_ = nullptr;     // the task in the first fixed slot (M340 MAST, or MainTask)
+    bool masterOnlyPhase_ = false;  // M340: the first MAST cycle runs alone
+    bool scanSampling_ = false;     // XGI: event/status BOOLs sampled only when the scan program ends
+    std::unique_ptr<SystemArea> system_;  // M340 %S / %SW
     PlcState state_ = PlcState::Run;
     bool ending_ = false;          // the run is over: every level unwinds
     bool regularStarted_ = false;  // false while the startup task has not finished

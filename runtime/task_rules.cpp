@@ -35,12 +35,22 @@ public:
             const TaskSpec& task = tasks_[i];
             checkName(i);
             checkCount(task, ++countByKind[kindIndex(task.kind)], int(i) + 1);
-            checkPriority(task);
-            checkInterval(task);
-            checkWatchdog(task);
+            checkGroupCounts(task);
+            checkTimeEventCounts(task);
+            if (const FixedTask* fixed = profile_.fixedTask(task.name)) {
+                checkFixedTask(task, *fixed);
+            } else if (!profile_.fixedTasks.empty()) {
+                reportNotFixed(task);
+            } else {
+                checkPriority(task);
+                checkInterval(task);
+                checkWatchdog(task);
+            }
             checkTimeEvent(task);
+            checkExternal(task);
         }
         checkFreewheelingBelowCyclic();
+        checkPeriodicMaster();
         return std::move(violations_);
     }
 
@@ -78,7 +88,82 @@ private:
         }
     }
 
+    void checkGroupCounts(const TaskSpec& task) {
+        for (size_t g = 0; g < profile_.groupLimits.size(); ++g) {
+            const GroupLimit& group = profile_.groupLimits[g];
+            if (!(group.kinds & kindBit(task.kind))) continue;
+            if (g >= countByGroup_.size()) break;
+            if (++countByGroup_[g] == group.maxCount + 1)
+                report(task, "task '" + task.name + "': at most " + std::to_string(group.maxCount) + " " +
+                                 std::string(group.words) + " tasks are allowed on " + std::string(profile_.description));
+        }
+    }
+
+    void checkTimeEventCounts(const TaskSpec& task) {
+        if (task.kind != TaskKind::TimeEvent) return;
+        bool once = task.repeat == TimeRepeat::Once;
+        int limit = once ? profile_.maxOnceTimeEvents : profile_.maxRepeatTimeEvents;
+        int count = once ? ++onceTimeEvents_ : ++repeatTimeEvents_;
+        if (limit > 0 && count == limit + 1)
+            report(task, "task '" + task.name + "': at most " + std::to_string(limit) +
+                             (once ? " specified-time (once)" : " repeat-time") + " event tasks are allowed on " +
+                             std::string(profile_.description));
+    }
+
+    std::string fixedNames() const {
+        std::string names;
+        for (const FixedTask& fixed : profile_.fixedTasks) names += (names.empty() ? "" : ", ") + std::string(fixed.name);
+        return names;
+    }
+
+    void reportNotFixed(const TaskSpec& task) {
+        report(task, "task '" + task.name + "': the tasks of " + std::string(profile_.description) + " are " +
+                         fixedNames());
+    }
+
+    // M340: the fixed priority, the task's own period and watchdog ranges.
+    void checkFixedTask(const TaskSpec& task, const FixedTask& fixed) {
+        std::string where = " of task '" + task.name + "'";
+        std::string on = " on " + std::string(profile_.description);
+        if (task.kind == TaskKind::Freewheeling) {
+            if (!fixed.freewheelingAllowed)
+                report(task, "task '" + task.name + "' needs an INTERVAL in " + formatDuration(fixed.minInterval) + ".." +
+                                 formatDuration(fixed.maxInterval) + on);
+        } else if (task.kind == TaskKind::Cyclic) {
+            if (task.interval < fixed.minInterval || task.interval > fixed.maxInterval)
+                report(task, "interval " + formatDuration(task.interval) + where + " is outside " +
+                                 formatDuration(fixed.minInterval) + ".." + formatDuration(fixed.maxInterval) + on);
+            else if (task.interval % fixed.intervalStep != 0)
+                report(task, "interval " + formatDuration(task.interval) + where + " must be a multiple of " +
+                                 formatDuration(fixed.intervalStep) + on);
+        }
+        if (task.watchdog < fixed.minWatchdog || task.watchdog > fixed.maxWatchdog)
+            report(task, "watchdog " + formatDuration(task.watchdog) + where + " is outside " +
+                             formatDuration(fixed.minWatchdog) + ".." + formatDuration(fixed.maxWatchdog) + on);
+    }
+
+    void checkExternal(const TaskSpec& task) {
+        if (task.kind != TaskKind::External || (task.edges & ~profile_.externalEdges) == 0) return;
+        report(task, "external task '" + task.name + "': only EDGE := RISING is available on " +
+                         std::string(profile_.description));
+    }
+
+    // M340 (seed 002): a cyclic (freewheeling) master task excludes the auxiliary tasks.
+    void checkPeriodicMaster() {
+        if (profile_.fixedTasks.empty()) return;
+        const TaskSpec* master = nullptr;
+        for (const TaskSpec& task : tasks_)
+            if (const FixedTask* fixed = profile_.fixedTask(task.name); fixed && fixed->freewheelingAllowed) master = &task;
+        if (!master || master->kind != TaskKind::Freewheeling) return;
+        for (const TaskSpec& task : tasks_)
+            if (const FixedTask* fixed = profile_.fixedTask(task.name); fixed && fixed->needsPeriodicMaster)
+                report(task, "task '" + task.name + "' needs a periodic " + master->name + " (give " + master->name +
+                                 " an INTERVAL); a cyclic " + master->name + " excludes the auxiliary tasks on " +
+                                 std::string(profile_.description));
+    }
+
     void checkPriority(const TaskSpec& task) {
+        if (task.kind == TaskKind::Startup && profile_.startupPriorityFixed) return;  // applyTaskDefaults fixed it
         const KindLimits& limits = profile_.limits(task.kind);
         if (task.priority >= limits.minPriority && task.priority <= limits.maxPriority) return;
         report(task, "priority " + std::to_string(task.priority) + " of task '" + task.name + "' is outside " +
@@ -137,6 +222,8 @@ private:
     const PlcProfile& profile_;
     const std::vector<TaskSpec>& tasks_;
     std::vector<TaskRuleViolation> violations_;
+    std::array<int, 4> countByGroup_{};
+    int onceTimeEvents_ = 0, repeatTimeEvents_ = 0;
 };
 
 }  // namespace
@@ -152,6 +239,37 @@ std::string taskNameProblem(const std::string& name) {
     if (name.find("__") != std::string::npos) return "task name '" + name + "' must not contain consecutive underscores";
     if (name.back() == '_') return "task name '" + name + "' must not end with an underscore";
     return "";
+}
+
+std::string applyTaskDefaults(const PlcProfile& profile, TaskSpec& task) {
+    std::string warning;
+    auto fixPriority = [&](int fixedPriority) {
+        if (task.priorityGiven && task.priority != fixedPriority)
+            warning = "the priority of task '" + task.name + "' is fixed at " + std::to_string(fixedPriority) + " on " +
+                      std::string(profile.description) + "; PRIORITY := " + std::to_string(task.priority) + " is ignored";
+        task.priority = fixedPriority;
+    };
+    if (const FixedTask* fixed = profile.fixedTask(task.name)) {
+        task.systemSlot = profile.fixedTaskIndex(task.name);
+        fixPriority(fixed->priority);
+        if (!task.watchdogGiven) task.watchdog = fixed->defaultWatchdog;
+        if (!task.intervalGiven && task.kind == TaskKind::Freewheeling && fixed->defaultInterval > 0) {
+            task.interval = fixed->defaultInterval;
+            task.kind = TaskKind::Cyclic;
+        }
+        return warning;
+    }
+    const KindLimits& limits = profile.limits(task.kind);
+    if (task.kind == TaskKind::Startup && profile.startupPriorityFixed) fixPriority(limits.defaultPriority);
+    if (!task.priorityGiven) task.priority = limits.defaultPriority;
+    if (!task.watchdogGiven) task.watchdog = limits.defaultWatchdog;
+    return warning;
+}
+
+std::string programCountProblem(const PlcProfile& profile, const TaskSpec& task, int programCount) {
+    if (profile.maxProgramsPerTask == 0 || programCount <= profile.maxProgramsPerTask) return "";
+    return "task '" + task.name + "' calls " + std::to_string(programCount) + " programs; at most " +
+           std::to_string(profile.maxProgramsPerTask) + " are allowed per task on " + std::string(profile.description);
 }
 
 std::vector<TaskRuleViolation> checkTaskRules(const PlcProfile& profile, const std::vector<TaskSpec>& tasks) {

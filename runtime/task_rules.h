@@ -18,6 +18,14 @@ struct TaskRuleViolation {
     std::string message;
 };
 
+// Fills in what the TASK declaration left out from the profile: the kind's
+// default PRIORITY and WATCHDOG; on a family with fixed tasks (M340) the
+// task's fixed priority, default period (none: freewheeling) and watchdog,
+// and its system-variable slot. A written PRIORITY where the family fixes
+// it (M340 tasks, the Baosky startup task) is replaced; the returned warning
+// says so ("" when none). Call before checkTaskRules.
+std::string applyTaskDefaults(const PlcProfile& profile, TaskSpec& task);
+
 // Violations in declaration order of the offending task; empty when the
 // configuration is valid for `profile`.
 std::vector<TaskRuleViolation> checkTaskRules(const PlcProfile& profile, const std::vector<TaskSpec>& tasks);
@@ -27,5 +35,9 @@ std::vector<TaskRuleViolation> checkTaskRules(const PlcProfile& profile, const s
 // underscores, no trailing underscore. Returns "" when `name` is valid, else
 // why not.
 std::string taskNameProblem(const std::string& name);
+
+// "" when a task may call `programCount` programs on `profile`, else why not
+// (Baosky: at most 99 programs per task).
+std::string programCountProblem(const PlcProfile& profile, const TaskSpec& task, int programCount);
 
 }  // namespace strun::rt

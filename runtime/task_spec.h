@@ -22,8 +22,12 @@ enum class TaskKind {
     ProgramError,  // EVENT := PROGRAM_ERROR: on an ARRAY_BOUNDS fault
     ExecTimeout,   // EVENT := EXEC_TIMEOUT: on a watchdog trip
     TimeEvent,     // AT := DT#..., REPEAT := ...
+    External,      // EXTERNAL := FI0 | %IX0.0, EDGE := ...: on a change of a physical input
 };
-const char* taskKindName(TaskKind kind);  // "cyclic", "freewheeling", "event", "status", "startup", "program_error", "exec_timeout", "time_event"
+const char* taskKindName(TaskKind kind);  // "cyclic", "freewheeling", "event", "status", "startup", "program_error", "exec_timeout", "time_event", "external"
+
+// Which changes of its physical input release an EXTERNAL task (bit mask).
+enum EdgeMask : uint8_t { kEdgeRising = 1, kEdgeFalling = 2, kEdgeBoth = 3 };
 
 enum class TimeRepeat { Once, Hourly, Daily, Weekly, Monthly, MonthEnd, Yearly };
 
@@ -40,11 +44,23 @@ struct TaskSpec {
     ast::Loc loc;
     TaskKind kind = TaskKind::Freewheeling;
     int priority = 30;
+    bool priorityGiven = false;  // PRIORITY was written (else the profile's default applies)
+    bool watchdogGiven = false;  // WATCHDOG was written
+    bool intervalGiven = false;  // INTERVAL was written
     PlcTime interval = 0;   // Cyclic: period in ns
     PlcTime watchdog = 0;   // 0 = no watchdog
     BoolRef trigger;        // Event / Status
     int64_t atCalendarNanos = 0;  // TimeEvent: first occurrence, ns since 1970-01-01 (UTC, no zone)
     TimeRepeat repeat = TimeRepeat::Once;
+    // External: the physical input bit (ProcessImage::physicalInputs) and the edges.
+    uint32_t inputByte = 0;
+    int inputBit = 0;
+    uint8_t edges = kEdgeRising;
+    // The system-variable slot of the task on a target that has one
+    // (M340: 0 MAST, 1 FAST, 2..5 AUX0..AUX3); -1: none.
+    int systemSlot = -1;
+    // The task strun made for programs configured without one (XGI: the scan program).
+    bool isScanProgram = false;
 };
 
 // The code a task runs: all programs (and FB instances) bound to it, in order.

@@ -28,6 +28,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     sema::Checker checker(*model, log);
     checker.setLibraryFiles(libraryFiles);
     checker.setCompileOptions(options);
+    if (const rt::PlcProfile* profile = rt::findProfile(options.target)) checker.setProfile(*profile);
     stdlib::registerBuiltins(checker);
     // The checker recurses once per nested declaration and expression level;
     // both are capped (docs/limits.md), and the large stack gives the caps a

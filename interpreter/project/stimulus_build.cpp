@@ -67,7 +67,8 @@ bool parseInputAddress(sema::ProgramModel& model, const std::string& name, Varia
 
 }  // namespace
 
-bool buildStimulus(sema::ProgramModel& model, const std::vector<StimulusEntry>& entries, rt::Stimulus& out, std::string& error) {
+bool buildStimulus(sema::ProgramModel& model, const std::vector<StimulusEntry>& entries, rt::Stimulus& out, std::string& error,
+                   const rt::PlcProfile& profile) {
     rt::ProcessImage& image = model.machine.image;
     for (const StimulusEntry& e : entries) {
         auto fail = [&](const std::string& why) {
@@ -79,7 +80,10 @@ bool buildStimulus(sema::ProgramModel& model, const std::vector<StimulusEntry>& 
         w.at = e.at;
         std::string why;
         size_t offset = 0;
-        if (parseInputAddress(model, e.name, ref, offset, why)) {
+        std::string address = e.name;
+        if (auto alias = rt::findInputAlias(profile, e.name))
+            address = "%IX" + std::to_string(alias->byte) + "." + std::to_string(alias->bit);
+        if (parseInputAddress(model, address, ref, offset, why)) {
             if (!why.empty()) return fail(why);
             w.kind = rt::StimulusWrite::Kind::PhysicalInput;
         } else {
@@ -95,6 +99,7 @@ bool buildStimulus(sema::ProgramModel& model, const std::vector<StimulusEntry>& 
                 w.kind = rt::StimulusWrite::Kind::PhysicalInput;
             }
         }
+        if (address != e.name) ref.path = e.name;  // the alias, for --trace
         if (!encodeLiteral(ref.type, e.value, w.bytes, why)) return fail(why);
         if (ref.bit >= 0 || ref.type->kind == TK::Bool) w.bytes.resize(1);
         w.dest = ref.addr;

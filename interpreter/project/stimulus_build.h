@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "interpreter/sema/program_model.h"
+#include "runtime/plc_profile.h"
 #include "runtime/stimulus.h"
 
 namespace strun::project {
@@ -24,6 +25,9 @@ struct StimulusEntry {
 // A variable located in the input image (AT %I...) is set as its physical
 // input: the program's copy is overwritten by every input phase, so a
 // variable write there would be lost (decision 0080).
-bool buildStimulus(sema::ProgramModel& model, const std::vector<StimulusEntry>& entries, rt::Stimulus& out, std::string& error);
+// A target's input alias (`FI0` under --target m241, runtime/plc_profile.h)
+// stands for its physical input bit.
+bool buildStimulus(sema::ProgramModel& model, const std::vector<StimulusEntry>& entries, rt::Stimulus& out, std::string& error,
+                   const rt::PlcProfile& profile = rt::defaultProfile());
 
 }  // namespace strun::project

@@ -15,6 +15,7 @@
 #include "interpreter/sema/program_model.h"
 #include "interpreter/sema/symbols.h"
 #include "interpreter/source/source_set.h"
+#include "runtime/plc_profile.h"
 
 namespace strun::sema {
 
@@ -95,6 +96,8 @@ private:
     void writeDefault(uint8_t* base, const Type* t);
     void writeScalar(uint8_t* p, const Type* t, const Checked& v);
     uint8_t* mapAddress(const std::string& address, const Type* t, const ast::Loc& loc, int& bit);
+    bool externalInput(const ast::Expr& value, rt::TaskSpec& spec);
+    uint8_t* mapSystemAddress(const std::string& address, const Type* t, const ast::Loc& loc, int& bit);
 
     // ---- cycles and depth of declarations (checker_cycles.cpp)
     void breakInheritanceCycles();
@@ -204,10 +207,14 @@ private:
     bool assignedResult_ = false;
     std::vector<std::unique_ptr<ast::TypeDecl>> inlineEnumDecls_;
     std::set<int> libraryFiles_;
+    const rt::PlcProfile* profile_ = &rt::defaultProfile();
 
 public:
     // Files whose POUs are the standard library (no unused-variable warnings).
     void setLibraryFiles(std::set<int> files) { libraryFiles_ = std::move(files); }
+    // The --target whose task rules, defaults and system variables apply.
+    void setProfile(const rt::PlcProfile& profile) { profile_ = &profile; }
+    const rt::PlcProfile& profile() const { return *profile_; }
 };
 
 // Pushes a declaration onto Checker::declStack_ for the time it is resolved.

@@ -1,6 +1,7 @@
 // CONFIGURATION / RESOURCE / TASK / PROGRAM ... WITH: program instances and
 // the tasks that run them; or, without a CONFIGURATION, the contract's
 // default: every PROGRAM in one freewheeling MainTask.
+#include <cctype>
 #include <cstring>
 
 #include <fmt/format.h>
@@ -35,6 +36,8 @@ void Checker::buildDefaultConfiguration() {
     task.spec.kind = rt::TaskKind::Freewheeling;
     task.spec.priority = 30;
     task.spec.watchdog = rt::defaultProfile().defaultMainWatchdog;
+    // On a family with fixed tasks the default MainTask plays the first one's role (M340: MAST).
+    if (!profile().fixedTasks.empty()) task.spec.systemSlot = 0;
     for (PouInfo* p : pouOrder_) {
         if (p->kind != ast::PouKind::Program || libraryFiles_.count(p->ast->loc.file)) continue;
         instantiateProgram(p->name, p, p->ast->loc);
@@ -105,11 +108,22 @@ void Checker::buildConfiguration() {
                     s.interval = t;
                     hasInterval = t > 0;
                 }
+                s.intervalGiven = true;
             } else if (key == "PRIORITY") {
                 int64_t v = 0;
                 if (constIntExpr(p.value.get(), v, "PRIORITY")) s.priority = static_cast<int>(std::clamp<int64_t>(v, -1000000, 1000000));
+                s.priorityGiven = true;
             } else if (key == "WATCHDOG") {
                 constTime(p.value.get(), s.watchdog);
+                s.watchdogGiven = true;
+            } else if (key == "EXTERNAL") {
+                if (externalInput(*p.value, s)) s.kind = rt::TaskKind::External;
+            } else if (key == "EDGE") {
+                std::string v = p.value->kind == ast::ExprKind::Name ? upper(p.value->name) : "";
+                if (v == "RISING") s.edges = rt::kEdgeRising;
+                else if (v == "FALLING") s.edges = rt::kEdgeFalling;
+                else if (v == "BOTH") s.edges = rt::kEdgeBoth;
+                else error(p.value->loc, "EDGE must be RISING, FALLING or BOTH");
             } else if (key == "SINGLE" || key == "STATUS") {
                 if (boolRef(p.value.get(), s.trigger)) s.kind = key == "SINGLE" ? rt::TaskKind::Event : rt::TaskKind::Status;
             } else if (key == "EVENT") {
@@ -140,11 +154,12 @@ void Checker::buildConfiguration() {
             }
         }
         if (hasInterval && s.kind == rt::TaskKind::Freewheeling) s.kind = rt::TaskKind::Cyclic;
+        if (std::string warning = rt::applyTaskDefaults(profile(), s); !warning.empty()) log_.warning(s.loc, warning);
         model_.tasks.push_back(std::move(task));
     }
     std::vector<rt::TaskSpec> specs;
     for (auto& t : model_.tasks) specs.push_back(t.spec);
-    for (const auto& v : rt::checkTaskRules(rt::defaultProfile(), specs)) error(v.loc, v.message);
+    for (const auto& v : rt::checkTaskRules(profile(), specs)) error(v.loc, v.message);
     auto findTask = [&](const std::string& name) -> ConfiguredTask* {
         for (auto& t : model_.tasks)
             if (upper(t.spec.name) == upper(name)) return &t;
@@ -160,14 +175,15 @@ void Checker::buildConfiguration() {
                 continue;
             }
         } else {
-            task = findTask("DefaultTask");
+            task = findTask(std::string(profile().unassignedTaskName));
             if (!task) {
                 // IEC: a program with no task runs cyclically at the lowest priority.
                 ConfiguredTask dt;
-                dt.spec.name = "DefaultTask";
+                dt.spec.name = std::string(profile().unassignedTaskName);
                 dt.spec.loc = pc->loc;
                 dt.spec.kind = rt::TaskKind::Freewheeling;
-                dt.spec.priority = 31;
+                dt.spec.priority = profile().unassignedTaskPriority;
+                dt.spec.isScanProgram = true;
                 model_.tasks.push_back(std::move(dt));
                 task = &model_.tasks.back();
             }
@@ -219,6 +235,42 @@ void Checker::buildConfiguration() {
         currentPouName_ = nullptr;
         task->calls.push_back({&inst, inst.pou->code, inst.memory, inst.name});
     }
+    for (const auto& t : model_.tasks)
+        if (std::string problem = rt::programCountProblem(profile(), t.spec, int(t.calls.size())); !problem.empty())
+            error(t.spec.loc, problem);
+}
+
+// EXTERNAL := FI0 (a target's input alias) or %IX0.0 (a bit of the physical inputs).
+bool Checker::externalInput(const ast::Expr& value, rt::TaskSpec& spec) {
+    if (value.kind != ast::ExprKind::Name) {
+        error(value.loc, "EXTERNAL needs an input bit such as %IX0.0 or an input name of the target");
+        return false;
+    }
+    if (!value.name.empty() && value.name[0] == '%') {
+        std::string key = upper(value.name);
+        if (key.size() < 3 || key[1] != 'I' || (std::isalpha(static_cast<unsigned char>(key[2])) && key[2] != 'X')) {
+            error(value.loc, fmt::format("EXTERNAL needs an input bit (%IX...), not '{}'", value.name));
+            return false;
+        }
+        int bit = -1;
+        uint8_t* p = mapAddress(value.name, types().elementary(TK::Bool), value.loc, bit);
+        if (!p) return false;
+        spec.inputByte = static_cast<uint32_t>(p - model_.machine.image.inputs.data());
+        spec.inputBit = bit;
+        return true;
+    }
+    if (auto alias = rt::findInputAlias(profile(), value.name)) {
+        spec.inputByte = alias->byte;
+        spec.inputBit = alias->bit;
+        return true;
+    }
+    std::string names;
+    for (const auto& a : profile().inputAliases) names += (names.empty() ? "" : ", ") + std::string(a.name);
+    error(value.loc, names.empty() ? fmt::format("unknown input '{}': {} has no named inputs; use an address such as %IX0.0",
+                                                 value.name, profile().description)
+                                   : fmt::format("unknown input '{}': the inputs of {} are {}, or an address such as %IX0.0",
+                                                 value.name, profile().description, names));
+    return false;
 }
 
 // ---------------------------------------------------------------- driver

@@ -843,6 +843,7 @@ uint8_t* Checker::mapAddress(const std::string& address, const Type* t, const as
         return nullptr;
     };
     if (a.size() < 3 || a[0] != '%') return fail("expected %I, %Q or %M");
+    if (a[1] == 'S') return mapSystemAddress(address, t, loc, bit);
     std::vector<uint8_t>* area = nullptr;
     switch (a[1]) {
         case 'I': area = &model_.machine.image.inputs; break;
@@ -903,6 +904,82 @@ uint8_t* Checker::mapAddress(const std::string& address, const Type* t, const as
     if (area == &image.inputs) image.inputExtent = std::max<size_t>(image.inputExtent, end);
     if (area == &image.outputs) image.outputExtent = std::max<size_t>(image.outputExtent, end);
     return area->data() + byte;
+}
+
+}  // namespace strun::sema
+
+namespace strun::sema {
+
+// %Sn (system bit n) and %SWn / %SWn.b (system word n, bit b of it): only on
+// a target that has system variables (M340); the layout is runtime/machine.h's.
+uint8_t* Checker::mapSystemAddress(const std::string& address, const Type* t, const ast::Loc& loc, int& bit) {
+    auto fail = [&](const std::string& why) -> uint8_t* {
+        error(loc, fmt::format("bad system address '{}': {}", address, why));
+        return nullptr;
+    };
+    if (profile().systemVariables == rt::SystemVariables::None) {
+        const rt::PlcProfile* owner = rt::profileWithSystemVariables();
+        error(loc, fmt::format("system variable '{}' exists only with --target {} ({}); the target is {}", address,
+                               owner ? owner->id : "m340", owner ? owner->description : "Modicon M340", profile().id));
+        return nullptr;
+    }
+    std::string a = upper(address);
+    bool isWord = a.size() > 2 && a[2] == 'W';
+    if (a.size() > 2 && std::isalpha(static_cast<unsigned char>(a[2])) && !isWord)
+        return fail("system variables are bits %Sn and words %SWn");
+    std::vector<uint64_t> parts;
+    uint64_t cur = 0;
+    bool any = false;
+    for (size_t pos = isWord ? 3 : 2; pos < a.size(); ++pos) {
+        char ch = a[pos];
+        if (ch >= '0' && ch <= '9') {
+            cur = cur * 10 + static_cast<uint64_t>(ch - '0');
+            any = true;
+            if (cur > 100000) return fail("number too large");
+        } else if (ch == '.' && any && parts.empty()) {
+            parts.push_back(cur);
+            cur = 0;
+            any = false;
+        } else {
+            return fail("malformed");
+        }
+    }
+    if (!any) return fail("malformed");
+    parts.push_back(cur);
+    auto& image = model_.machine.image;
+    bit = -1;
+    uint64_t number = parts[0];
+    bool emulated = false;
+    uint8_t* where = nullptr;
+    if (!isWord) {
+        if (parts.size() != 1) return fail("a system bit has no bit number");
+        if (number >= rt::ProcessImage::kSystemBits)
+            return fail(fmt::format("system bits are %S0..%S{}", rt::ProcessImage::kSystemBits - 1));
+        if (t->kind != TK::Bool) return fail("a system bit needs a BOOL variable");
+        emulated = number == 11 || number == 19 || (number >= 30 && number <= 35);
+        bit = static_cast<int>(number % 8);
+        where = image.systemBits.data() + number / 8;
+    } else {
+        if (number >= rt::ProcessImage::kSystemWords)
+            return fail(fmt::format("system words are %SW0..%SW{}", rt::ProcessImage::kSystemWords - 1));
+        emulated = number <= 5 || number == 8 || number == 9 || number == 11 || (number >= 30 && number <= 47);
+        if (parts.size() == 2) {
+            if (parts[1] > 15) return fail("bit number above 15");
+            if (t->kind != TK::Bool) return fail("a bit of a system word needs a BOOL variable");
+            bit = static_cast<int>(parts[1] % 8);
+            where = image.systemWords.data() + number * 2 + parts[1] / 8;
+        } else {
+            if (t->size > 2 && t->kind != TK::Array && t->kind != TK::Struct)
+                return fail(fmt::format("{} is larger than the 2-byte system word", typeName(t)));
+            if (number * 2 + std::max<uint64_t>(t->size, 1) > image.systemWords.size())
+                return fail("outside the system words");
+            where = image.systemWords.data() + number * 2;
+        }
+    }
+    if (!emulated)
+        log_.warning(loc, fmt::format("'{}' is not maintained by strun on {}: it reads 0 unless the program writes it",
+                                      address, profile().description));
+    return where;
 }
 
 }  // namespace strun::sema

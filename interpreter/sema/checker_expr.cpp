@@ -351,6 +351,7 @@ Checked Checker::checkName(const ast::Expr& e) {
         // A direct address used in code: a BOOL for bit addresses, else the address's size.
         char size = key.size() > 2 && std::isalpha(static_cast<unsigned char>(key[2])) ? key[2] : 'X';
         TK k = size == 'B' ? TK::Byte : size == 'W' ? TK::Word : size == 'D' ? TK::DWord : size == 'L' ? TK::LWord : TK::Bool;
+        if (key[1] == 'S' && key.find('.') != std::string::npos) k = TK::Bool;  // %SW8.0: a bit of a system word
         const Type* t = types().elementary(k);
         int bit = -1;
         uint8_t* p = mapAddress(e.name, t, e.loc, bit);

@@ -16,6 +16,7 @@ void registerBuiltins(sema::Checker& checker) {
     bind::registerConvert(checker);
     bind::registerTime(checker);
     bind::registerClock(checker);
+    bind::registerTaskCycle(checker);
     registerParameterAliases(checker);
 }
 

@@ -12,5 +12,6 @@ void registerStrings(sema::Checker& ck);   // LEN LEFT RIGHT MID CONCAT INSERT D
 void registerConvert(sema::Checker& ck);   // *_TO_STRING, STRING_TO_*, BCD, endianness, IS_VALID
 void registerTime(sema::Checker& ck);      // ADD_TIME ... DAY_OF_WEEK
 void registerClock(sema::Checker& ck);     // the PLC clock read by the ST timer blocks
+void registerTaskCycle(sema::Checker& ck); // GetCurrentTaskCycle, SetCurrentTaskCycle (--target m241)
 
 }  // namespace strun::stdlib::bind

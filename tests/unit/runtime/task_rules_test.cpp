@@ -100,7 +100,7 @@ TEST_CASE("MONTHLY time events must be on day 1..28", "[task_rules]") {
 }
 
 TEST_CASE("the Baosky profile has the seed's limits", "[task_rules]") {
-    const PlcProfile* baosky = findProfile("BAOSKY-T3");
+    const PlcProfile* baosky = findProfile("BAOSKY");
     REQUIRE(baosky);
     CHECK(findProfile("nope") == nullptr);
     CHECK(allProfiles().front().id == "generic");
