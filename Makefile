@@ -2,11 +2,11 @@
 # Debian packages the build needs when they are missing, then build into build/.
 BUILD ?= build
 JOBS ?= $(shell nproc)
-DEBIAN_PACKAGES = cmake make g++ antlr4 default-jre-headless libantlr4-runtime-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev
+DEBIAN_PACKAGES = cmake make g++ antlr4 default-jre-headless libantlr4-runtime-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev dpkg-dev
 EXAMPLE ?= programs/bottle_counter.st
 RUN_ARGS ?= --virtual --cycles 2000 --dump
 
-.PHONY: deps build run test bench clean
+.PHONY: deps build run test bench package install clean
 
 deps:
 	@missing=""; for p in $(DEBIAN_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -28,6 +28,16 @@ test: build
 
 bench: build
 	benchmarks/run.sh $(BUILD)/strun
+	benchmarks/vcd/run_vcd_bench.sh $(BUILD)/strun
+
+# A Debian package of strun and its documentation, in $(BUILD)/ (CPack).
+package: build
+	cd $(BUILD) && cpack -G DEB
+
+# Installs strun and its documentation under PREFIX (default /usr/local).
+PREFIX ?= /usr/local
+install: build
+	cmake --install $(BUILD) --prefix $(PREFIX)
 
 clean:
 	rm -rf $(BUILD)

@@ -36,7 +36,21 @@ int unknownCommand(const CLI::App& app, const std::string& word) {
 int checkSubcommandName(const CLI::App& app, int argc, char** argv) {
     if (argc < 2) return -1;
     std::string first = argv[1];
-    if (first.empty() || first[0] == '-') return -1;
+    if (first.empty()) return -1;
+    if (first[0] == '-') {
+        if (first == "-h" || first == "--help" || first == "--version") return -1;
+        // A command's option before the command: say where it goes.
+        std::string option = first.substr(0, first.find('='));
+        for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+            for (const std::string& name : optionNames(*sub))
+                if (name == option) {
+                    std::cerr << "strun: " << option << " is an option of '" << sub->get_name() << "'; it goes after the command: strun "
+                              << sub->get_name() << " " << option << " ...\n";
+                    return kExitUsage;
+                }
+        std::cerr << "strun: unknown option '" << option << "'" << didYouMean(closestName(option, optionNames(app))) << "\n";
+        return kExitUsage;
+    }
     for (const std::string& name : subcommandNames(app))
         if (name == first) return -1;
     return unknownCommand(app, first);

@@ -1,5 +1,6 @@
 #include "runtime/vcd_recorder.h"
 
+#include <charconv>
 #include <cstring>
 #include <map>
 
@@ -118,19 +119,23 @@ void VcdRecorder::writeValue(const VcdSignal& s, uint64_t value, const std::stri
         case VcdSignal::Kind::Bit:
             buffer_ += value ? '1' : '0';
             break;
-        case VcdSignal::Kind::Real32: {
-            float f;
-            uint32_t bits = uint32_t(value);
-            std::memcpy(&f, &bits, 4);
-            std::snprintf(text, sizeof text, "r%.9g ", double(f));
-            buffer_ += text;
-            break;
-        }
+        case VcdSignal::Kind::Real32:
         case VcdSignal::Kind::Real64: {
-            double d;
-            std::memcpy(&d, &value, 8);
-            std::snprintf(text, sizeof text, "r%.17g ", d);
-            buffer_ += text;
+            // Shortest text that reads back as the same value (to_chars: no printf on the sampling path).
+            text[0] = 'r';
+            std::to_chars_result r;
+            if (s.kind == VcdSignal::Kind::Real32) {
+                float f;
+                uint32_t bits = uint32_t(value);
+                std::memcpy(&f, &bits, 4);
+                r = std::to_chars(text + 1, text + sizeof text - 1, f);
+            } else {
+                double d;
+                std::memcpy(&d, &value, 8);
+                r = std::to_chars(text + 1, text + sizeof text - 1, d);
+            }
+            buffer_.append(text, r.ptr);
+            buffer_ += ' ';
             break;
         }
         case VcdSignal::Kind::Vector: {

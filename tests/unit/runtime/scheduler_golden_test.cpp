@@ -232,8 +232,10 @@ TEST_CASE("ARRAY_BOUNDS runs the program-error task and the PLC keeps running", 
     CHECK(s.state == PlcState::Run);
     auto diags = s.scheduler->diagnosticsJson();
     REQUIRE(diags.size() == 1);
-    CHECK(diags[0] == nlohmann::json{{"time", "T#1ms10us"}, {"code", "ARRAY_BOUNDS"}, {"task", "Prog"},
-                                     {"pou", "FakePrg"},   {"line", 10},             {"message", "fake fault"}});
+    // Issue 7: diagnostics gained "file" and "col" and keep this key order.
+    CHECK(diags[0] == nlohmann::ordered_json{{"time", "T#1ms10us"}, {"code", "ARRAY_BOUNDS"}, {"task", "Prog"},
+                                             {"pou", "FakePrg"},   {"file", ""},              {"line", 10},
+                                             {"col", 0},           {"message", "fake fault"}});
 }
 
 TEST_CASE("ARRAY_BOUNDS without a program-error task STOPs at the fault", "[scheduler][golden]") {

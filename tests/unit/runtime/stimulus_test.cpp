@@ -93,3 +93,23 @@ TEST_CASE("an input write wakes the idle virtual clock at its time; an unchanged
     CHECK(trace.find("T#37us set %IB4 := 0\nT#41us set %IB4 := 200\n") != std::string::npos);
     CHECK(stimulus.nextInputAt() == kNever);
 }
+
+TEST_CASE("--dump tasks and diagnostics keep a fixed key order", "[dump]") {
+    Scenario s;
+    FakeBody& body = s.add(cyclic("Cyc", 1, 10 * us), 3);
+    body.faultAt = 1;
+    body.fault = DiagCode::DivByZero;
+    RunOptions options = virtualFor(25 * us);
+    options.sourceFiles = {"a.st"};
+    s.run(options);
+    REQUIRE(s.scheduler->tasksJson().size() == 1);
+    REQUIRE(s.scheduler->diagnosticsJson().size() >= 1);
+    std::vector<std::string> taskKeys, diagKeys;
+    const auto tasks = s.scheduler->tasksJson();
+    const auto diagnostics = s.scheduler->diagnosticsJson();
+    for (const auto& item : tasks[0].items()) taskKeys.push_back(item.key());
+    for (const auto& item : diagnostics[0].items()) diagKeys.push_back(item.key());
+    CHECK(std::vector<std::string>(taskKeys.begin(), taskKeys.begin() + 6) ==
+          std::vector<std::string>{"name", "kind", "priority", "cycles", "overruns", "watchdog_trips"});
+    CHECK(diagKeys == std::vector<std::string>{"time", "code", "task", "pou", "file", "line", "col", "message"});
+}
