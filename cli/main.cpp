@@ -2,6 +2,7 @@
 //   strun run   [options] FILE...   compile the FILEs as one project and run it
 //   strun check [options] FILE...   compile only; print diagnostics
 // Exit status: 0 ok, 1 does not compile, 2 bad command line, 3 PLC STOP/HALT.
+#include <chrono>
 #include <csignal>
 #include <fstream>
 #include <iostream>
@@ -12,6 +13,7 @@
 
 #include "interpreter/project/compile.h"
 #include "interpreter/project/dump_json.h"
+#include "interpreter/project/retain_store.h"
 #include "interpreter/project/task_runner.h"
 #include "interpreter/source/read_source.h"
 #include "runtime/scheduler.h"
@@ -36,6 +38,9 @@ struct Options {
     bool dump = false;
     bool trace = false;
     bool realtime = false;
+    std::string retainFile;
+    bool cold = false;
+    std::string retainEvery;
 };
 
 int usage(const std::string& message) {
@@ -106,10 +111,25 @@ int runCommand(const Options& o, bool execute) {
     } else if (!specs.empty()) {
         run.cyclesTask = specs.front().name;  // MainTask without a CONFIGURATION, else the first TASK declared
     }
+    std::unique_ptr<strun::project::RetainStore> retain;
+    if (!o.retainFile.empty()) {
+        int64_t every = 1000000000;  // 1 s
+        if (!o.retainEvery.empty()) {
+            auto r = strun::stdlib::parseDurationLiteral(o.retainEvery);
+            if (!r || r.value() < 0) return usage("--retain-every: '" + o.retainEvery + "' is not a duration (e.g. 1s, 100ms)");
+            every = r.value();
+        }
+        retain = std::make_unique<strun::project::RetainStore>(*model, o.retainFile, std::cerr);
+        if (!o.cold) retain->restore();
+        retain->setInterval(std::chrono::nanoseconds(every));
+    } else if (o.cold || !o.retainEvery.empty()) {
+        return usage(std::string(o.cold ? "--cold" : "--retain-every") + " needs --retain FILE");
+    }
     std::vector<std::unique_ptr<strun::project::TaskRunner>> runners;
     std::vector<strun::rt::TaskBody*> bodies;
     for (const auto& t : model->tasks) {
         runners.push_back(std::make_unique<strun::project::TaskRunner>(*model, t));
+        runners.back()->setRetainStore(retain.get());
         bodies.push_back(runners.back().get());
     }
     strun::rt::Scheduler scheduler(model->machine, specs, bodies, run);
@@ -118,6 +138,7 @@ int runCommand(const Options& o, bool execute) {
     strun::rt::PlcState state = scheduler.run();
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
+    if (retain) retain->save();  // however the run ended
     if (o.dump) {
         nlohmann::ordered_json out;
         out["state"] = strun::rt::plcStateName(state);
@@ -149,6 +170,9 @@ int main(int argc, char** argv) {
         run->add_flag("--dump", o.dump, "print the final state as JSON on stdout");
         run->add_flag("--trace", o.trace, "print task events on stderr");
         run->add_flag("--realtime", o.realtime, "ask for SCHED_FIFO and locked memory");
+        run->add_option("--retain", o.retainFile, "keep RETAIN/PERSISTENT variables in FILE (restored at start, saved at the end and periodically)");
+        run->add_flag("--cold", o.cold, "cold start: ignore the --retain file at start");
+        run->add_option("--retain-every", o.retainEvery, "save the --retain file every DURATION of real time (default 1s; 0 only at the end)");
         auto* check = app.add_subcommand("check", "compile only; print diagnostics");
         check->add_option("FILE", o.files, "source files")->required();
         try {

@@ -18,6 +18,8 @@ public:
     TaskRunner(sema::ProgramModel& model, const sema::ConfiguredTask& task);
     bool runActivation() override;
     bool currentPosition(std::string& pou, int& line) const override;
+    // --retain: the store saved periodically between activations.
+    void setRetainStore(class RetainStore* store) { retain_ = store; }
 
 private:
     void runInitCalls();
@@ -26,6 +28,7 @@ private:
     rt::ReservedMemory stack_;
     rt::ReservedMemory sink_;
     exec::Ctx ctx_;
+    RetainStore* retain_ = nullptr;
 };
 
 }  // namespace strun::project
