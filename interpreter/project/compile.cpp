@@ -11,14 +11,42 @@
 
 namespace strun::project {
 
-std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log) {
+std::unique_ptr<ParsedLibrary> parseLibrary(CompileLog& log) {
+    auto library = std::make_unique<ParsedLibrary>();
+    for (const auto& src : stdlib::embeddedSources()) {
+        int index = library->sources.add(std::string(src.path), std::string(src.text));
+        library->files.insert(index);
+        library->units.push_back(ast::parseFile(library->sources, index, log));
+    }
+    return library;
+}
+
+std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
+                                                   ParsedLibrary* library) {
     std::vector<ast::CompilationUnit> units;
     std::set<int> libraryFiles;
-    for (const auto& src : stdlib::embeddedSources()) {
-        int index = sources.add(std::string(src.path), std::string(src.text));
-        libraryFiles.insert(index);
-        units.push_back(ast::parseFile(sources, index, log));
+    if (library) {
+        units = std::move(library->units);
+        libraryFiles = library->files;
+    } else {
+        for (const auto& src : stdlib::embeddedSources()) {
+            int index = sources.add(std::string(src.path), std::string(src.text));
+            libraryFiles.insert(index);
+            units.push_back(ast::parseFile(sources, index, log));
+        }
     }
+    const size_t libraryUnits = units.size();
+    // Hands the lent library units back however this function ends.
+    struct GiveBack {
+        ParsedLibrary* library;
+        std::vector<ast::CompilationUnit>& units;
+        size_t count;
+        ~GiveBack() {
+            if (!library) return;
+            units.resize(count);
+            library->units = std::move(units);
+        }
+    } giveBack{library, units, libraryUnits};
     for (int f : userFiles) units.push_back(ast::parseFile(sources, f, log));
     if (log.hasErrors()) return nullptr;
     auto model = std::make_unique<sema::ProgramModel>();
