@@ -6,7 +6,7 @@ DEBIAN_PACKAGES = cmake make g++ antlr4 default-jre-headless libantlr4-runtime-d
 EXAMPLE ?= programs/bottle_counter.st
 RUN_ARGS ?= --virtual --cycles 2000 --dump
 
-.PHONY: deps build run test bench package install clean
+.PHONY: deps build run test bench package install clean check-deep fuzz fuzz-smoke
 
 deps:
 	@missing=""; for p in $(DEBIAN_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -39,5 +39,27 @@ PREFIX ?= /usr/local
 install: build
 	cmake --install $(BUILD) --prefix $(PREFIX)
 
+# ASan + UBSan build of everything, then the whole ctest suite under them
+# (docs/fuzzing.md). Too slow for CI on 2 cores: run it before a release.
+check-deep: deps
+	cmake -S . -B build-deep -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTRUN_SANITIZE=ON
+	cmake --build build-deep -j$(JOBS)
+	cd build-deep && ASAN_OPTIONS=detect_leaks=0 STRUN_SLOW_FACTOR=4 ctest --output-on-failure -j$(JOBS)
+
+# libFuzzer (clang): build-fuzz/tests/fuzz/fuzz_compile_run with the ST
+# dictionary and the conformance programs as seeds. FUZZ_SECONDS=60 for a smoke run.
+FUZZ_SECONDS ?= 3600
+fuzz: deps
+	@command -v clang++ >/dev/null || { echo "make fuzz needs clang (apt-get install clang)"; exit 2; }
+	cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ -DSTRUN_FUZZ=ON
+	cmake --build build-fuzz -j$(JOBS) --target fuzz_compile_run
+	mkdir -p build-fuzz/corpus
+	ASAN_OPTIONS=detect_leaks=0 build-fuzz/tests/fuzz/fuzz_compile_run build-fuzz/corpus build-fuzz/fuzz-seeds \
+	  -dict=tests/fuzz/st.dict -max_len=4096 -timeout=10 -rss_limit_mb=2048 -max_total_time=$(FUZZ_SECONDS) \
+	  -artifact_prefix=build-fuzz/
+
+fuzz-smoke:
+	$(MAKE) fuzz FUZZ_SECONDS=60
+
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) build-deep build-fuzz

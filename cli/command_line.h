@@ -30,6 +30,9 @@ struct CommandLine {
     std::vector<std::string> stimulusFiles;  // --stimulus FILE
     std::string vcdFile;                     // --vcd FILE
     std::vector<std::string> watches;        // --watch PATTERN
+    std::string retainFile;                  // --retain FILE
+    bool cold = false;                       // --cold
+    std::optional<int64_t> retainEvery;      // --retain-every, ns
 };
 
 }  // namespace strun::cli

@@ -1,5 +1,6 @@
 // strun run [options] FILE...: compile the FILEs as one project and run it.
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -18,6 +19,7 @@
 #include "interpreter/project/vcd_signals.h"
 #include "runtime/vcd_recorder.h"
 #include "interpreter/project/dump_json.h"
+#include "interpreter/project/retain_store.h"
 #include "interpreter/project/task_runner.h"
 #include "runtime/plc_profile.h"
 #include "runtime/scheduler.h"
@@ -111,6 +113,15 @@ CLI::App* addRunCommand(CLI::App& app, CommandLine& line) {
         ->check(readableFileValidator())
         ->type_name("FILE")
         ->allow_extra_args(false);
+    run->add_option("--retain", line.retainFile,
+                    "keep RETAIN/PERSISTENT variables in FILE: restored at start, saved periodically and at the end")
+        ->type_name("FILE");
+    run->add_flag("--cold", line.cold, "cold start: ignore the --retain file at start (initial values)");
+    run->add_option_function<std::string>(
+           "--retain-every", [&line](const std::string& text) { line.retainEvery = validatedDuration(text); },
+           "save the --retain file every DURATION of real time (default 1s; 0: only at the end)")
+        ->transform(durationValidator())
+        ->type_name("DURATION");
     return run;
 }
 
@@ -165,10 +176,22 @@ int runCommand(const CommandLine& line) {
         run.observer = recorder.get();
     }
 
+    // --retain: RETAIN/PERSISTENT variables restored now (warm start unless
+    // --cold), saved periodically between activations and at the end.
+    std::unique_ptr<project::RetainStore> retain;
+    if (!line.retainFile.empty()) {
+        retain = std::make_unique<project::RetainStore>(model, line.retainFile, std::cerr);
+        if (!line.cold) retain->restore();
+        retain->setInterval(std::chrono::nanoseconds(line.retainEvery.value_or(1'000'000'000)));
+    } else if (line.cold || line.retainEvery) {
+        return usage(std::string(line.cold ? "--cold" : "--retain-every") + " needs --retain FILE");
+    }
+
     std::vector<std::unique_ptr<project::TaskRunner>> runners;
     std::vector<rt::TaskBody*> bodies;
     for (const auto& t : model.tasks) {
         runners.push_back(std::make_unique<project::TaskRunner>(model, t));
+        runners.back()->setRetainStore(retain.get());
         bodies.push_back(runners.back().get());
     }
     rt::Scheduler scheduler(model.machine, specs, bodies, run);
@@ -177,6 +200,7 @@ int runCommand(const CommandLine& line) {
     rt::PlcState state = scheduler.run();
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
+    if (retain) retain->save();  // however the run ended
     printFaultReport(std::cerr, scheduler);
     if (!line.dump && !line.quiet) printRunSummary(std::cerr, scheduler, state);
     if (line.dump) {

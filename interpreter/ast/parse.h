@@ -13,7 +13,7 @@ namespace strun::ast {
 
 // Tokens of one file (comments and pragmas included); past it the file is
 // rejected with an error (docs/limits.md).
-inline constexpr std::size_t kMaxTokensPerFile = 1000000;
+inline constexpr std::size_t kMaxTokensPerFile = 2000000;
 
 CompilationUnit parseFile(const SourceSet& sources, int fileIndex, CompileLog& log);
 

@@ -17,6 +17,11 @@ using U = std::make_unsigned_t<T>;
 template <class T>
 inline int64_t wrapI(T v) { return static_cast<int64_t>(v); }
 
+// Unsigned of at least `unsigned int` width: a product of two 16-bit
+// unsigneds would otherwise be promoted to (signed) int and overflow (UB).
+template <class T>
+using W = std::common_type_t<U<T>, unsigned>;
+
 #define STRUN_INT_BINOP(NAME, EXPR)                                                           \
     template <class T>                                                                        \
     struct NAME final : Expr {                                                                \
@@ -31,7 +36,7 @@ inline int64_t wrapI(T v) { return static_cast<int64_t>(v); }
 
 STRUN_INT_BINOP(AddI, static_cast<U<T>>(static_cast<U<T>>(a) + static_cast<U<T>>(b)))
 STRUN_INT_BINOP(SubI, static_cast<U<T>>(static_cast<U<T>>(a) - static_cast<U<T>>(b)))
-STRUN_INT_BINOP(MulI, static_cast<U<T>>(static_cast<U<T>>(a) * static_cast<U<T>>(b)))
+STRUN_INT_BINOP(MulI, static_cast<U<T>>(static_cast<W<T>>(a) * static_cast<W<T>>(b)))
 STRUN_INT_BINOP(AndI, a & b)
 STRUN_INT_BINOP(OrI, a | b)
 STRUN_INT_BINOP(XorI, a ^ b)
@@ -53,7 +58,7 @@ STRUN_INT_BINOP(XorI, a ^ b)
     };
 STRUN_INT_BINOP_CONST(AddIK, static_cast<U<T>>(static_cast<U<T>>(a) + static_cast<U<T>>(b)))
 STRUN_INT_BINOP_CONST(SubIK, static_cast<U<T>>(static_cast<U<T>>(a) - static_cast<U<T>>(b)))
-STRUN_INT_BINOP_CONST(MulIK, static_cast<U<T>>(static_cast<U<T>>(a) * static_cast<U<T>>(b)))
+STRUN_INT_BINOP_CONST(MulIK, static_cast<U<T>>(static_cast<W<T>>(a) * static_cast<W<T>>(b)))
 STRUN_INT_BINOP_CONST(DivIK, a / b)  // b is neither 0 nor -1
 STRUN_INT_BINOP_CONST(ModIK, a % b)  // b is neither 0 nor -1
 STRUN_INT_BINOP_CONST(AndIK, a & b)

@@ -5,23 +5,52 @@
 
 #include "interpreter/ast/large_stack.h"
 #include "interpreter/ast/parse.h"
+#include "interpreter/project/library_selection.h"
 #include "interpreter/sema/checker.h"
 #include "stdlib/bind/register_builtins.h"
-#include "interpreter/project/library_selection.h"
+#include "stdlib/embedded_sources.h"
 
 namespace strun::project {
 
+std::unique_ptr<ParsedLibrary> parseLibrary(CompileLog& log) {
+    auto library = std::make_unique<ParsedLibrary>();
+    for (const auto& src : stdlib::embeddedSources()) {
+        int index = library->sources.add(std::string(src.path), std::string(src.text));
+        library->files.insert(index);
+        library->units.push_back(ast::parseFile(library->sources, index, log));
+    }
+    return library;
+}
+
 std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
-                                                   const sema::CompileOptions& options) {
+                                                   const sema::CompileOptions& options, ParsedLibrary* library) {
     std::vector<ast::CompilationUnit> units;
     std::set<int> libraryFiles;
-    std::vector<std::string_view> userTexts;
-    for (int f : userFiles) userTexts.push_back(sources.file(f).text);
-    for (const stdlib::EmbeddedSource* src : embeddedSourcesFor(userTexts)) {
-        int index = sources.add(std::string(src->path), std::string(src->text));
-        libraryFiles.insert(index);
-        units.push_back(ast::parseFile(sources, index, log));
+    if (library) {
+        units = std::move(library->units);
+        libraryFiles = library->files;
+    } else {
+        // Only the library files the project mentions (decision 0150).
+        std::vector<std::string_view> userTexts;
+        for (int f : userFiles) userTexts.push_back(sources.file(f).text);
+        for (const stdlib::EmbeddedSource* src : embeddedSourcesFor(userTexts)) {
+            int index = sources.add(std::string(src->path), std::string(src->text));
+            libraryFiles.insert(index);
+            units.push_back(ast::parseFile(sources, index, log));
+        }
     }
+    const size_t libraryUnits = units.size();
+    // Hands the lent library units back however this function ends.
+    struct GiveBack {
+        ParsedLibrary* library;
+        std::vector<ast::CompilationUnit>& units;
+        size_t count;
+        ~GiveBack() {
+            if (!library) return;
+            units.resize(count);
+            library->units = std::move(units);
+        }
+    } giveBack{library, units, libraryUnits};
     for (int f : userFiles) units.push_back(ast::parseFile(sources, f, log));
     if (log.hasErrors()) return nullptr;
     auto model = std::make_unique<sema::ProgramModel>();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <set>
 #include <vector>
 
 #include "interpreter/sema/compile_options.h"
@@ -12,8 +13,21 @@
 
 namespace strun::project {
 
+// The embedded standard library parsed once, for callers that compile many
+// projects in one process (the fuzz target): parsing it is most of the cost
+// of a small compile. `sources` holds its files; a project compiled with it
+// starts from a copy of `sources` and adds its own files after them.
+struct ParsedLibrary {
+    SourceSet sources;
+    std::vector<ast::CompilationUnit> units;
+    std::set<int> files;
+};
+std::unique_ptr<ParsedLibrary> parseLibrary(CompileLog& log);
+
 // Returns null when the project does not compile (errors are in `log`).
+// With `library`, its parsed units are lent to the checker (which does not
+// change them) instead of parsing the standard library again.
 std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
-                                                   const sema::CompileOptions& options = {});
+                                                   const sema::CompileOptions& options = {}, ParsedLibrary* library = nullptr);
 
 }  // namespace strun::project

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "interpreter/project/retain_store.h"
+
 namespace strun::project {
 
 namespace {
@@ -68,6 +70,7 @@ bool TaskRunner::runActivation() {
         if (inv.program)
             for (exec::Stmt* s : inv.program->after) s->exec(c);
     }
+    if (retain_) retain_->saveIfDue();  // between activations: a consistent snapshot of this task
     return true;
 }
 

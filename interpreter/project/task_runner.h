@@ -19,6 +19,8 @@ public:
     bool runActivation() override;
     bool currentPosition(std::string& pou, int& line) const override;
     bool currentFileAndColumn(int& file, int& col) const override;
+    // --retain: the store saved periodically between activations.
+    void setRetainStore(class RetainStore* store) { retain_ = store; }
 
 private:
     void runInitCalls();
@@ -27,6 +29,7 @@ private:
     rt::ReservedMemory stack_;
     rt::ReservedMemory sink_;
     exec::Ctx ctx_;
+    RetainStore* retain_ = nullptr;
 };
 
 }  // namespace strun::project

@@ -719,9 +719,12 @@ void Checker::declareGlobals() {
         }
         if (placed.empty()) return;
         uint8_t* storage = model_.allocate(size);
+        // Every address first: an initialiser may name a later global of the list.
         for (VarSym* v : placed) {
             v->abs = storage + v->offset;
             v->offset = 0;  // an Abs variable's address is `abs` itself
+        }
+        for (VarSym* v : placed) {
             writeDefault(v->abs, v->type);
             if (v->decl->init) writeInitial(v->abs, v->type, v->decl->init.get(), v->decl->loc);
         }

@@ -110,7 +110,12 @@ Checked Checker::checkUnary(const ast::Expr& e) {
         return a;
     }
     if (e.op == ast::Op::Neg) {
-        if (a.untypedInt) { Checked c = constInt(-a.constInt, a.type, e.loc); c.untypedInt = true; return c; }
+        if (a.untypedInt) {
+            // Wrapping negation: -(LINT min) must not be C++ signed overflow.
+            Checked c = constInt(static_cast<int64_t>(uint64_t{0} - static_cast<uint64_t>(a.constInt)), a.type, e.loc);
+            c.untypedInt = true;
+            return c;
+        }
         if (a.isConst && a.type->kind == TK::ULInt && static_cast<uint64_t>(a.constInt) == (uint64_t(1) << 63)) {
             // -9223372036854775808: the magnitude alone only fits ULINT.
             Checked c = constInt(a.constInt, types().elementary(TK::LInt), e.loc);

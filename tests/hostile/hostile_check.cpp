@@ -78,7 +78,7 @@ std::vector<Case> cases() {
          {"check", "@"}, 2, "larger than the limit of 4 MiB", 10, 500},
         {"too_many_tokens",
          [main] { return main + std::string(3000000, ';'); },
-         {"check", "@"}, 1, "more than 1000000 tokens", 20, 1500},
+         {"check", "@"}, 1, "more than 2000000 tokens", 20, 1500},
         {"dev_zero_as_file", [] { return std::string(); }, {"check", "/dev/zero"}, 2, "larger than the limit", 10, 500},
         {"directory_as_file", [] { return std::string(); }, {"check", "/"}, 2, "is a directory", 10, 500},
         {"fb_init_array_10_million",
