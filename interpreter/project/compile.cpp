@@ -4,6 +4,8 @@
 
 #include "interpreter/ast/parse.h"
 #include "interpreter/sema/checker.h"
+#include "interpreter/testing/register_tcunit.h"
+#include "interpreter/testing/test_registry.h"
 #include "stdlib/bind/register_builtins.h"
 #include "stdlib/embedded_sources.h"
 
@@ -23,6 +25,8 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     sema::Checker checker(*model, log);
     checker.setLibraryFiles(libraryFiles);
     stdlib::registerBuiltins(checker);
+    model->tests = std::make_shared<testing::TestRegistry>();
+    testing::registerTcUnit(checker, *model->tests);
     checker.run(units);
     if (log.hasErrors()) return nullptr;
     // The AST is referenced by nothing at run time: all names are resolved.

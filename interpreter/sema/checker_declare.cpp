@@ -440,7 +440,10 @@ void Checker::layoutPou(PouInfo* pou) {
         pou->instanceType = inst;
         if (pou->kind == ast::PouKind::FunctionBlock) instOff = kFbHeader;
         if (!pou->ast->extends.empty() && pou->kind == ast::PouKind::FunctionBlock) {
-            auto it = pous_.find(upper(pou->ast->extends));
+            // EXTENDS Lib.Base: namespaces are flattened, as for type names.
+            std::string base = upper(pou->ast->extends);
+            if (!pous_.count(base) && base.rfind('.') != std::string::npos) base = base.substr(base.rfind('.') + 1);
+            auto it = pous_.find(base);
             if (it == pous_.end() || it->second->kind != ast::PouKind::FunctionBlock) {
                 error(pou->ast->loc, fmt::format("unknown function block '{}' in EXTENDS", pou->ast->extends));
             } else {
