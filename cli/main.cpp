@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "cli/test_command.h"
 #include "interpreter/project/compile.h"
 #include "interpreter/project/dump_json.h"
 #include "interpreter/project/task_runner.h"
@@ -153,6 +154,8 @@ int main(int argc, char** argv) {
         run->add_flag("--realtime", o.realtime, "ask for SCHED_FIFO and locked memory");
         auto* check = app.add_subcommand("check", "compile only; print diagnostics");
         check->add_option("FILE", o.files, "source files")->required();
+        strun::cli::TestCommandOptions testOptions;
+        auto* test = strun::cli::addTestCommand(app, testOptions);
         try {
             app.parse(argc, argv);
         } catch (const CLI::CallForHelp& e) {
@@ -164,6 +167,7 @@ int main(int argc, char** argv) {
             if (what.empty()) what = e.get_name();
             return usage(what);
         }
+        if (test->parsed()) return strun::cli::runTestCommand(testOptions);
         if (run->parsed()) return runCommand(o, true);
         return runCommand(o, false);
     } catch (const std::bad_alloc&) {
