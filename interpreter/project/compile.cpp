@@ -5,6 +5,7 @@
 #include "interpreter/ast/parse.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/testing/register_tcunit.h"
+#include "interpreter/testing/suite_finder.h"
 #include "interpreter/testing/test_registry.h"
 #include "stdlib/bind/register_builtins.h"
 #include "stdlib/embedded_sources.h"
@@ -29,6 +30,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     testing::registerTcUnit(checker, *model->tests);
     checker.run(units);
     if (log.hasErrors()) return nullptr;
+    testing::recordProject(*model, *model->tests);
     // The AST is referenced by nothing at run time: all names are resolved.
     return model;
 }

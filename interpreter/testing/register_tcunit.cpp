@@ -187,8 +187,10 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
             if (!stringInput(ck, a[0], call, "TestName", n->name, n->nameType)) return ck.bad(call.loc);
             // --list names the tests without running them: remember the constant names.
             if (auto* lit = dynamic_cast<exec::ConstBytes*>(n->name); lit && n->nameType->kind == TK::String && ck.currentPouName())
-                reg.staticTests.emplace_back(*ck.currentPouName(), std::string(reinterpret_cast<const char*>(lit->bytes.data()),
-                                                                               strnlen(reinterpret_cast<const char*>(lit->bytes.data()), lit->bytes.size())));
+                reg.staticTests.push_back({*ck.currentPouName(),
+                                           std::string(reinterpret_cast<const char*>(lit->bytes.data()),
+                                                       strnlen(reinterpret_cast<const char*>(lit->bytes.data()), lit->bytes.size())),
+                                           call.loc.file, call.loc.line});
             return result(ck, n, ordered ? TK::Bool : TK::Void, call);
         });
     }

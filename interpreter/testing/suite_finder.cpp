@@ -16,16 +16,16 @@ bool isTestSuite(const sema::PouInfo* pou) {
     return false;
 }
 
-std::vector<const sema::PouInfo*> suiteBlocks(const sema::ProgramModel& model) {
-    std::vector<const sema::PouInfo*> out;
-    for (const auto& p : model.pouStore)
-        if (!p->owner && isTestSuite(p.get()) && !(p->ast && p->ast->abstract)) out.push_back(p.get());
-    return out;
+void recordProject(const sema::ProgramModel& model, TestRegistry& reg) {
+    for (const auto& p : model.pouStore) {
+        if (p->code && p->ast) reg.pouFiles[p->code->name] = p->ast->loc.file;
+        if (!p->owner && isTestSuite(p.get()) && p->ast && !p->ast->abstract) reg.suiteBlocks.push_back(p->name);
+    }
 }
 
-std::string syntheticTestProgram(const std::vector<const sema::PouInfo*>& blocks) {
+std::string syntheticTestProgram(const std::vector<std::string>& blocks) {
     std::string s = std::string("PROGRAM ") + kSyntheticProgramName + "\nVAR\n";
-    for (const auto* b : blocks) s += "  " + b->name + " : " + b->name + ";\n";
+    for (const auto& b : blocks) s += "  " + b + " : " + b + ";\n";
     s += "END_VAR\nRUN();\nEND_PROGRAM\n";
     return s;
 }
@@ -76,8 +76,6 @@ void walk(const Type* t, uint8_t* p, const std::string& name, const std::string&
 
 void collectSuites(sema::ProgramModel& model, TestRegistry& reg) {
     reg.suites.clear();
-    for (const auto& p : model.pouStore)
-        if (p->code && p->ast) reg.pouFiles[p->code->name] = p->ast->loc.file;
     for (auto& prog : model.programs)
         if (prog.pou && prog.pou->instanceType) walkMembers(prog.pou->instanceType, prog.memory, prog.name, reg, 0);
     for (const sema::VarSym* g : model.globals)

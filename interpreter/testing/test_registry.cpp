@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/exec/call_nodes.h"
+#include "stdlib/value_format.h"
 
 namespace strun::testing {
 
@@ -146,6 +147,7 @@ void TestRegistry::recordFailure(Failure f) {
 void TestRegistry::runSuites(exec::Ctx& c, bool inSequence) {
     exec::Site site{&kRunPou, 0};
     capture.machine = c.m;
+    capture.ctx = &c;
     for (size_t k = 0; k < suites.size(); ++k) {
         Suite& s = suites[k];
         if (s.finished()) continue;
@@ -197,7 +199,12 @@ bool FaultCapture::onAttention() {
         TestRegistry& r = registry_;
         if (r.currentSuite >= 0 && r.currentTest >= 0) {
             Failure f;
-            f.fault = fmt::format("WATCHDOG: the test ran longer than the task watchdog ({} ms) in one cycle", r.watchdog / 1000000);
+            if (ctx && ctx->pouName) {
+                auto file = r.pouFiles.find(*ctx->pouName);
+                f.file = file == r.pouFiles.end() ? -1 : file->second;
+                f.line = ctx->stmt ? ctx->stmt->line : 0;
+            }
+            f.fault = fmt::format("WATCHDOG: the test ran longer than the task watchdog ({}) in one cycle", stdlib::formatDuration(r.watchdog));
             r.ignoreCurrent = false;
             r.recordFailure(std::move(f));
             r.suites[static_cast<size_t>(r.currentSuite)].tests[static_cast<size_t>(r.currentTest)].finished = true;

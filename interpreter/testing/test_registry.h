@@ -63,6 +63,7 @@ public:
 
     rt::AttentionHandler* inner = nullptr;
     rt::Machine* machine = nullptr;
+    const exec::Ctx* ctx = nullptr;  // the task context running the suite (the position of a WATCHDOG)
     rt::PlcTime budgetEnd = rt::kNever;
     bool abortedByTest = false;  // the abort unwinding now was caused by a test fault
 
@@ -78,10 +79,15 @@ public:
 
     // ---- filled at compile time
     int runCalls = 0;  // RUN() / RUN_IN_SEQUENCE() calls the checker saw
-    // TEST('name') calls with a constant name, in the order checked: the POU
-    // code name that makes the call ("FB_X" or "FB_X.Method") and the name.
-    std::vector<std::pair<std::string, std::string>> staticTests;
+    // TEST('name') calls with a constant name: the POU code name that makes
+    // the call ("FB_X" or "FB_X.Method"), the name, and where it is written.
+    struct StaticTest {
+        std::string pou, name;
+        int file = 0, line = 0;
+    };
+    std::vector<StaticTest> staticTests;
     std::map<std::string, int> pouFiles;  // POU code name -> source file (fault locations)
+    std::vector<std::string> suiteBlocks;  // FUNCTION_BLOCKs extending FB_TestSuite, not ABSTRACT
 
     // ---- set up by the runner
     std::vector<Suite> suites;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -128,9 +129,14 @@ bool writeJUnit(const TestRegistry& reg, const SourceSet& sources, rt::PlcTime t
 }
 
 void printTestList(const TestRegistry& reg, std::ostream& out) {
+    // In the order they are written (the checker visits methods by name).
+    std::vector<TestRegistry::StaticTest> calls = reg.staticTests;
+    std::stable_sort(calls.begin(), calls.end(), [](const auto& a, const auto& b) { return std::tie(a.file, a.line) < std::tie(b.file, b.line); });
     for (const auto& s : reg.suites) {
         std::vector<std::string> seen;
-        for (const auto& [pou, raw] : reg.staticTests) {
+        for (const auto& call : calls) {
+            const std::string& pou = call.pou;
+            const std::string& raw = call.name;
             // Code names are "Block" and "Block.Method": the call must be in the suite's block or one it extends.
             std::string block = sema::upper(pou.substr(0, pou.find('.')));
             if (std::find(s.blocks.begin(), s.blocks.end(), block) == s.blocks.end()) continue;

@@ -36,7 +36,7 @@ std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const st
         return model;
     }
     std::vector<int> files = userFiles;
-    files.push_back(sources.add("<strun test program>", syntheticTestProgram(suiteBlocks(*model))));
+    files.push_back(sources.add("<strun test program>", syntheticTestProgram(model->tests->suiteBlocks)));
     model = project::compileProject(sources, files, log);
     if (model) collectSuites(*model, *model->tests);
     return model;
