@@ -18,8 +18,14 @@ using sema::Type;
 
 namespace {
 
+// The function's name as written in the call (CallArgs::name is upper case).
+std::string written(const CallArgs& call) {
+    if (call.call && !call.call->kids.empty() && !call.call->kids[0]->name.empty()) return call.call->kids[0]->name;
+    return call.name;
+}
+
 struct Param {
-    const char* name;  // upper case
+    const char* name;  // as TcUnit spells it; matched in any case
     bool required;
 };
 
@@ -35,26 +41,26 @@ bool bindArgs(Checker& ck, CallArgs& call, std::initializer_list<Param> params, 
     for (size_t k = 0; k < call.args.size(); ++k) {
         const ast::Arg& a = call.call->args[k];
         if (a.output) {
-            ck.error(a.loc, fmt::format("'{}' has no output '{}'", call.name, a.name));
+            ck.error(a.loc, fmt::format("'{}' has no output '{}'", written(call), a.name));
             return false;
         }
         size_t idx = n;
         if (call.names[k].empty()) {
             idx = positional++;
             if (idx >= n) {
-                ck.error(call.loc, fmt::format("too many arguments for '{}' (it takes {})", call.name, n));
+                ck.error(call.loc, fmt::format("too many arguments for '{}' (it takes {})", written(call), n));
                 return false;
             }
         } else {
             for (size_t j = 0; j < n; ++j)
-                if (call.names[k] == p[j].name) idx = j;
+                if (call.names[k] == sema::upper(p[j].name)) idx = j;
             if (idx == n) {
-                ck.error(a.loc, fmt::format("'{}' has no parameter '{}'", call.name, a.name));
+                ck.error(a.loc, fmt::format("'{}' has no parameter '{}'", written(call), a.name));
                 return false;
             }
         }
         if (given[idx]) {
-            ck.error(a.loc, fmt::format("parameter '{}' of '{}' given twice", p[idx].name, call.name));
+            ck.error(a.loc, fmt::format("parameter '{}' of '{}' given twice", p[idx].name, written(call)));
             return false;
         }
         given[idx] = true;
@@ -62,7 +68,7 @@ bool bindArgs(Checker& ck, CallArgs& call, std::initializer_list<Param> params, 
     }
     for (size_t j = 0; j < n; ++j)
         if (p[j].required && !given[j]) {
-            ck.error(call.loc, fmt::format("'{}' needs the input '{}'", call.name, p[j].name));
+            ck.error(call.loc, fmt::format("'{}' needs the input '{}'", written(call), p[j].name));
             return false;
         }
     return true;
@@ -83,7 +89,7 @@ Checked result(Checker& ck, Expr* node, TK kind, const CallArgs& call) {
 bool stringInput(Checker& ck, const Checked& a, const CallArgs& call, const char* what, Expr*& node, const Type*& type) {
     if (!a.ok) return true;  // not given: ''
     if (!a.type || !sema::isStringType(a.type->kind)) {
-        ck.error(a.loc, fmt::format("{}: {} must be a STRING, not {}", call.name, what, sema::typeName(a.type)));
+        ck.error(a.loc, fmt::format("{}: {} must be a STRING, not {}", written(call), what, sema::typeName(a.type)));
         return false;
     }
     node = a.node;
@@ -93,7 +99,7 @@ bool stringInput(Checker& ck, const Checked& a, const CallArgs& call, const char
 
 bool deltaInput(Checker& ck, const Checked& a, const Type* t, const CallArgs& call, Expr*& node) {
     if (!a.ok) return true;
-    Checked d = ck.coerce(a, ck.types().elementary(t && t->kind == TK::Real ? TK::Real : TK::LReal), a.loc, call.name.c_str());
+    Checked d = ck.coerce(a, ck.types().elementary(t && t->kind == TK::Real ? TK::Real : TK::LReal), a.loc, written(call).c_str());
     if (!d.ok) return false;
     node = d.node;
     return true;
@@ -127,14 +133,14 @@ bool assertCommon(Checker& ck, TestRegistry& reg, CallArgs& call, const Checked&
 bool typedOperand(Checker& ck, const Checked& a, TK kind, const CallArgs& call, Operand& out) {
     if (kind == TK::String || kind == TK::WString) {
         if (!a.type || a.type->kind != kind) {
-            ck.error(a.loc, fmt::format("{}: expected a {}, not {}", call.name, kind == TK::String ? "STRING" : "WSTRING", sema::typeName(a.type)));
+            ck.error(a.loc, fmt::format("{}: expected a {}, not {}", written(call), kind == TK::String ? "STRING" : "WSTRING", sema::typeName(a.type)));
             return false;
         }
         out.e = a.node;
         out.t = a.type;
         return true;
     }
-    Checked c = ck.coerce(a, ck.types().elementary(kind), a.loc, call.name.c_str());
+    Checked c = ck.coerce(a, ck.types().elementary(kind), a.loc, written(call).c_str());
     if (!c.ok) return false;
     out.e = c.node;
     out.t = c.node->type ? c.node->type : c.type;
@@ -146,26 +152,26 @@ bool typedOperand(Checker& ck, const Checked& a, TK kind, const CallArgs& call, 
 bool arrayOperand(Checker& ck, const Checked& a, TK kind, size_t dims, const CallArgs& call, ArrayOperand& out, const Type*& elem) {
     const Type* t = a.type;
     if (!t || t->kind != TK::Array || !t->elem || t->elem->kind != kind) {
-        ck.error(a.loc, fmt::format("{}: expected an ARRAY of {}, not {}", call.name, sema::typeName(ck.types().elementary(kind)), sema::typeName(t)));
+        ck.error(a.loc, fmt::format("{}: expected an ARRAY of {}, not {}", written(call), sema::typeName(ck.types().elementary(kind)), sema::typeName(t)));
         return false;
     }
     if (kind == TK::String || kind == TK::WString) {
         if (elem && elem->maxLen != t->elem->maxLen) {
-            ck.error(a.loc, fmt::format("{}: the arrays' string lengths differ", call.name));
+            ck.error(a.loc, fmt::format("{}: the arrays' string lengths differ", written(call)));
             return false;
         }
     }
     elem = t->elem;
     if (t->flexible) {
         if (!a.flexDesc) {
-            ck.error(a.loc, fmt::format("{}: this ARRAY[*] cannot be compared here", call.name));
+            ck.error(a.loc, fmt::format("{}: this ARRAY[*] cannot be compared here", written(call)));
             return false;
         }
         out.desc = a.flexDesc;
         return true;
     }
     if (t->dims.size() != dims) {
-        ck.error(a.loc, fmt::format("{}: expected a {}-dimensional array, not {}", call.name, dims, sema::typeName(t)));
+        ck.error(a.loc, fmt::format("{}: expected a {}-dimensional array, not {}", written(call), dims, sema::typeName(t)));
         return false;
     }
     out.place = a.node;
@@ -180,7 +186,7 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
     for (bool ordered : {false, true}) {
         ck.addBuiltin(ordered ? "TEST_ORDERED" : "TEST", [&reg, ordered](Checker& ck, CallArgs& call) -> Checked {
             std::vector<Checked> a;
-            if (!bindArgs(ck, call, {{"TESTNAME", true}}, a)) return ck.bad(call.loc);
+            if (!bindArgs(ck, call, {{"TestName", true}}, a)) return ck.bad(call.loc);
             auto* n = ck.pool().make<BeginTestNode>();
             n->reg = &reg;
             n->ordered = ordered;
@@ -204,7 +210,7 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
     for (bool query : {false, true}) {
         ck.addBuiltin(query ? "IS_TEST_FINISHED" : "TEST_FINISHED_NAMED", [&reg, query](Checker& ck, CallArgs& call) -> Checked {
             std::vector<Checked> a;
-            if (!bindArgs(ck, call, {{"TESTNAME", true}}, a)) return ck.bad(call.loc);
+            if (!bindArgs(ck, call, {{"TestName", true}}, a)) return ck.bad(call.loc);
             Expr* name = nullptr;
             const Type* type = nullptr;
             if (!stringInput(ck, a[0], call, "TestName", name, type)) return ck.bad(call.loc);
@@ -235,7 +241,7 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
     }
     ck.addBuiltin("TCUNIT_ADSLOGSTR", [](Checker& ck, CallArgs& call) -> Checked {
         std::vector<Checked> a;
-        if (!bindArgs(ck, call, {{"MSGCTRLMASK", false}, {"MSGFMTSTR", true}, {"STRARG", false}}, a)) return ck.bad(call.loc);
+        if (!bindArgs(ck, call, {{"msgCtrlMask", false}, {"msgFmtStr", true}, {"strArg", false}}, a)) return ck.bad(call.loc);
         auto* n = ck.pool().make<AdsLogNode>();
         if (!stringInput(ck, a[1], call, "msgFmtStr", n->format, n->formatType) ||
             !stringInput(ck, a[2], call, "strArg", n->arg, n->argType))
@@ -248,10 +254,10 @@ void registerAssertions(Checker& ck, TestRegistry& reg) {
     for (bool expected : {true, false}) {
         ck.addBuiltin(expected ? "ASSERTTRUE" : "ASSERTFALSE", [&reg, expected](Checker& ck, CallArgs& call) -> Checked {
             std::vector<Checked> a;
-            if (!bindArgs(ck, call, {{"CONDITION", true}, {"MESSAGE", false}}, a)) return ck.bad(call.loc);
+            if (!bindArgs(ck, call, {{"Condition", true}, {"Message", false}}, a)) return ck.bad(call.loc);
             auto* n = ck.pool().make<AssertConditionNode>();
             if (!assertCommon(ck, reg, call, a[1], n)) return ck.bad(call.loc);
-            Checked cond = ck.coerce(a[0], ck.types().elementary(TK::Bool), a[0].loc, call.name.c_str());
+            Checked cond = ck.coerce(a[0], ck.types().elementary(TK::Bool), a[0].loc, written(call).c_str());
             if (!cond.ok) return ck.bad(call.loc);
             n->condition = cond.node;
             n->expected = expected;
@@ -261,7 +267,7 @@ void registerAssertions(Checker& ck, TestRegistry& reg) {
     // AssertEquals(Expected, Actual, Message): any type; compared by type class, size and bytes.
     ck.addBuiltin("ASSERTEQUALS", [&reg](Checker& ck, CallArgs& call) -> Checked {
         std::vector<Checked> a;
-        if (!bindArgs(ck, call, {{"EXPECTED", true}, {"ACTUAL", true}, {"MESSAGE", false}}, a)) return ck.bad(call.loc);
+        if (!bindArgs(ck, call, {{"Expected", true}, {"Actual", true}, {"Message", false}}, a)) return ck.bad(call.loc);
         auto* n = ck.pool().make<AssertEqualsNode>();
         if (!assertCommon(ck, reg, call, a[2], n)) return ck.bad(call.loc);
         Checked& e = a[0];
@@ -269,15 +275,15 @@ void registerAssertions(Checker& ck, TestRegistry& reg) {
         // An untyped literal takes the other side's type (decision 0140).
         bool eLit = e.untypedInt || e.untypedReal || e.flexibleLiteral;
         bool vLit = v.untypedInt || v.untypedReal || v.flexibleLiteral;
-        if (eLit && !vLit && v.type && sema::isElementary(v.type->kind)) e = ck.coerce(e, v.type, e.loc, call.name.c_str());
-        else if (vLit && !eLit && e.type && sema::isElementary(e.type->kind)) v = ck.coerce(v, e.type, v.loc, call.name.c_str());
+        if (eLit && !vLit && v.type && sema::isElementary(v.type->kind)) e = ck.coerce(e, v.type, e.loc, written(call).c_str());
+        else if (vLit && !eLit && e.type && sema::isElementary(e.type->kind)) v = ck.coerce(v, e.type, v.loc, written(call).c_str());
         if (!e.ok || !v.ok) return ck.bad(call.loc);
         e = ck.settle(e);
         v = ck.settle(v);
         for (Checked* x : {&e, &v}) {
             TK k = x->type ? x->type->kind : TK::Void;
             if (k == TK::Void) {
-                ck.error(x->loc, fmt::format("{}: this argument has no value", call.name));
+                ck.error(x->loc, fmt::format("{}: this argument has no value", written(call)));
                 return ck.bad(call.loc);
             }
         }
@@ -291,8 +297,8 @@ void registerAssertions(Checker& ck, TestRegistry& reg) {
         const bool real = k == TK::Real || k == TK::LReal;
         ck.addBuiltin(std::string("ASSERTEQUALS_") + typeName, [&reg, k, real](Checker& ck, CallArgs& call) -> Checked {
             std::vector<Checked> a;
-            bool ok = real ? bindArgs(ck, call, {{"EXPECTED", true}, {"ACTUAL", true}, {"DELTA", false}, {"MESSAGE", false}}, a)
-                           : bindArgs(ck, call, {{"EXPECTED", true}, {"ACTUAL", true}, {"MESSAGE", false}}, a);
+            bool ok = real ? bindArgs(ck, call, {{"Expected", true}, {"Actual", true}, {"Delta", false}, {"Message", false}}, a)
+                           : bindArgs(ck, call, {{"Expected", true}, {"Actual", true}, {"Message", false}}, a);
             if (!ok) return ck.bad(call.loc);
             auto* n = ck.pool().make<AssertEqualsNode>();
             if (!assertCommon(ck, reg, call, a[real ? 3 : 2], n)) return ck.bad(call.loc);
@@ -305,8 +311,8 @@ void registerAssertions(Checker& ck, TestRegistry& reg) {
             std::string name = dims == 1 ? "ASSERTARRAYEQUALS_" : fmt::format("ASSERTARRAY{}DEQUALS_", dims);
             ck.addBuiltin(name + typeName, [&reg, k, real, dims](Checker& ck, CallArgs& call) -> Checked {
                 std::vector<Checked> a;
-                bool ok = real ? bindArgs(ck, call, {{"EXPECTEDS", true}, {"ACTUALS", true}, {"DELTA", false}, {"MESSAGE", false}}, a)
-                               : bindArgs(ck, call, {{"EXPECTEDS", true}, {"ACTUALS", true}, {"MESSAGE", false}}, a);
+                bool ok = real ? bindArgs(ck, call, {{"Expecteds", true}, {"Actuals", true}, {"Delta", false}, {"Message", false}}, a)
+                               : bindArgs(ck, call, {{"Expecteds", true}, {"Actuals", true}, {"Message", false}}, a);
                 if (!ok) return ck.bad(call.loc);
                 auto* n = ck.pool().make<AssertArrayNode>();
                 if (!assertCommon(ck, reg, call, a[real ? 3 : 2], n)) return ck.bad(call.loc);
