@@ -101,6 +101,12 @@ int64_t AssertEqualsNode::i(Ctx& c) {
         d = delta->f(c);
         dp = &d;
     }
+    if (te->kind == TK::WString && ta->kind == TK::WString && (!generic || stringLength(te, pe) == stringLength(ta, pa))) {
+        // TcUnit does not print WSTRING values (its log is ASCII): these are its texts.
+        if (!sameValue(te, pe, ta, pa, nullptr))
+            fail(c, "Not possible to print EXP unicode WSTRING value", "Not possible to print ACT unicode WSTRING value");
+        return 0;
+    }
     if (!generic) {
         if (!sameValue(te, pe, ta, pa, dp)) fail(c, assertText(te, pe), assertText(ta, pa));
         return 0;
