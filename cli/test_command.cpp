@@ -108,7 +108,9 @@ int runTestCommand(const TestCommandOptions& o) {
         testing::printTestList(reg, std::cout);
         return kExitOk;
     }
-    if (reg.suites.empty()) std::cerr << "strun: warning: no test suite (a FUNCTION_BLOCK that EXTENDS FB_TestSuite) is instantiated\n";
+    if (reg.suites.empty())
+        std::cerr << "strun: warning: no test suite runs: declare instances of FUNCTION_BLOCKs that EXTEND FB_TestSuite "
+                     "in a PROGRAM that calls RUN() (or have no RUN() and no CONFIGURATION)\n";
     testing::TestRunResult result = testing::runTests(*model, run, o.filter);
     testing::TestCounts counts = testing::printResults(reg, sources, std::cout);
     std::cout.flush();
