@@ -2,28 +2,32 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
-#include <CLI/CLI.hpp>
-
+#include "cli/commands.h"
+#include "cli/exit_codes.h"
+#include "cli/option_types.h"
+#include "cli/source_files.h"
 #include "interpreter/testing/test_registry.h"
 #include "interpreter/testing/test_report.h"
 #include "interpreter/testing/test_session.h"
-#include "stdlib/time_literals.h"
+#include "runtime/plc_profile.h"
 
 namespace strun::cli {
 
 namespace {
 
-constexpr int kExitOk = 0;
-constexpr int kExitFailed = 1;
-constexpr int kExitUsage = 2;
+constexpr int64_t kDefaultTimeout = 10'000'000'000LL;  // T#10s (contract)
 
 int usage(const std::string& message) {
     std::cerr << "strun: " << message << "\n";
     return kExitUsage;
+}
+
+// The text already passed durationValidator().
+int64_t validatedDuration(const std::string& text) {
+    std::string unused;
+    return parseDuration(text, unused).value_or(0);
 }
 
 bool isProjectFile(const std::filesystem::path& p) {
@@ -48,6 +52,10 @@ bool expandPaths(const std::vector<std::string>& paths, std::vector<std::string>
                 return false;
             }
             std::sort(found.begin(), found.end());
+            if (found.empty()) {
+                error = "no source files (.st, .xml, .TcPOU, .TcDUT, .TcGVL, .TcIO) under '" + path + "'";
+                return false;
+            }
             files.insert(files.end(), found.begin(), found.end());
         } else if (fs::exists(path, ec)) {
             files.push_back(path);
@@ -59,66 +67,61 @@ bool expandPaths(const std::vector<std::string>& paths, std::vector<std::string>
     return true;
 }
 
-CLI::App* addTestCommand(CLI::App& app, TestCommandOptions& o) {
-    auto* test = app.add_subcommand("test", "run the unit tests (TcUnit / CfUnit API) of the project");
-    test->add_option("FILE", o.paths, "source files or directories")->required();
-    test->add_option("--stmt-cost", o.stmtCost, "virtual time one executed statement costs (default 1us)");
-    test->add_option("--timeout", o.timeout, "PLC time after which unfinished tests fail (default T#10s)");
-    test->add_option("--junit", o.junit, "also write a JUnit XML report to FILE");
-    test->add_option("--filter", o.filter, "run only the tests whose Suite.Test matches PATTERN (* and ? wildcards)");
-    test->add_flag("--list", o.list, "print the tests without running them");
-    return test;
+CLI::App* addTestCommand(CLI::App& app, CommandLine& line, TestCommandLine& test) {
+    CLI::App* cmd = app.add_subcommand("test", "run the unit tests (TcUnit / CfUnit API) of the project");
+    cmd->add_option("FILE", test.paths, "the source files of the project, or directories holding them")->required()->type_name("FILE|DIR");
+    addCompileOptions(*cmd, line);
+    cmd->add_option_function<std::string>(
+           "--stmt-cost", [&test](const std::string& text) { test.stmtCost = validatedDuration(text); },
+           "virtual time one executed statement costs (default 1us)")
+        ->transform(durationValidator())
+        ->type_name("DURATION");
+    cmd->add_option_function<std::string>(
+           "--timeout", [&test](const std::string& text) { test.timeout = validatedDuration(text); },
+           "PLC time after which unfinished tests fail with `timeout` (default T#10s)")
+        ->transform(durationValidator())
+        ->type_name("DURATION");
+    cmd->add_option("--junit", test.junit, "also write a JUnit XML report to FILE")->type_name("FILE");
+    cmd->add_option("--filter", test.filter, "run only the tests whose Suite.Test matches PATTERN (* and ? wildcards)")->type_name("PATTERN");
+    cmd->add_flag("--list", test.list, "print the tests the suites declare without running them");
+    return cmd;
 }
 
-int runTestCommand(const TestCommandOptions& o) {
+int testCommand(const CommandLine& line, const TestCommandLine& test) {
     rt::RunOptions run;
     run.virtualClock = true;
-    run.stmtCost = 1000;
-    if (!o.stmtCost.empty()) {
-        auto r = stdlib::parseDurationLiteral(o.stmtCost);
-        if (!r || r.value() < 0) return usage("--stmt-cost: '" + o.stmtCost + "' is not a duration (e.g. 1us, T#2us)");
-        run.stmtCost = r.value();
-    }
-    run.duration = 10'000'000'000LL;
-    if (!o.timeout.empty()) {
-        auto r = stdlib::parseDurationLiteral(o.timeout);
-        if (!r || r.value() <= 0) return usage("--timeout: '" + o.timeout + "' is not a positive duration (e.g. T#10s, 500ms)");
-        run.duration = r.value();
-    }
+    run.stmtCost = test.stmtCost.value_or(1000);
+    run.duration = test.timeout.value_or(kDefaultTimeout);
+    if (*run.duration <= 0) return usage("--timeout: the timeout must be longer than 0");
+    run.profile = rt::findProfile(line.compile.target);
+
     std::vector<std::string> files;
-    std::string err;
-    if (!expandPaths(o.paths, files, err)) return usage(err);
-    if (files.empty()) return usage("no source files found in the given directories");
+    std::string error;
+    if (!expandPaths(test.paths, files, error)) return usage(error);
     SourceSet sources;
     std::vector<int> indices;
-    for (const auto& f : files) {
-        std::ifstream in(f, std::ios::binary);
-        if (!in) return usage("cannot open '" + f + "'");
-        std::stringstream ss;
-        ss << in.rdbuf();
-        indices.push_back(sources.add(f, ss.str()));
-    }
+    if (!readSourceFiles(files, sources, indices, error)) return usage(error);
     CompileLog log;
-    auto model = testing::compileForTests(sources, indices, log);
+    auto model = testing::compileForTests(sources, indices, log, line.compile);
     log.print(std::cerr, sources);
-    if (!model) return kExitFailed;
+    if (!model) return kExitCompile;
     testing::TestRegistry& reg = *model->tests;
-    reg.filter = o.filter;
-    if (o.list) {
+    reg.filter = test.filter;
+    if (test.list) {
         testing::printTestList(reg, std::cout);
         return kExitOk;
     }
     if (reg.suites.empty())
         std::cerr << "strun: warning: no test suite runs: declare instances of FUNCTION_BLOCKs that EXTEND FB_TestSuite "
                      "in a PROGRAM that calls RUN() (or have no RUN() and no CONFIGURATION)\n";
-    testing::TestRunResult result = testing::runTests(*model, run, o.filter);
+    testing::TestRunResult result = testing::runTests(*model, run, test.filter);
     testing::TestCounts counts = testing::printResults(reg, sources, std::cout);
     std::cout.flush();
-    if (!o.junit.empty() && !testing::writeJUnit(reg, sources, result.endTime, o.junit, err)) {
-        std::cerr << "strun: --junit: " << err << "\n";
-        return kExitFailed;
+    if (!test.junit.empty() && !testing::writeJUnit(reg, sources, result.endTime, test.junit, error)) {
+        std::cerr << "strun: --junit: " << error << "\n";
+        return kExitCompile;
     }
-    return counts.failed == 0 ? kExitOk : kExitFailed;
+    return counts.failed == 0 ? kExitOk : kExitCompile;
 }
 
 }  // namespace strun::cli

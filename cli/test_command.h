@@ -1,28 +1,31 @@
-// `strun test [options] FILE...|DIR`: runs the TcUnit / CfUnit unit tests of a
+// strun test [options] FILE...|DIR: runs the TcUnit / CfUnit unit tests of a
 // project (contract "Tests: strun test"; docs/testing.md).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
-namespace CLI { class App; }
+#include <CLI/CLI.hpp>
+
+#include "cli/command_line.h"
 
 namespace strun::cli {
 
-struct TestCommandOptions {
-    std::vector<std::string> paths;
-    std::string stmtCost;
-    std::string timeout;
-    std::string junit;
-    std::string filter;
-    bool list = false;
+// What `test` takes besides the compile options of CommandLine.
+struct TestCommandLine {
+    std::vector<std::string> paths;     // FILEs and DIRs
+    std::optional<int64_t> stmtCost;    // --stmt-cost, ns
+    std::optional<int64_t> timeout;     // --timeout, ns
+    std::string junit;                  // --junit FILE
+    std::string filter;                 // --filter PATTERN
+    bool list = false;                  // --list
 };
 
-// Declares the subcommand and its options on `app`; returns it.
-CLI::App* addTestCommand(CLI::App& app, TestCommandOptions& options);
+CLI::App* addTestCommand(CLI::App& app, CommandLine& line, TestCommandLine& test);
 
 // Exit status: 0 every test passed, 1 a test failed or the project does not compile, 2 bad command line.
-int runTestCommand(const TestCommandOptions& options);
+int testCommand(const CommandLine& line, const TestCommandLine& test);
 
 // The files a DIR stands for: every .st, .xml, .TcPOU, .TcDUT, .TcGVL, .TcIO
 // under it, recursively, in path order. A FILE stands for itself. False (with

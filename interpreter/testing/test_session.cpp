@@ -27,9 +27,10 @@ private:
 
 }  // namespace
 
-std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log) {
+std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
+                                                    const sema::CompileOptions& options) {
     CompileLog first;
-    auto model = project::compileProject(sources, userFiles, first);
+    auto model = project::compileProject(sources, userFiles, first, options);
     if (!model || model->tests->runCalls > 0) {
         log = first;
         if (model) collectSuites(*model, *model->tests);
@@ -37,7 +38,7 @@ std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const st
     }
     std::vector<int> files = userFiles;
     files.push_back(sources.add("<strun test program>", syntheticTestProgram(model->tests->suiteBlocks)));
-    model = project::compileProject(sources, files, log);
+    model = project::compileProject(sources, files, log, options);
     if (model) collectSuites(*model, *model->tests);
     return model;
 }

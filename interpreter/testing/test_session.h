@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "interpreter/sema/compile_options.h"
 #include "interpreter/sema/program_model.h"
 #include "interpreter/source/source_set.h"
 #include "runtime/scheduler.h"
@@ -19,7 +20,8 @@ class TestRegistry;
 // Compiles `userFiles` as one project for testing; null when it does not
 // compile. When no POU calls RUN() / RUN_IN_SEQUENCE(), compiles again with
 // one more PROGRAM that instantiates every suite block and calls RUN().
-std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log);
+std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
+                                                    const sema::CompileOptions& options = {});
 
 struct TestRunResult {
     rt::PlcState state = rt::PlcState::Run;
