@@ -480,11 +480,9 @@ int checkOne(const std::string& strun, const std::string& programPath) {
         if (!difference.empty()) failures.push_back(difference);
     }
     if (ranToEnd && expectedOut) {
-        // `$FILE` in a .out line stands for the program's path as passed to strun.
+        // `{file}` in a .out line stands for the program's path as passed to strun (as in the args).
         std::vector<std::string> expected = expectedTraceLines(*expectedOut);
-        for (auto& l : expected)
-            for (size_t at = l.find("$FILE"); at != std::string::npos; at = l.find("$FILE", at + programPath.size()))
-                l.replace(at, 5, programPath);
+        for (auto& l : expected) l = expandTokens(l, programPath);
         const std::string difference = traceDifference(expected, splitLines(run.out), 3, "stdout");
         if (!difference.empty()) failures.push_back(difference);
     }
@@ -667,7 +665,7 @@ int selfTest() {
         }
     }
     {
-        // A .out expectation: exact stdout of `strun test`, $FILE standing for the program path.
+        // A .out expectation: exact stdout of `strun test`, {file} standing for the program path.
         char dirTemplate[] = "/tmp/conformance_selftest_XXXXXX";
         if (const char* dir = mkdtemp(dirTemplate)) {
             const std::string d = dir;
@@ -676,9 +674,9 @@ int selfTest() {
             chmod((d + "/fake_strun").c_str(), 0755);
             const char* head = "(* strun-test\n   args: test\n   exit: 1\n*)\n";
             write(d + "/good.st", head);
-            write(d + "/good.out", "FAIL S.T: $FILE:3: EXP: 1, ACT: 2, MSG: m\n0 passed, 1 failed\n\n");
+            write(d + "/good.out", "FAIL S.T: {file}:3: EXP: 1, ACT: 2, MSG: m\n0 passed, 1 failed\n\n");
             write(d + "/bad.st", head);
-            write(d + "/bad.out", "FAIL S.T: $FILE:3: EXP: 1, ACT: 3, MSG: m\n0 passed, 1 failed\n");
+            write(d + "/bad.out", "FAIL S.T: {file}:3: EXP: 1, ACT: 3, MSG: m\n0 passed, 1 failed\n");
             write(d + "/run.st", "PROGRAM Main END_PROGRAM\n");
             write(d + "/run.out", "x\n");
             std::ostringstream quiet;
@@ -689,7 +687,7 @@ int selfTest() {
             const int run = checkOne(d + "/fake_strun", d + "/run.st");
             std::cout.rdbuf(saved);
             std::cerr.rdbuf(savedErr);
-            expect(good == 0, "a matching .out passes ($FILE replaced, trailing blank lines ignored)");
+            expect(good == 0, "a matching .out passes ({file} replaced, trailing blank lines ignored)");
             expect(bad == 1 && quiet.str().find("stdout differs at line 1") != std::string::npos, "a differing .out fails and names the line");
             expect(run == 2, "a .out with a command other than test is a malformed test");
             for (const char* f : {"fake_strun", "good.st", "good.out", "bad.st", "bad.out", "run.st", "run.out"}) unlink((d + "/" + f).c_str());
