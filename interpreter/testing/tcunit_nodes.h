@@ -27,7 +27,15 @@ struct BeginTestNode final : Expr {
     const sema::Type* nameType = nullptr;
     bool ordered = false;
     std::string scratch;
-    int64_t i(Ctx& c) override { return reg->beginTest(stringArg(name, nameType, c, scratch), ordered, c.m->now); }
+    std::vector<int> hints;  // per suite: the index of the test this call registered (sized at the first call)
+    int64_t i(Ctx& c) override {
+        int* hint = nullptr;
+        if (reg->currentSuite >= 0) {
+            if (hints.size() != reg->suites.size()) hints.assign(reg->suites.size(), -1);
+            hint = &hints[static_cast<size_t>(reg->currentSuite)];
+        }
+        return reg->beginTest(stringArg(name, nameType, c, scratch), ordered, c.m->now, hint);
+    }
 };
 
 struct FinishTestNode final : Expr {

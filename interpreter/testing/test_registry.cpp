@@ -63,7 +63,7 @@ bool TestRegistry::selected(const Suite& s, const std::string& test) const {
     return globMatch(filter, s.name + "." + test) || globMatch(filter, s.path + "." + test);
 }
 
-bool TestRegistry::beginTest(std::string_view rawName, bool ordered, rt::PlcTime now) {
+bool TestRegistry::beginTest(std::string_view rawName, bool ordered, rt::PlcTime now, int* hint) {
     currentTest = -1;
     ignoreCurrent = true;
     if (currentSuite < 0) return false;
@@ -72,8 +72,12 @@ bool TestRegistry::beginTest(std::string_view rawName, bool ordered, rt::PlcTime
     bool disabled = startsWithNoCase(name, "disabled_");
     if (disabled) name.remove_prefix(9);
     int index = -1;
-    for (size_t k = 0; k < s.tests.size(); ++k)
-        if (s.tests[k].name == name) index = static_cast<int>(k);
+    if (hint && *hint >= 0 && static_cast<size_t>(*hint) < s.tests.size() && s.tests[static_cast<size_t>(*hint)].name == name) {
+        index = *hint;  // the usual case: this TEST() call site registered it
+    } else {
+        for (size_t k = 0; k < s.tests.size(); ++k)
+            if (s.tests[k].name == name) index = static_cast<int>(k);
+    }
     if (index < 0) {
         TestCase t;
         t.name = std::string(name);
@@ -90,6 +94,7 @@ bool TestRegistry::beginTest(std::string_view rawName, bool ordered, rt::PlcTime
     TestCase& t = s.tests[static_cast<size_t>(index)];
     t.lastCycle = s.cycles;
     currentTest = index;
+    if (hint) *hint = index;
     if (t.skipped || t.finished) return false;
     if (t.order > 0) {
         // TEST_ORDERED: its turn once every ordered test before it finished.
@@ -226,7 +231,8 @@ void FaultCapture::onFault(rt::DiagCode code, std::string_view pou, int line, st
     }
     TestCase& t = r.suites[static_cast<size_t>(r.currentSuite)].tests[static_cast<size_t>(r.currentTest)];
     if (t.skipped) {
-        inner->onFault(code, pou, line, std::move(message));
+        // A disabled test's code still runs (as in TcUnit); its faults count for nothing.
+        if (code == rt::DiagCode::CallDepth) abortedByTest = true;
         return;
     }
     Failure f;

@@ -96,8 +96,9 @@ public:
 
     // ---- the API (called by the nodes)
     // TEST / TEST_ORDERED: makes `name` the current test; for TEST_ORDERED
-    // returns whether it is its turn.
-    bool beginTest(std::string_view name, bool ordered, rt::PlcTime now);
+    // returns whether it is its turn. `hint` (per call site and suite) caches
+    // the test's index so that the usual call finds it without a search.
+    bool beginTest(std::string_view name, bool ordered, rt::PlcTime now, int* hint = nullptr);
     bool finishCurrent(rt::PlcTime now);
     bool finishNamed(std::string_view name, rt::PlcTime now);
     bool isFinished(std::string_view name) const;
