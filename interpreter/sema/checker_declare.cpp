@@ -35,6 +35,13 @@ Checker::Checker(ProgramModel& model, CompileLog& log) : model_(model), log_(log
 void Checker::collect(ast::CompilationUnit& unit) {
     for (auto& t : unit.types) {
         std::string key = upper(t.name);
+        auto known = typeDecls_.find(key);
+        if (known != typeDecls_.end() && libraryFiles_.count(known->second->loc.file) && !libraryFiles_.count(t.loc.file)) {
+            // A user type named like a library one (an own T_MaxString, say) replaces it.
+            known->second = &t;
+            addNamespacePath(namespaces_, t.nameSpace);
+            continue;
+        }
         if (typeDecls_.count(key) || types().byName(key)) {
             error(t.nameLoc.line ? t.nameLoc : t.loc, fmt::format("duplicate type name '{}'", t.name));
             continue;
