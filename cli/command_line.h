@@ -26,6 +26,8 @@ struct CommandLine {
     bool trace = false;
     bool realtime = false;
     bool quiet = false;
+    std::vector<std::string> sets;           // --set NAME=VALUE[@TIME], in the order given
+    std::vector<std::string> stimulusFiles;  // --stimulus FILE
 };
 
 }  // namespace strun::cli

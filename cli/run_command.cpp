@@ -9,6 +9,8 @@
 #include "cli/compile_step.h"
 #include "cli/exit_codes.h"
 #include "cli/option_types.h"
+#include "cli/stimulus_args.h"
+#include "interpreter/project/stimulus_build.h"
 #include "interpreter/project/dump_json.h"
 #include "interpreter/project/task_runner.h"
 #include "runtime/plc_profile.h"
@@ -85,6 +87,14 @@ CLI::App* addRunCommand(CLI::App& app, CommandLine& line) {
     run->add_flag("--dump", line.dump, "when the run stops, print the final state as one JSON object on stdout");
     run->add_flag("--trace", line.trace, "print task events with PLC time on stderr");
     run->add_flag("--realtime", line.realtime, "ask for SCHED_FIFO and locked memory (real clock)");
+    run->add_option("--set", line.sets,
+                    "at PLC time TIME (default 0) write the ST literal VALUE to a variable or direct input (repeatable)")
+        ->type_name("NAME=VALUE[@TIME]")
+        ->allow_extra_args(false);  // one value per --set: FILEs follow
+    run->add_option("--stimulus", line.stimulusFiles, "a CSV file of TIME,NAME,VALUE lines: many --set at once")
+        ->check(readableFileValidator())
+        ->type_name("FILE")
+        ->allow_extra_args(false);
     return run;
 }
 
@@ -106,6 +116,19 @@ int runCommand(const CommandLine& line) {
     } else if (!specs.empty()) {
         run.cyclesTask = specs.front().name;  // MainTask without a CONFIGURATION, else the first TASK declared
     }
+    // Stimulus: every name and value is checked before anything runs.
+    std::vector<project::StimulusEntry> entries;
+    for (const std::string& text : line.sets) {
+        project::StimulusEntry entry;
+        if (!parseSetOption(text, entry, error)) return usage(error);
+        entries.push_back(std::move(entry));
+    }
+    for (const std::string& file : line.stimulusFiles)
+        if (!readStimulusFile(file, entries, error)) return usage(error);
+    rt::Stimulus stimulus;
+    if (!project::buildStimulus(model, entries, stimulus, error)) return usage(error);
+    if (!stimulus.empty()) run.stimulus = &stimulus;
+
     std::vector<std::unique_ptr<project::TaskRunner>> runners;
     std::vector<rt::TaskBody*> bodies;
     for (const auto& t : model.tasks) {

@@ -257,6 +257,7 @@ PlcTime Scheduler::calendarToPlc(int64_t calendar) const {
 void Scheduler::processDue() {
     PlcTime now = machine_.now;
     if (earliestRelease_ <= now) {
+        if (options_.stimulus) options_.stimulus->applyInputsDue(now, options_.trace);
         for (;;) {
             TaskRun* due = nullptr;
             for (TaskRun& task : tasks_)
@@ -289,6 +290,8 @@ void Scheduler::scheduleNext(TaskRun& task) {
 void Scheduler::recomputeEarliestRelease() {
     earliestRelease_ = kNever;
     for (const TaskRun& task : tasks_) earliestRelease_ = std::min(earliestRelease_, task.nextRelease);
+    // A stimulus on a physical input is a moment to wake up for, like a release.
+    if (options_.stimulus) earliestRelease_ = std::min(earliestRelease_, options_.stimulus->nextInputAt());
 }
 
 // Makes the task ready. A task already ready or running drops the new
@@ -373,6 +376,8 @@ void Scheduler::runActivation(TaskRun& task) {
     stack_.push_back(&task);
     trace(&task, "start");
 
+    // --set variable writes due by now, then the input phase.
+    if (options_.stimulus) options_.stimulus->applyVariablesDue(start, options_.trace);
     ProcessImage& image = machine_.image;
     std::memcpy(image.inputs.data(), image.physicalInputs.data(), std::min(image.inputExtent, ProcessImage::kSize));
     armNextAttention();

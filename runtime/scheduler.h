@@ -25,6 +25,7 @@
 #include "runtime/diag_buffer.h"
 #include "runtime/machine.h"
 #include "runtime/plc_profile.h"
+#include "runtime/stimulus.h"
 #include "runtime/task_spec.h"
 
 namespace strun::rt {
@@ -44,6 +45,7 @@ struct RunOptions {
     const PlcProfile* profile = nullptr;  // nullptr: defaultProfile()
     size_t diagnosticCapacity = 1000;     // entries kept; older ones are dropped and counted
     std::ostream* warnings = nullptr;     // --realtime notes ("strun: warning: ..."); nullptr: std::cerr
+    Stimulus* stimulus = nullptr;         // --set / --stimulus writes (runtime/stimulus.h); nullptr: none
 };
 
 enum class PlcState { Run, Stop, Halt };
