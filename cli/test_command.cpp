@@ -8,6 +8,8 @@
 #include "cli/exit_codes.h"
 #include "cli/option_types.h"
 #include "cli/source_files.h"
+#include "cli/stimulus_args.h"
+#include "interpreter/project/stimulus_build.h"
 #include "interpreter/testing/test_registry.h"
 #include "interpreter/testing/test_report.h"
 #include "interpreter/testing/test_session.h"
@@ -84,6 +86,14 @@ CLI::App* addTestCommand(CLI::App& app, CommandLine& line, TestCommandLine& test
     cmd->add_option("--junit", test.junit, "also write a JUnit XML report to FILE")->type_name("FILE");
     cmd->add_option("--filter", test.filter, "run only the tests whose Suite.Test matches PATTERN (* and ? wildcards)")->type_name("PATTERN");
     cmd->add_flag("--list", test.list, "print the tests the suites declare without running them");
+    cmd->add_option("--set", line.sets,
+                    "at PLC time TIME (default 0) write the ST literal VALUE to a variable or direct input (repeatable)")
+        ->type_name("NAME=VALUE[@TIME]")
+        ->allow_extra_args(false);  // one value per --set: FILEs follow
+    cmd->add_option("--stimulus", line.stimulusFiles, "a CSV file of TIME,NAME,VALUE lines: many --set at once")
+        ->check(readableFileValidator())
+        ->type_name("FILE")
+        ->allow_extra_args(false);
     return cmd;
 }
 
@@ -111,6 +121,18 @@ int testCommand(const CommandLine& line, const TestCommandLine& test) {
         testing::printTestList(reg, std::cout);
         return kExitOk;
     }
+    // Stimulus, as for run: every name and value is checked before anything runs.
+    std::vector<project::StimulusEntry> entries;
+    for (const std::string& text : line.sets) {
+        project::StimulusEntry entry;
+        if (!parseSetOption(text, entry, error)) return usage(error);
+        entries.push_back(std::move(entry));
+    }
+    for (const std::string& file : line.stimulusFiles)
+        if (!readStimulusFile(file, entries, error)) return usage(error);
+    rt::Stimulus stimulus;
+    if (!project::buildStimulus(*model, entries, stimulus, error)) return usage(error);
+    if (!stimulus.empty()) run.stimulus = &stimulus;
     if (reg.suites.empty())
         std::cerr << "strun: warning: no test suite runs: declare instances of FUNCTION_BLOCKs that EXTEND FB_TestSuite "
                      "in a PROGRAM that calls RUN() (or have no RUN() and no CONFIGURATION)\n";
