@@ -40,6 +40,22 @@ public:
     TypeTable& types() { return *model_.types; }
     CompileLog& log() { return log_; }
     void error(const ast::Loc& loc, const std::string& message) { log_.error(loc, message); }
+    // A warning, unless `loc` is in strun's embedded library (its sources are never shown to users).
+    void warning(const ast::Loc& loc, const std::string& message) {
+        if (!libraryFiles_.count(loc.file)) log_.warning(loc, message);
+    }
+    // What CODESYS accepts and IEC 61131-3 does not (implicit narrowing, a constant
+    // expression that wraps): a warning by default, an error with --strict
+    // (decision 0090). Returns false when it was an error. The embedded library
+    // is always checked in the default mode.
+    bool lenient(const ast::Loc& loc, const std::string& message) {
+        if (strict_ && !libraryFiles_.count(loc.file)) { error(loc, message); return false; }
+        warning(loc, message);
+        return true;
+    }
+    // --strict: IEC 61131-3 typing (contract, "Implicit conversions").
+    void setStrict(bool strict) { strict_ = strict; }
+    bool strict() const { return strict_; }
     // Converts `e` implicitly to `target` (errors if the standard forbids it).
     Checked coerce(Checked e, const Type* target, const ast::Loc& loc, const char* what);
     // Explicit conversion (X_TO_Y / TO_Y): any elementary pair.
@@ -187,6 +203,7 @@ private:
     bool assignedResult_ = false;
     std::vector<std::unique_ptr<ast::TypeDecl>> inlineEnumDecls_;
     std::set<int> libraryFiles_;
+    bool strict_ = false;
 
 public:
     // Files whose POUs are the standard library (no unused-variable warnings).

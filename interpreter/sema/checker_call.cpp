@@ -142,6 +142,12 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
         }
         a = coerce(a, from, e.args[0].value->loc, key.c_str());
         if (!a.ok) return a;
+        // SINT_TO_INT(s + 1): narrow arithmetic is computed at 32 bits (decision 0078);
+        // the argument wraps to the parameter's width like any other argument.
+        if (!a.isConst && !a.isPlace && isIntRep(from) && bitWidth(integerView(from->kind)) < 32) {
+            a.node = makeIntByRep<exec::ConvIntInt>(pool(), repOf(from), a.node);
+            a.node->type = from;
+        }
     }
     Checked r = convert(a, to, e.loc, truncate);
     r.hasCall = a.hasCall;

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "interpreter/sema/attributes.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/node_factory.h"
 
@@ -227,6 +228,8 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         Type t;
         t.kind = TK::Enum;
         t.name = decl->name;
+        t.strictEnum = hasAttribute(decl->pragmas, "strict");
+        t.qualifiedOnly = hasAttribute(decl->pragmas, "qualified_only");
         const Type* base = spec->elem ? resolveTypeSpec(spec->elem.get(), decl->name) : types().elementary(TK::Int);
         if (base && !isInteger(base->kind) && !isBitString(base->kind)) {
             error(spec->loc, "the base type of an enumeration must be an integer type");
@@ -250,6 +253,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         resolvedTypes_[key] = created;
         for (const auto& e : created->enumerators) {
             std::string ek = upper(e.name);
+            if (created->qualifiedOnly) continue;  // only E.value / E#value name it
             if (enumValues_.count(ek)) ambiguousEnumValues_.insert(ek);
             else enumValues_[ek] = {created, &e};
         }

@@ -512,10 +512,8 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
             mv->used = true;
             byRef = mv->byRef;
             if (byRef) ft = mv->type;
-            if (mv->section == ast::VarSection::Input && !insideOwnInstance(t->pou)) {
-                c.readOnly = true;
-                c.readOnlyWhy = fmt::format("'{}' is an input of '{}'; inputs are set in the call", mv->name, t->name);
-            }
+            // An input may be written from outside before the call (`fb.IN := TRUE;`):
+            // CODESYS and TwinCAT accept it (decision 0072).
             if (mv->section == ast::VarSection::Output && t->pou->kind == ast::PouKind::FunctionBlock && !insideOwnInstance(t->pou)) {
                 c.readOnly = true;
                 c.readOnlyWhy = fmt::format("'{}' is an output of '{}'; outputs are read-only outside the instance", mv->name, t->name);
@@ -768,26 +766,34 @@ TK bitKindOf(int bits) {
         default: return TK::LWord;
     }
 }
-// Implicit conversion allowed from -> to (both elementary, not the same)?
-bool implicitOk(const Type* from, const Type* to) {
+// IEC 61131-3 implicit conversions (decision 0070): silent in both modes.
+bool iecImplicit(const Type* from, const Type* to) {
     TK f = from->kind, t = to->kind;
     if (f == t) return true;
-    if (isStringType(f) && f == t) return true;
-    if ((isInteger(f) || isBitString(f)) && (isInteger(t) || isBitString(t))) {
+    if (isInteger(f) && isInteger(t)) {
         IntInfo a = intInfo(f), b = intInfo(t);
-        if (isBitString(f) && isBitString(t)) return b.bits >= a.bits;
-        if (isBitString(f) || isBitString(t)) return b.bits >= a.bits;  // CODESYS: integer <-> bit string, not narrowing
         if (a.isSigned == b.isSigned) return b.bits >= a.bits;
-        if (!a.isSigned && b.isSigned) return b.bits > a.bits;
-        return false;  // signed -> unsigned
+        return !a.isSigned && b.isSigned && b.bits > a.bits;  // USINT -> INT, not USINT -> SINT
     }
+    if (isBitString(f) && isBitString(t)) return intInfo(t).bits >= intInfo(f).bits;
     if (f == TK::Bool && isBitString(t)) return true;
-    if ((isInteger(f) || isBitString(f)) && isReal(t)) return isInteger(f);
+    if (isInteger(f) && isReal(t)) return true;
     if (f == TK::Real && t == TK::LReal) return true;
     if (f == TK::Time && t == TK::LTime) return true;
-    if (f == TK::Char && t == TK::WChar) return false;
-    if (f == TK::Enum && (isInteger(t))) return true;  // CODESYS: an enumeration value is usable as its integer
     return false;
+}
+// Integer <-> bit string without narrowing (`w : WORD := i`): CODESYS converts
+// these silently, and so does strun in operands brought to a common type.
+bool bitStringMix(const Type* from, const Type* to) {
+    TK f = from->kind, t = to->kind;
+    if (!((isInteger(f) || isBitString(f)) && (isInteger(t) || isBitString(t)))) return false;
+    return intInfo(t).bits >= intInfo(f).bits;
+}
+// What CODESYS also converts implicitly (contract, "Implicit conversions"): any
+// integer, bit string, REAL or LREAL to any other, in either direction.
+bool codesysImplicit(const Type* from, const Type* to) {
+    auto numeric = [](TK k) { return isInteger(k) || isBitString(k) || isReal(k); };
+    return numeric(from->kind) && numeric(to->kind);
 }
 }  // namespace
 
@@ -866,8 +872,17 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         TK t = target->kind;
         if (isInteger(t) || isBitString(t) || t == TK::Bool) {
             if (!fitsIn(e.constInt, false, target)) {
-                error(loc, fmt::format("constant {} is outside the range of {}", e.constInt, typeName(target)));
-                return bad(loc);
+                // A literal that does not fit is an error; a constant expression
+                // (127 + 1) wraps like the run-time arithmetic, with a warning (decision 0090).
+                if (!e.foldedExpr || t == TK::Bool) {
+                    error(loc, fmt::format("constant {} is outside the range of {}", e.constInt, typeName(target)));
+                    return bad(loc);
+                }
+                Checked wrapped = convert(settle(e), target, loc);
+                if (!wrapped.ok) return wrapped;
+                if (!lenient(loc, fmt::format("constant {} does not fit {}; it wraps to {}", e.constInt, typeName(target), wrapped.constInt)))
+                    return bad(loc);
+                return wrapped;
             }
             Checked c = constInt(e.constInt, target, e.loc);
             return c;
@@ -907,6 +922,17 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         e.type = target;  // POINTER TO x := ADR(...), any pointer, or 0
         return e;
     }
+    // CODESYS: a POINTER and an unsigned integer of the pointer's width convert
+    // into each other (temp : LWORD := pt; pt := temp), with a warning.
+    auto pointerWide = [](const Type* t) { return t->kind == TK::ULInt || t->kind == TK::LWord; };
+    if ((target->kind == TK::Pointer && pointerWide(from)) || (from->kind == TK::Pointer && pointerWide(target))) {
+        if (!lenient(loc, fmt::format("implicit conversion from {} to {}", typeName(from), typeName(target)))) return bad(loc);
+        e.type = target;
+        if (e.node) e.node->type = target;
+        e.isPlace = false;
+        e.var = nullptr;
+        return e;
+    }
     if (target->kind == TK::Reference && from->kind == TK::Reference && sameType(from->target, target->target)) return e;
     if (target->kind == TK::Interface && (from->kind == TK::FunctionBlock || from->kind == TK::Interface)) {
         // An interface value is the address of an instance whose class implements it.
@@ -943,8 +969,32 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         for (const Type* p = from->parent; p; p = p->parent)
             if (p == target) return e;  // derived struct to base: copies the base part
     }
-    if (isElementary(from->kind) && isElementary(target->kind) && implicitOk(from, target)) return convert(e, target, loc);
-    if (from->kind == TK::Enum && isInteger(target->kind) && implicitOk(from, target)) return convert(e, target, loc);
+    if (isElementary(from->kind) && isElementary(target->kind)) {
+        if (iecImplicit(from, target)) return convert(e, target, loc);
+        const bool promotion = std::strcmp(what, "operand") == 0;  // operands brought to their common type
+        if (promotion && bitStringMix(from, target)) return convert(e, target, loc);
+        if (codesysImplicit(from, target)) {
+            if (!lenient(loc, fmt::format("implicit conversion from {} to {}: possible loss of data", typeName(from), typeName(target))))
+                return bad(loc);
+            return convert(e, target, loc);
+        }
+    }
+    const bool enumToInt = from->kind == TK::Enum && (isInteger(target->kind) || isBitString(target->kind));
+    const bool intToEnum = target->kind == TK::Enum && (isInteger(from->kind) || isBitString(from->kind));
+    if (enumToInt || intToEnum) {
+        const Type* en = enumToInt ? from : target;
+        if (en->strictEnum) {
+            error(loc, fmt::format("{}: cannot convert {} to {} implicitly; '{}' has {{attribute 'strict'}}", what, typeName(from),
+                                   typeName(target), en->name));
+            return bad(loc);
+        }
+        if (!lenient(loc, fmt::format("implicit conversion from {} to {}", typeName(from), typeName(target)))) return bad(loc);
+        Checked c = convert(e, enumToInt ? target : en->base, loc);
+        if (!c.ok) return c;
+        c.type = target;
+        if (c.node) c.node->type = target;
+        return c;
+    }
     std::string hint;
     if (isElementary(from->kind) && isElementary(target->kind) && !isStringType(from->kind))
         hint = fmt::format("; use {}_TO_{}", upper(from->name == "TIME_OF_DAY" ? "TOD" : from->name == "DATE_AND_TIME" ? "DT" : from->name),

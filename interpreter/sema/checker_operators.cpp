@@ -110,7 +110,7 @@ Checked Checker::checkUnary(const ast::Expr& e) {
         return a;
     }
     if (e.op == ast::Op::Neg) {
-        if (a.untypedInt) { Checked c = constInt(-a.constInt, a.type, e.loc); c.untypedInt = true; return c; }
+        if (a.untypedInt) { Checked c = constInt(-a.constInt, a.type, e.loc); c.untypedInt = true; c.foldedExpr = a.foldedExpr; return c; }
         if (a.isConst && a.type->kind == TK::ULInt && static_cast<uint64_t>(a.constInt) == (uint64_t(1) << 63)) {
             // -9223372036854775808: the magnitude alone only fits ULINT.
             Checked c = constInt(a.constInt, types().elementary(TK::LInt), e.loc);
@@ -336,6 +336,7 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
         if (real) f.untypedReal = true;
         else f.untypedInt = true;
         if (f.untypedInt) { f.type = types().elementary(f.constInt >= INT32_MIN && f.constInt <= INT32_MAX ? TK::DInt : TK::LInt); f.node->type = f.type; }
+        f.foldedExpr = true;
     }
     return f;
 }

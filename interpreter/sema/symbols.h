@@ -83,6 +83,7 @@ struct Checked {
     double constReal = 0;
     bool untypedInt = false;   // integer literal not yet given a type (ANY_INT)
     bool untypedReal = false;  // real literal not yet given a type (ANY_REAL)
+    bool foldedExpr = false;   // an untyped constant computed by an operator (127 + 1), not a literal
     bool flexibleLiteral = false;  // not constant, but computed from untyped literals only
                                    // (SEL(g, 1, 2), 10 / 0): converts to any numeric type it meets
     bool isPlace = false;      // designates storage (can be assigned / passed by reference)
