@@ -9,6 +9,7 @@
 #include "interpreter/sema/node_factory.h"
 #include "runtime/plc_profile.h"
 #include "runtime/task_rules.h"
+#include "stdlib/time_literals.h"
 
 namespace strun::sema {
 
@@ -61,6 +62,13 @@ void Checker::buildConfiguration() {
     }
     // Tasks
     auto constTime = [&](const ast::Expr* e, rt::PlcTime& out) {
+        // T#500us, T#1500us: a literal keeps its microseconds (a TIME value
+        // counts milliseconds; the task period is in nanoseconds).
+        if (e->kind == ast::ExprKind::Literal && e->lit == ast::LitKind::Duration)
+            if (auto ns = stdlib::parseDurationLiteral(e->text); ns && ns.value() >= 0) {
+                out = ns.value();
+                return true;
+            }
         Checked c = checkExpr(*e);
         if (!c.ok) return false;
         if (!c.isConst || !isTimeLike(c.type->kind)) {

@@ -507,6 +507,7 @@ void Checker::layoutPou(PouInfo* pou) {
         for (auto& v : pou->ownedVars) {
             if (v->storage != Storage::Self || v->byRef) continue;
             writeDefault(image.data() + v->offset, v->type);
+            if (isAddressInit(v.get())) { pou->addressInits.push_back(v.get()); continue; }
             if (v->decl && v->decl->init) writeInitial(image.data() + v->offset, v->type, v->decl->init.get(), v->decl->loc);
         }
         if (pou->kind == ast::PouKind::FunctionBlock) {
@@ -711,6 +712,7 @@ void Checker::declareGlobals() {
             v->abs = storage + v->offset;
             v->offset = 0;  // an Abs variable's address is `abs` itself
             writeDefault(v->abs, v->type);
+            if (isAddressInit(v)) { globalAddressInits_.push_back(v); continue; }
             if (v->decl->init) writeInitial(v->abs, v->type, v->decl->init.get(), v->decl->loc);
         }
     };
@@ -748,6 +750,15 @@ void Checker::writeScalar(uint8_t* p, const Type* t, const Checked& v) {
         case 4: { uint32_t d = static_cast<uint32_t>(iv); std::memcpy(p, &d, 4); break; }
         default: std::memcpy(p, &iv, 8); break;
     }
+}
+
+// `r : REF_TO INT := REF(counter)`, `p : POINTER TO INT := ADR(x)`: an address
+// is only known per instance, so the initialiser runs once before the first cycle.
+bool Checker::isAddressInit(const VarSym* v) const {
+    if (!v->decl || !v->decl->init || v->decl->init->kind != ast::InitKind::Expr || !v->decl->init->expr) return false;
+    if (v->type->kind != TK::Pointer && v->type->kind != TK::Reference) return false;
+    return v->decl->init->expr->kind != ast::ExprKind::Literal && !(v->decl->init->expr->kind == ast::ExprKind::Name &&
+                                                                     upper(v->decl->init->expr->name) == "NULL");
 }
 
 void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, const ast::Loc& loc) {

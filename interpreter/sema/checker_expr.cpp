@@ -147,10 +147,13 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
             return c;
         }
         case ast::LitKind::Duration: {
-            auto r = stdlib::parseDurationLiteral(e.text);
-            if (!r) return fail(fmt::format("invalid duration literal '{}': {}", e.text.substr(0, 40), r.error()));
             std::string u = upper(e.text);
             bool isLong = u.rfind("LT", 0) == 0;
+            bool saturated = false;
+            auto r = stdlib::parseDurationLiteral(e.text, isLong, &saturated);
+            if (!r) return fail(fmt::format("invalid duration literal '{}': {}", e.text.substr(0, 40), r.error()));
+            if (saturated)  // TwinCAT's LTIME is unsigned; strun's is signed (decision 0092)
+                warning(e.loc, fmt::format("'{}' is beyond the largest LTIME (2^63-1 ns); it is taken as LTIME#106751d23h47m16s854ms775us807ns", e.text.substr(0, 60)));
             if (isLong) return constInt(r.value(), types().elementary(TK::LTime), e.loc);
             int64_t ms = r.value() / 1000000;
             if (ms > std::numeric_limits<int32_t>::max() || ms < std::numeric_limits<int32_t>::min())
@@ -255,6 +258,9 @@ VarSym* Checker::lookupVar(const std::string& key) {
                 if (it != p->vars.end()) return it->second;
             }
     }
+    // strun's embedded library sees no user globals: a user's `max : INT` must not
+    // change what MAX means inside stdlib/util.st (defect 1 of issue 8).
+    if (pou_ && pou_->ast && libraryFiles_.count(pou_->ast->loc.file)) return nullptr;
     auto g = globals_.find(key);
     return g == globals_.end() ? nullptr : g->second;
 }
@@ -402,8 +408,34 @@ Checked Checker::checkName(const ast::Expr& e) {
         error(e.loc, fmt::format("'{}' is a POU, not a variable", e.name));
         return bad(e.loc);
     }
+    if (Checked later = laterConstant(key, e.loc); later.ok) return later;
     error(e.loc, fmt::format("undeclared identifier '{}'", e.name));
     return bad(e.loc);
+}
+
+// CODESYS resolves declarations in any order: a VAR CONSTANT of the POU being
+// laid out, declared further down (`arr : ARRAY[0..N] OF INT; ... N : INT := 3;`),
+// is its folded initial value here.
+Checked Checker::laterConstant(const std::string& key, const ast::Loc& loc) {
+    if (!pou_ || !pou_->layingOut || !pou_->ast || pendingConstants_.count(key)) return bad(loc);
+    for (const auto& block : pou_->ast->vars) {
+        if (!block.constant) continue;
+        for (const auto& decl : block.vars)
+            for (const auto& name : decl.names) {
+                if (upper(name) != key || !decl.type || !decl.init || decl.init->kind != ast::InitKind::Expr || !decl.init->expr) continue;
+                const Type* t = resolveTypeSpec(decl.type.get(), pou_->name);
+                if (!t || !(isIntRep(t) || isRealRep(t))) return bad(loc);
+                pendingConstants_.insert(key);  // N : INT := N + 1 must not recurse
+                Checked v = checkExpr(*decl.init->expr);
+                pendingConstants_.erase(key);
+                if (!v.ok) return bad(loc);
+                v = coerce(v, t, decl.init->expr->loc, "initial value");
+                if (!v.ok || !v.isConst) return bad(loc);
+                v.loc = loc;
+                return v;
+            }
+    }
+    return bad(loc);
 }
 
 Checked Checker::memberOf(Checked base, const std::string& member, const ast::Loc& loc) {
@@ -424,6 +456,8 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
     std::string key = upper(member);
     if (t->kind == TK::FunctionBlock) key = canonicalParameter(t->pou, key);
     if (key.size() > 2 && key[0] == '%' && key[1] == 'X') key = key.substr(2);  // x.%X3 is x.3
+    if (key.size() > 2 && key[0] == '%' && (key[1] == 'B' || key[1] == 'W' || key[1] == 'D' || key[1] == 'L'))
+        return partialAccess(base, key, member, loc);
     if ((isInteger(t->kind) || isBitString(t->kind)) && !key.empty() && !std::isdigit(static_cast<unsigned char>(key[0]))) {
         // CODESYS: w.BIT_FIVE with an integer CONSTANT as the bit number.
         VarSym* k = lookupVar(key);
@@ -540,6 +574,48 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
     }
     c.node->type = ft;
     return autoDeref(c);
+}
+
+// x.%B1, x.%W0, x.%D1, x.%L0: byte, word, double word or long word N of an
+// integer or bit string (IEC 61131-3 3rd ed. partial access; N counts from
+// the least significant end, as the value is stored little-endian).
+Checked Checker::partialAccess(Checked base, const std::string& key, const std::string& member, const ast::Loc& loc) {
+    const Type* t = base.type;
+    TK k = t->kind;
+    TK partKind = key[1] == 'B' ? TK::Byte : key[1] == 'W' ? TK::Word : key[1] == 'D' ? TK::DWord : TK::LWord;
+    const Type* part = types().elementary(partKind);
+    if (!(isInteger(k) || isBitString(k))) {
+        error(loc, fmt::format("partial access {} needs an integer or bit-string value, not {}", member, typeName(t)));
+        return bad(loc);
+    }
+    uint64_t index = 0;
+    for (size_t i = 2; i < key.size(); ++i) {
+        if (!std::isdigit(static_cast<unsigned char>(key[i])) || index > 64) { index = 99; break; }
+        index = index * 10 + static_cast<uint64_t>(key[i] - '0');
+    }
+    if ((index + 1) * part->size > t->size) {
+        error(loc, fmt::format("{} does not exist in {}", member, typeName(t)));
+        return bad(loc);
+    }
+    if (!base.isPlace) {
+        error(loc, "partial access needs a variable");
+        return bad(loc);
+    }
+    Checked c = base;
+    c.type = part;
+    c.isConst = false;
+    c.var = nullptr;
+    c.loc = loc;
+    const auto offset = static_cast<uint32_t>(index * part->size);
+    if (base.direct != Checked::Direct::None) {
+        c.directOffset = base.directOffset + offset;
+        c.node = directNode(pool(), c.direct, c.directOffset, c.directAbs, part);
+    } else {
+        c.direct = Checked::Direct::None;
+        c.node = loadFrom(pool().make<exec::OffsetPlace>(base.node, offset), part);
+    }
+    c.node->type = part;
+    return c;
 }
 
 Checked Checker::checkMember(const ast::Expr& e) {

@@ -207,6 +207,18 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
                 error(loc, fmt::format("operator '{}' is not defined for {} and {}", opText(op), typeName(a.type), typeName(b.type)));
                 return bad(loc);
             }
+            if (isDateLike(ka) || isDateLike(kb)) {
+                // One rule for `dt - T#345ms` and SUB_DT_TIME (decision 0093).
+                auto fn = builtins_.find(op == ast::Op::Add ? kDateAddOperator : kDateSubOperator);
+                if (fn != builtins_.end()) {
+                    CallArgs call;
+                    call.name = opText(op);
+                    call.args = {a, b};
+                    call.names = {"", ""};
+                    call.loc = loc;
+                    return fn->second(*this, call);
+                }
+            }
             // Bring both operands to nanoseconds-or-unit of the result.
             int64_t sr = nanosPerUnit(result->kind);
             auto toUnit = [&](Checked v) -> exec::Expr* {

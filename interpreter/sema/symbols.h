@@ -70,6 +70,10 @@ struct PouInfo {
     const ast::Property* property = nullptr;  // property accessor (METHOD): the property
     bool isSetter = false;
     int slot = -1;                            // METHOD: project-wide method slot of its name
+    // Instance variables initialised with an address (`p : POINTER TO INT := ADR(x)`):
+    // assigned once per instance before the first cycle (checker_fb_init.cpp).
+    std::vector<VarSym*> addressInits;
+    exec::Stmt* addressInitCode = nullptr;
 };
 
 // An expression after checking: its node, type, and what the checker knows
