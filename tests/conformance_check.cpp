@@ -42,7 +42,19 @@ constexpr double kRelativeTolerance = 1e-6;
 struct Directives {
     std::vector<std::string> args{"run", "--virtual", "--cycles", "1", "--dump"};
     std::optional<int> exit;  // unset: 0, or 1 when a .err expectation exists
+    bool appendDump = true;   // `dump: no`: a `run` without --dump (the human summary)
+    bool appendFile = true;   // `file: no`: the program path is not appended (`--version`, `help`)
 };
+
+// `{dir}` in an argument stands for the directory of the program (a stimulus
+// file next to it), `{file}` for the program's path.
+std::string expandTokens(std::string arg, const std::string& programPath) {
+    const auto slash = programPath.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "." : programPath.substr(0, slash);
+    for (const auto& [token, value] : {std::pair<std::string, std::string>{"{dir}", dir}, {"{file}", programPath}})
+        for (std::size_t at; (at = arg.find(token)) != std::string::npos;) arg.replace(at, token.size(), value);
+    return arg;
+}
 
 std::string trim(const std::string& s) {
     const auto first = s.find_first_not_of(" \t\r\n");
@@ -88,6 +100,9 @@ std::optional<std::string> parseDirectives(const std::string& source, Directives
         if (key == "args") {
             out.args = splitWords(value);
             if (out.args.empty()) return "empty 'args' directive";
+        } else if (key == "dump" || key == "file") {
+            if (value != "no" && value != "yes") return "bad '" + key + "' directive (yes or no): " + value;
+            (key == "dump" ? out.appendDump : out.appendFile) = value == "yes";
         } else if (key == "exit") {
             char* rest = nullptr;
             const long code = std::strtol(value.c_str(), &rest, 10);
@@ -388,6 +403,8 @@ int checkOne(const std::string& strun, const std::string& programPath) {
     const auto expectedJsonText = readFile(base + ".json");
     const auto expectedErr = readFile(base + ".err");
     const auto expectedTrace = readFile(base + ".trace");
+    const auto expectedStderr = readFile(base + ".stderr");
+    const auto expectedStdout = readFile(base + ".stdout");
     if (expectedJsonText && expectedErr) {
         std::cerr << "conformance_check: " << programPath << " has both a .json and a .err expectation\n";
         return 2;
@@ -412,15 +429,15 @@ int checkOne(const std::string& strun, const std::string& programPath) {
     const int expectedExit = directives.exit.value_or(expectedErr ? 1 : 0);
 
     std::vector<std::string> argv{strun};
-    argv.insert(argv.end(), directives.args.begin(), directives.args.end());
     bool hasDump = false, hasTrace = false;
     for (const auto& a : directives.args) {
+        argv.push_back(expandTokens(a, programPath));
         hasDump = hasDump || a == "--dump";
         hasTrace = hasTrace || a == "--trace";
     }
-    if (directives.args.front() == "run" && !hasDump) argv.push_back("--dump");
+    if (directives.args.front() == "run" && !hasDump && directives.appendDump) argv.push_back("--dump");
     if (expectedTrace && !hasTrace) argv.push_back("--trace");
-    argv.push_back(programPath);
+    if (directives.appendFile) argv.push_back(programPath);
 
     const RunResult run = runProgram(argv);
     std::vector<std::string> failures;
@@ -457,6 +474,12 @@ int checkOne(const std::string& strun, const std::string& programPath) {
             traceDifference(expectedTraceLines(*expectedTrace), actualTraceLines(run.err));
         if (!difference.empty()) failures.push_back(difference);
     }
+    if (ranToEnd && expectedStderr)
+        for (const auto& p : missingPatterns(*expectedStderr, run.err))
+            failures.push_back("no stderr line contains the pattern \"" + p + "\"");
+    if (ranToEnd && expectedStdout)
+        for (const auto& p : missingPatterns(*expectedStdout, run.out))
+            failures.push_back("no stdout line contains the pattern \"" + p + "\"");
     if (ranToEnd && expectedErr) {
         if (!run.out.empty()) failures.push_back("stdout must be empty for a program that does not compile");
         for (const auto& p : missingPatterns(*expectedErr, run.err))
@@ -575,6 +598,14 @@ int selfTest() {
                "ordinary comment ignored");
         Directives bad;
         expect(parseDirectives("(* strun-test\n colour: red\n*)", bad).has_value(), "unknown directive rejected");
+        Directives noDump;
+        expect(!parseDirectives("(* strun-test\n dump: no\n file: no\n*)", noDump) && !noDump.appendDump &&
+                   !noDump.appendFile,
+               "dump/file directives parsed");
+        Directives badDump;
+        expect(parseDirectives("(* strun-test\n dump: maybe\n*)", badDump).has_value(), "bad dump directive rejected");
+        expect(expandTokens("{dir}/s.csv", "/a/b/t.st") == "/a/b/s.csv", "{dir} is the program's directory");
+        expect(expandTokens("x={file}", "/a/b/t.st") == "x=/a/b/t.st", "{file} is the program's path");
         Directives badExit;
         expect(parseDirectives("(* strun-test\n exit: x\n*)", badExit).has_value(), "bad exit rejected");
     }

@@ -9,7 +9,8 @@
 
 namespace strun::project {
 
-std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log) {
+std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
+                                                   const sema::CompileOptions& options) {
     std::vector<ast::CompilationUnit> units;
     std::set<int> libraryFiles;
     for (const auto& src : stdlib::embeddedSources()) {
@@ -22,6 +23,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     auto model = std::make_unique<sema::ProgramModel>();
     sema::Checker checker(*model, log);
     checker.setLibraryFiles(libraryFiles);
+    checker.setCompileOptions(options);
     stdlib::registerBuiltins(checker);
     checker.run(units);
     if (log.hasErrors()) return nullptr;

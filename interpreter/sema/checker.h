@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "interpreter/ast/ast.h"
+#include "interpreter/sema/compile_options.h"
 #include "interpreter/sema/program_model.h"
 #include "interpreter/sema/symbols.h"
 #include "interpreter/source/source_set.h"
@@ -34,6 +35,9 @@ public:
     Checker(ProgramModel& model, CompileLog& log);
     // Checks every unit; fills the model (program instances, tasks, code).
     void run(std::vector<ast::CompilationUnit>& units);
+    // --target / --strict (set before run()).
+    void setCompileOptions(const CompileOptions& options) { options_ = options; }
+    const CompileOptions& compileOptions() const { return options_; }
 
     // ---- services for standard-library bindings
     exec::NodePool& pool() { return model_.pool; }
@@ -92,6 +96,7 @@ public:
 
 private:
     friend struct CheckerAccess;
+    CompileOptions options_;
     // ---- declarations (checker_declare.cpp)
     void collect(ast::CompilationUnit& unit);
     void declarePou(ast::Pou* pou, PouInfo* owner);

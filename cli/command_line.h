@@ -1,0 +1,31 @@
+// Everything the command line says, as parsed by CLI11 (app.cpp) and read
+// by the commands (run_command.cpp, check_command.cpp).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "interpreter/sema/compile_options.h"
+
+namespace strun::cli {
+
+struct CommandLine {
+    std::vector<std::string> files;
+    sema::CompileOptions compile;  // --target, --strict (run, check)
+
+    // run
+    bool virtualClock = false;
+    std::optional<int64_t> stmtCost;     // --stmt-cost, ns
+    std::optional<uint64_t> cycles;      // --cycles
+    std::string task;                    // --task
+    std::optional<int64_t> forDuration;  // --for, ns
+    std::optional<int64_t> start;        // --start, calendar ns
+    bool dump = false;
+    bool trace = false;
+    bool realtime = false;
+    bool quiet = false;
+};
+
+}  // namespace strun::cli

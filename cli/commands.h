@@ -1,0 +1,20 @@
+// The subcommands of strun: each registers its options on the CLI11 app and
+// runs from the parsed CommandLine.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "cli/command_line.h"
+
+namespace strun::cli {
+
+CLI::App* addRunCommand(CLI::App& app, CommandLine& line);
+CLI::App* addCheckCommand(CLI::App& app, CommandLine& line);
+// Options that change compilation, shared by run and check (and test).
+void addCompileOptions(CLI::App& command, CommandLine& line);
+void addFileArguments(CLI::App& command, CommandLine& line);
+
+int runCommand(const CommandLine& line);    // strun run
+int checkCommand(const CommandLine& line);  // strun check
+
+}  // namespace strun::cli

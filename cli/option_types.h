@@ -1,0 +1,27 @@
+// The value types of strun's options as CLI11 validators: each trims
+// surrounding whitespace, checks the text, and names its type in --help
+// (DURATION, N, FILE, DT, NAME) instead of CLI11's TEXT.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <CLI/CLI.hpp>
+
+namespace strun::cli {
+
+// An IEC duration (`T#1s500ms`, `TIME#20ms`), a bare one (`150ms`) or a bare
+// `0`. Nanoseconds, or nullopt with `error` set.
+std::optional<int64_t> parseDuration(std::string_view text, std::string& error);
+
+// Validators (they rewrite the option's text to its trimmed form).
+CLI::Validator durationValidator();       // DURATION, >= 0
+CLI::Validator positiveCountValidator();  // N >= 1
+CLI::Validator dateTimeValidator();       // DT#2026-01-31-13:05:00
+CLI::Validator readableFileValidator();   // an existing, readable regular file
+
+std::string trimmed(std::string_view text);
+
+}  // namespace strun::cli

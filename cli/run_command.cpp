@@ -1,0 +1,135 @@
+// strun run [options] FILE...: compile the FILEs as one project and run it.
+#include <csignal>
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "cli/compile_step.h"
+#include "cli/exit_codes.h"
+#include "cli/option_types.h"
+#include "interpreter/project/dump_json.h"
+#include "interpreter/project/task_runner.h"
+#include "runtime/plc_profile.h"
+#include "runtime/scheduler.h"
+#include "stdlib/time_literals.h"
+#include "stdlib/value_format.h"
+
+namespace strun::cli {
+
+namespace {
+
+extern "C" void onStopSignal(int) { rt::Scheduler::requestStop(); }
+
+// The text already passed durationValidator().
+int64_t validatedDuration(const std::string& text) {
+    std::string unused;
+    return parseDuration(text, unused).value_or(0);
+}
+
+int usage(const std::string& message) {
+    std::cerr << "strun: " << message << "\n";
+    return kExitUsage;
+}
+
+// The run options that do not depend on the compiled project.
+bool buildRunOptions(const CommandLine& line, rt::RunOptions& run, std::string& error) {
+    run.virtualClock = line.virtualClock;
+    if (line.stmtCost && !line.virtualClock) {
+        error = "--stmt-cost needs --virtual";
+        return false;
+    }
+    if (line.start && !line.virtualClock) {
+        error = "--start needs --virtual";
+        return false;
+    }
+    run.stmtCost = line.stmtCost.value_or(line.virtualClock ? 1000 : 0);
+    run.cycles = line.cycles;
+    run.duration = line.forDuration;
+    run.startCalendarNanos = line.start.value_or(0);
+    run.realtime = line.realtime;
+    run.profile = rt::findProfile(line.compile.target);
+    if (line.trace) run.trace = &std::cerr;
+    return true;
+}
+
+}  // namespace
+
+CLI::App* addRunCommand(CLI::App& app, CommandLine& line) {
+    CLI::App* run = app.add_subcommand("run", "compile the FILEs as one project and run it");
+    addFileArguments(*run, line);
+    addCompileOptions(*run, line);
+    run->add_flag("--virtual", line.virtualClock, "simulated clock: deterministic, as fast as the host can");
+    run->add_option_function<std::string>(
+           "--stmt-cost", [&line](const std::string& text) { line.stmtCost = validatedDuration(text); },
+           "virtual time one executed statement costs (default 1us; only with --virtual)")
+        ->transform(durationValidator())
+        ->type_name("DURATION");
+    run->add_option_function<std::string>(
+           "--cycles", [&line](const std::string& text) { line.cycles = std::stoull(text); },
+           "stop after the task named by --task completed N cycles")
+        ->transform(positiveCountValidator())
+        ->type_name("N");
+    run->add_option("--task", line.task, "the task --cycles counts (default MainTask, or the first TASK declared)")->type_name("NAME");
+    run->add_option_function<std::string>(
+           "--for", [&line](const std::string& text) { line.forDuration = validatedDuration(text); },
+           "stop after DURATION of PLC time")
+        ->transform(durationValidator())
+        ->type_name("DURATION");
+    run->add_option_function<std::string>(
+           "--start", [&line](const std::string& text) { line.start = stdlib::parseDateTimeLiteral(text).value(); },
+           "calendar date-time the virtual clock starts at (default DT#1970-01-01-00:00:00)")
+        ->transform(dateTimeValidator())
+        ->type_name("DT");
+    run->add_flag("--dump", line.dump, "when the run stops, print the final state as one JSON object on stdout");
+    run->add_flag("--trace", line.trace, "print task events with PLC time on stderr");
+    run->add_flag("--realtime", line.realtime, "ask for SCHED_FIFO and locked memory (real clock)");
+    return run;
+}
+
+int runCommand(const CommandLine& line) {
+    rt::RunOptions run;
+    std::string error;
+    if (!buildRunOptions(line, run, error)) return usage(error);
+
+    Compiled compiled;
+    compileCommandLine(line, compiled);
+    if (!compiled.model) return compiled.exitCode;
+    sema::ProgramModel& model = *compiled.model;
+
+    std::vector<rt::TaskSpec> specs;
+    for (const auto& t : model.tasks) specs.push_back(t.spec);
+    if (!line.task.empty()) {
+        if (!rt::Scheduler::hasTask(specs, line.task)) return usage("--task: no task named '" + line.task + "'");
+        run.cyclesTask = line.task;
+    } else if (!specs.empty()) {
+        run.cyclesTask = specs.front().name;  // MainTask without a CONFIGURATION, else the first TASK declared
+    }
+    std::vector<std::unique_ptr<project::TaskRunner>> runners;
+    std::vector<rt::TaskBody*> bodies;
+    for (const auto& t : model.tasks) {
+        runners.push_back(std::make_unique<project::TaskRunner>(model, t));
+        bodies.push_back(runners.back().get());
+    }
+    rt::Scheduler scheduler(model.machine, specs, bodies, run);
+    std::signal(SIGINT, onStopSignal);
+    std::signal(SIGTERM, onStopSignal);
+    rt::PlcState state = scheduler.run();
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+    if (line.dump) {
+        nlohmann::ordered_json out;
+        out["state"] = rt::plcStateName(state);
+        out["time"] = stdlib::formatDuration(scheduler.endTime());
+        out["target"] = line.compile.target;
+        out["globals"] = project::globalsJson(model);
+        out["programs"] = project::programsJson(model);
+        out["tasks"] = scheduler.tasksJson();
+        out["diagnostics"] = scheduler.diagnosticsJson();
+        std::cout << out.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << std::endl;
+    }
+    return state == rt::PlcState::Run ? kExitOk : kExitStopped;
+}
+
+}  // namespace strun::cli
