@@ -104,6 +104,8 @@ FUNCTION_BLOCK     : F U N C T I O N '_' B L O C K;
 END_FUNCTION_BLOCK : E N D '_' F U N C T I O N '_' B L O C K;
 METHOD             : M E T H O D;
 END_METHOD         : E N D '_' M E T H O D;
+ACTION             : A C T I O N;
+END_ACTION         : E N D '_' A C T I O N;
 PROPERTY           : P R O P E R T Y;
 END_PROPERTY       : E N D '_' P R O P E R T Y;
 INTERFACE          : I N T E R F A C E;

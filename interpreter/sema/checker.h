@@ -52,14 +52,11 @@ public:
     // expression that wraps): a warning by default, an error with --strict
     // (decision 0090). Returns false when it was an error. The embedded library
     // is always checked in the default mode.
-    bool lenient(const ast::Loc& loc, const std::string& message) {
-        if (strict_ && !libraryFiles_.count(loc.file)) { error(loc, message); return false; }
+    bool lenient(const ast::Loc& loc, const std::string& message, const std::string& errorHint = "") {
+        if (options_.strict && !libraryFiles_.count(loc.file)) { error(loc, message + errorHint); return false; }
         warning(loc, message);
         return true;
     }
-    // --strict: IEC 61131-3 typing (contract, "Implicit conversions").
-    void setStrict(bool strict) { strict_ = strict; }
-    bool strict() const { return strict_; }
     // Converts `e` implicitly to `target` (errors if the standard forbids it).
     Checked coerce(Checked e, const Type* target, const ast::Loc& loc, const char* what);
     // Explicit conversion (X_TO_Y / TO_Y): any elementary pair.
@@ -113,6 +110,8 @@ private:
     bool isAddressInit(const VarSym* v) const;
     exec::Stmt* addressInitStmt(VarSym* v);
     std::vector<VarSym*> globalAddressInits_;
+    std::string qualifiedOnlyList_;   // while declaring a {attribute 'qualified_only'} global list: its name
+    bool qualifiedAccess_ = false;    // while resolving the member of `LIST.name`
     void writeInitial(uint8_t* base, const Type* t, const ast::Init* init, const ast::Loc& loc);
     void writeDefault(uint8_t* base, const Type* t);
     void writeScalar(uint8_t* p, const Type* t, const Checked& v);
@@ -217,7 +216,6 @@ private:
     bool assignedResult_ = false;
     std::vector<std::unique_ptr<ast::TypeDecl>> inlineEnumDecls_;
     std::set<int> libraryFiles_;
-    bool strict_ = false;
 
 public:
     // Files whose POUs are the standard library (no unused-variable warnings).

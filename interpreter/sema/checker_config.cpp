@@ -232,6 +232,10 @@ void Checker::buildConfiguration() {
 // ---------------------------------------------------------------- driver
 
 void Checker::run(std::vector<ast::CompilationUnit>& units) {
+    // Library names code writes in front of standard blocks and functions
+    // (Tc2_Standard.TON, Tc2_System.MEMCPY): strun's library answers to them.
+    for (const char* library : {"TC2_STANDARD", "TC2_SYSTEM", "TC2_UTILITIES", "TC2_ETHERCAT", "STANDARD"})
+        namespaces_.insert(library);
     for (auto& u : units) collect(u);
     // Types and enumerations first, so that enumeration values are known everywhere.
     for (auto& [key, decl] : typeDecls_) resolveTypeDecl(key, decl->loc);

@@ -665,6 +665,7 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     v->loc = loc;
     v->type = t;
     v->section = ast::VarSection::Global;
+    v->qualifiedOnlyList = qualifiedOnlyList_;
     v->constant = block.constant;
     v->retain = block.retain || block.persistent;
     v->decl = &decl;
@@ -716,7 +717,11 @@ void Checker::declareGlobals() {
             if (v->decl->init) writeInitial(v->abs, v->type, v->decl->init.get(), v->decl->loc);
         }
     };
-    for (auto* list : globalLists_) declareBlocks(list->blocks);
+    for (auto* list : globalLists_) {
+        qualifiedOnlyList_ = hasAttribute(list->pragmas, "qualified_only") ? list->nameSpace : "";
+        declareBlocks(list->blocks);
+        qualifiedOnlyList_.clear();
+    }
     for (auto* conf : configurations_) {
         declareBlocks(conf->globals);
         for (auto& res : conf->resources) declareBlocks(res.globals);

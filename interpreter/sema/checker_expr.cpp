@@ -351,6 +351,11 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
 Checked Checker::checkName(const ast::Expr& e) {
     std::string key = upper(e.name);
     if (VarSym* v = lookupVar(key)) {
+        if (!v->qualifiedOnlyList.empty() && !qualifiedAccess_ && v->section == ast::VarSection::Global) {
+            error(e.loc, fmt::format("'{}' is in global list '{}' with {{attribute 'qualified_only'}}: write {}.{}", e.name,
+                                     v->qualifiedOnlyList, v->qualifiedOnlyList, e.name));
+            return bad(e.loc);
+        }
         return varAccess(v, e.loc, false);
     }
     if (!key.empty() && key[0] == '%') {
@@ -625,7 +630,10 @@ Checked Checker::checkMember(const ast::Expr& e) {
         plain.kind = ast::ExprKind::Name;
         plain.loc = e.nameLoc.line ? e.nameLoc : e.loc;
         plain.name = e.name;
-        return checkName(plain);
+        qualifiedAccess_ = true;
+        Checked c = checkName(plain);
+        qualifiedAccess_ = false;
+        return c;
     }
     if (baseExpr.kind == ast::ExprKind::Name) {
         std::string bkey = upper(baseExpr.name);
@@ -1002,7 +1010,8 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
     // into each other (temp : LWORD := pt; pt := temp), with a warning.
     auto pointerWide = [](const Type* t) { return t->kind == TK::ULInt || t->kind == TK::LWord; };
     if ((target->kind == TK::Pointer && pointerWide(from)) || (from->kind == TK::Pointer && pointerWide(target))) {
-        if (!lenient(loc, fmt::format("implicit conversion from {} to {}", typeName(from), typeName(target)))) return bad(loc);
+        const bool promotion = std::strcmp(what, "operand") == 0;  // `pt < end`: compared as addresses
+        if (!promotion && !lenient(loc, fmt::format("implicit conversion from {} to {}", typeName(from), typeName(target)))) return bad(loc);
         e.type = target;
         if (e.node) e.node->type = target;
         e.isPlace = false;
@@ -1050,7 +1059,8 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         const bool promotion = std::strcmp(what, "operand") == 0;  // operands brought to their common type
         if (promotion && bitStringMix(from, target)) return convert(e, target, loc);
         if (codesysImplicit(from, target)) {
-            if (!lenient(loc, fmt::format("implicit conversion from {} to {}: possible loss of data", typeName(from), typeName(target))))
+            if (!lenient(loc, fmt::format("implicit conversion from {} to {}: possible loss of data", typeName(from), typeName(target)),
+                         fmt::format("; use {}_TO_{}", upper(from->name), upper(target->name))))
                 return bad(loc);
             return convert(e, target, loc);
         }
@@ -1131,6 +1141,9 @@ const Type* Checker::commonType(Checked& a, Checked& b, const ast::Loc& loc, boo
     }
     if (ka == TK::Enum && kb == TK::Enum) return ta == tb ? ta : fail();
     if ((ka == TK::Pointer || ka == TK::Interface) && (kb == TK::Pointer || kb == TK::Interface)) return ta;
+    // CODESYS: a pointer compares with an integer as the unsigned address (OSCAT's `pt < end`).
+    if ((ka == TK::Pointer && (isInteger(kb) || isBitString(kb))) || (kb == TK::Pointer && (isInteger(ka) || isBitString(ka))))
+        return types().elementary(TK::ULInt);
     if (ka == kb && isElementary(ka)) return ta;
     if (isTimeLike(ka) && isTimeLike(kb)) return types().elementary(TK::LTime);
     return fail();

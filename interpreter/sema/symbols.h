@@ -40,6 +40,8 @@ struct VarSym {
     PouInfo* owner = nullptr;    // POU the variable belongs to (null for globals)
     VarSym* global = nullptr;    // VAR_EXTERNAL: the global it names
     bool used = false;
+    // Global of a list with {attribute 'qualified_only'}: only `LIST.name` names it.
+    std::string qualifiedOnlyList;
     // CONSTANT with a constant initial value: folded into uses.
     bool hasConstValue = false;
     int64_t constInt = 0;

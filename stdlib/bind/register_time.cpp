@@ -302,6 +302,12 @@ void registerClock(Checker& ck) {
         if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);
         return makeResult(ck, ck.pool().make<PlcTimeMsNode>(), ck.types().elementary(TK::Time), call, a, false);
     });
+    // CODESYS/TwinCAT TIME(): the PLC time since start, in milliseconds.
+    ck.addBuiltin("TIME", [](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);
+        return makeResult(ck, ck.pool().make<PlcTimeMsNode>(), ck.types().elementary(TK::Time), call, a, false);
+    });
     ck.addBuiltin("__PLC_LTIME", [](Checker& ck, CallArgs& call) -> Checked {
         std::vector<Checked> a;
         if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);

@@ -41,8 +41,9 @@ TEST_CASE("a type mismatch is reported at the assigned value", "[checker][locati
         "PROGRAM Main\n"
         "VAR i : INT; d : DINT; END_VAR\n"
         "  i := d;\n"
-        "END_PROGRAM\n");
-    requireErrorAt(*c, "cannot convert DINT to INT implicitly", 3, 8);
+        "END_PROGRAM\n",
+        true);
+    requireErrorAt(*c, "implicit conversion from DINT to INT", 3, 8);
 }
 
 TEST_CASE("several errors are all reported in source order", "[checker][location]") {
