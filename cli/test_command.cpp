@@ -1,15 +1,13 @@
 #include "cli/test_command.h"
 
-#include <algorithm>
-#include <filesystem>
 #include <iostream>
 
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "cli/option_types.h"
-#include "cli/source_files.h"
 #include "cli/stimulus_args.h"
 #include "interpreter/project/stimulus_build.h"
+#include "interpreter/source/project_inputs.h"
 #include "interpreter/testing/test_registry.h"
 #include "interpreter/testing/test_report.h"
 #include "interpreter/testing/test_session.h"
@@ -32,46 +30,11 @@ int64_t validatedDuration(const std::string& text) {
     return parseDuration(text, unused).value_or(0);
 }
 
-bool isProjectFile(const std::filesystem::path& p) {
-    std::string ext = p.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-    return ext == ".st" || ext == ".xml" || ext == ".tcpou" || ext == ".tcdut" || ext == ".tcgvl" || ext == ".tcio";
-}
-
 }  // namespace
-
-bool expandPaths(const std::vector<std::string>& paths, std::vector<std::string>& files, std::string& error) {
-    namespace fs = std::filesystem;
-    for (const auto& path : paths) {
-        std::error_code ec;
-        if (fs::is_directory(path, ec)) {
-            std::vector<std::string> found;
-            fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
-            for (; !ec && it != end; it.increment(ec))
-                if (it->is_regular_file(ec) && isProjectFile(it->path())) found.push_back(it->path().string());
-            if (ec) {
-                error = "cannot read the directory '" + path + "'";
-                return false;
-            }
-            std::sort(found.begin(), found.end());
-            if (found.empty()) {
-                error = "no source files (.st, .xml, .TcPOU, .TcDUT, .TcGVL, .TcIO) under '" + path + "'";
-                return false;
-            }
-            files.insert(files.end(), found.begin(), found.end());
-        } else if (fs::exists(path, ec)) {
-            files.push_back(path);
-        } else {
-            error = "cannot open '" + path + "'";
-            return false;
-        }
-    }
-    return true;
-}
 
 CLI::App* addTestCommand(CLI::App& app, CommandLine& line, TestCommandLine& test) {
     CLI::App* cmd = app.add_subcommand("test", "run the unit tests (TcUnit / CfUnit API) of the project");
-    cmd->add_option("FILE", test.paths, "the source files of the project, or directories holding them")->required()->type_name("FILE|DIR");
+    addFileArguments(*cmd, line);
     addCompileOptions(*cmd, line);
     cmd->add_option_function<std::string>(
            "--stmt-cost", [&test](const std::string& text) { test.stmtCost = validatedDuration(text); },
@@ -105,13 +68,11 @@ int testCommand(const CommandLine& line, const TestCommandLine& test) {
     if (*run.duration <= 0) return usage("--timeout: the timeout must be longer than 0");
     run.profile = rt::findProfile(line.compile.target);
 
-    std::vector<std::string> files;
     std::string error;
-    if (!expandPaths(test.paths, files, error)) return usage(error);
     SourceSet sources;
     std::vector<int> indices;
-    if (!readSourceFiles(files, sources, indices, error)) return usage(error);
     CompileLog log;
+    if (!source::readProjectInputs(line.files, sources, indices, log, error)) return usage(error);
     auto model = testing::compileForTests(sources, indices, log, line.compile);
     log.print(std::cerr, sources);
     if (!model) return kExitCompile;

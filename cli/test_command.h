@@ -12,9 +12,8 @@
 
 namespace strun::cli {
 
-// What `test` takes besides the compile options of CommandLine.
+// What `test` takes besides the FILEs, compile options and stimulus of CommandLine.
 struct TestCommandLine {
-    std::vector<std::string> paths;     // FILEs and DIRs
     std::optional<int64_t> stmtCost;    // --stmt-cost, ns
     std::optional<int64_t> timeout;     // --timeout, ns
     std::string junit;                  // --junit FILE
@@ -26,10 +25,5 @@ CLI::App* addTestCommand(CLI::App& app, CommandLine& line, TestCommandLine& test
 
 // Exit status: 0 every test passed, 1 a test failed or the project does not compile, 2 bad command line.
 int testCommand(const CommandLine& line, const TestCommandLine& test);
-
-// The files a DIR stands for: every .st, .xml, .TcPOU, .TcDUT, .TcGVL, .TcIO
-// under it, recursively, in path order. A FILE stands for itself. False (with
-// `error`) when a path does not exist.
-bool expandPaths(const std::vector<std::string>& paths, std::vector<std::string>& files, std::string& error);
 
 }  // namespace strun::cli

@@ -86,7 +86,7 @@ DIRECT_ADDRESS : '%' (I | Q | M) (X | B | W | D | L)? ( [0-9]+ ('.' [0-9]+)* | '
 PARTIAL_ACCESS : '%' (X | B | W | D | L) [0-9]+;
 
 fragment DEC_INT   : [0-9] ('_'? [0-9])*;
-fragment BASED_INT : ('2' | '8' | '16') '#' '_'? [0-9a-fA-F] ('_'? [0-9a-fA-F])*;
+fragment BASED_INT : ('2' | '8' | '10' | '16') '#' '_'? [0-9a-fA-F] ('_'? [0-9a-fA-F])*;
 fragment REAL_FRAG : DEC_INT '.' DEC_INT EXPONENT? | DEC_INT EXPONENT;
 fragment EXPONENT  : E ('+' | '-')? DEC_INT;
 fragment SQ_STRING : '\'' ( ~['$\r\n] | '$' ~[\r\n] )* '\'';
@@ -104,6 +104,8 @@ FUNCTION_BLOCK     : F U N C T I O N '_' B L O C K;
 END_FUNCTION_BLOCK : E N D '_' F U N C T I O N '_' B L O C K;
 METHOD             : M E T H O D;
 END_METHOD         : E N D '_' M E T H O D;
+ACTION             : A C T I O N;
+END_ACTION         : E N D '_' A C T I O N;
 PROPERTY           : P R O P E R T Y;
 END_PROPERTY       : E N D '_' P R O P E R T Y;
 INTERFACE          : I N T E R F A C E;

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "interpreter/sema/attributes.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/node_factory.h"
 
@@ -234,6 +235,8 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         Type t;
         t.kind = TK::Enum;
         t.name = decl->name;
+        t.strictEnum = hasAttribute(decl->pragmas, "strict");
+        t.qualifiedOnly = hasAttribute(decl->pragmas, "qualified_only");
         const Type* base = spec->elem ? resolveTypeSpec(spec->elem.get(), decl->name) : types().elementary(TK::Int);
         if (base && !isInteger(base->kind) && !isBitString(base->kind)) {
             error(spec->loc, "the base type of an enumeration must be an integer type");
@@ -257,6 +260,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         resolvedTypes_[key] = created;
         for (const auto& e : created->enumerators) {
             std::string ek = upper(e.name);
+            if (created->qualifiedOnly) continue;  // only E.value / E#value name it
             if (enumValues_.count(ek)) ambiguousEnumValues_.insert(ek);
             else enumValues_[ek] = {created, &e};
         }
@@ -513,6 +517,7 @@ void Checker::layoutPou(PouInfo* pou) {
         for (auto& v : pou->ownedVars) {
             if (v->storage != Storage::Self || v->byRef) continue;
             writeDefault(image.data() + v->offset, v->type);
+            if (isAddressInit(v.get())) { pou->addressInits.push_back(v.get()); continue; }
             if (v->decl && v->decl->init) writeInitial(image.data() + v->offset, v->type, v->decl->init.get(), v->decl->loc);
         }
         if (pou->kind == ast::PouKind::FunctionBlock) {
@@ -670,6 +675,7 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     v->loc = loc;
     v->type = t;
     v->section = ast::VarSection::Global;
+    v->qualifiedOnlyList = qualifiedOnlyList_;
     v->constant = block.constant;
     v->retain = block.retain || block.persistent;
     v->decl = &decl;
@@ -717,10 +723,15 @@ void Checker::declareGlobals() {
             v->abs = storage + v->offset;
             v->offset = 0;  // an Abs variable's address is `abs` itself
             writeDefault(v->abs, v->type);
+            if (isAddressInit(v)) { globalAddressInits_.push_back(v); continue; }
             if (v->decl->init) writeInitial(v->abs, v->type, v->decl->init.get(), v->decl->loc);
         }
     };
-    for (auto* list : globalLists_) declareBlocks(list->blocks);
+    for (auto* list : globalLists_) {
+        qualifiedOnlyList_ = hasAttribute(list->pragmas, "qualified_only") ? list->nameSpace : "";
+        declareBlocks(list->blocks);
+        qualifiedOnlyList_.clear();
+    }
     for (auto* conf : configurations_) {
         declareBlocks(conf->globals);
         for (auto& res : conf->resources) declareBlocks(res.globals);
@@ -754,6 +765,15 @@ void Checker::writeScalar(uint8_t* p, const Type* t, const Checked& v) {
         case 4: { uint32_t d = static_cast<uint32_t>(iv); std::memcpy(p, &d, 4); break; }
         default: std::memcpy(p, &iv, 8); break;
     }
+}
+
+// `r : REF_TO INT := REF(counter)`, `p : POINTER TO INT := ADR(x)`: an address
+// is only known per instance, so the initialiser runs once before the first cycle.
+bool Checker::isAddressInit(const VarSym* v) const {
+    if (!v->decl || !v->decl->init || v->decl->init->kind != ast::InitKind::Expr || !v->decl->init->expr) return false;
+    if (v->type->kind != TK::Pointer && v->type->kind != TK::Reference) return false;
+    return v->decl->init->expr->kind != ast::ExprKind::Literal && !(v->decl->init->expr->kind == ast::ExprKind::Name &&
+                                                                     upper(v->decl->init->expr->name) == "NULL");
 }
 
 void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, const ast::Loc& loc) {

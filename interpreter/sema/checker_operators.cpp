@@ -110,7 +110,7 @@ Checked Checker::checkUnary(const ast::Expr& e) {
         return a;
     }
     if (e.op == ast::Op::Neg) {
-        if (a.untypedInt) { Checked c = constInt(-a.constInt, a.type, e.loc); c.untypedInt = true; return c; }
+        if (a.untypedInt) { Checked c = constInt(-a.constInt, a.type, e.loc); c.untypedInt = true; c.foldedExpr = a.foldedExpr; return c; }
         if (a.isConst && a.type->kind == TK::ULInt && static_cast<uint64_t>(a.constInt) == (uint64_t(1) << 63)) {
             // -9223372036854775808: the magnitude alone only fits ULINT.
             Checked c = constInt(a.constInt, types().elementary(TK::LInt), e.loc);
@@ -206,6 +206,18 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
             if (!result) {
                 error(loc, fmt::format("operator '{}' is not defined for {} and {}", opText(op), typeName(a.type), typeName(b.type)));
                 return bad(loc);
+            }
+            if (isDateLike(ka) || isDateLike(kb)) {
+                // One rule for `dt - T#345ms` and SUB_DT_TIME (decision 0093).
+                auto fn = builtins_.find(op == ast::Op::Add ? kDateAddOperator : kDateSubOperator);
+                if (fn != builtins_.end()) {
+                    CallArgs call;
+                    call.name = opText(op);
+                    call.args = {a, b};
+                    call.names = {"", ""};
+                    call.loc = loc;
+                    return fn->second(*this, call);
+                }
             }
             // Bring both operands to nanoseconds-or-unit of the result.
             int64_t sr = nanosPerUnit(result->kind);
@@ -336,6 +348,7 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
         if (real) f.untypedReal = true;
         else f.untypedInt = true;
         if (f.untypedInt) { f.type = types().elementary(f.constInt >= INT32_MIN && f.constInt <= INT32_MAX ? TK::DInt : TK::LInt); f.node->type = f.type; }
+        f.foldedExpr = true;
     }
     return f;
 }

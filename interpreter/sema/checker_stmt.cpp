@@ -92,7 +92,9 @@ exec::Stmt* Checker::assignChecked(Checked target, Checked value, const ast::Loc
         return nullptr;
     }
     const Type* t = target.type;
-    if (t->kind == TK::Enum && !(value.type == t)) {
+    // An integer converts to an enumeration implicitly (a warning, an error with
+    // --strict or {attribute 'strict'}: coerce); another enumeration never does.
+    if (t->kind == TK::Enum && !(value.type == t) && !(value.untypedInt || isInteger(value.type->kind) || isBitString(value.type->kind))) {
         error(value.loc, fmt::format("cannot assign {} to {} (an enumeration takes only its own values)", typeName(value.type), typeName(t)));
         return nullptr;
     }

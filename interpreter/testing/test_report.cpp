@@ -44,11 +44,18 @@ std::string reason(const Failure& f) {
     return "EXP: " + f.expected + ", ACT: " + f.actual + ", MSG: " + f.message;
 }
 
+// The line in the file as the user has it (a TwinCAT / PLCopen XML file is
+// compiled as ST converted from it; SourceFile::original maps back).
+int originalLine(const Failure& f, const SourceSet& sources) {
+    if (f.file < 0 || f.file >= sources.size()) return f.line;
+    return sources.file(f.file).original(f.line, 1).first;
+}
+
 }  // namespace
 
 std::string failureText(const Failure& f, const SourceSet& sources) {
     if (f.file < 0) return reason(f);
-    return fmt::format("{}:{}: {}", fileName(f.file, sources), f.line, reason(f));
+    return fmt::format("{}:{}: {}", fileName(f.file, sources), originalLine(f, sources), reason(f));
 }
 
 TestCounts printResults(const TestRegistry& reg, const SourceSet& sources, std::ostream& out) {
@@ -112,7 +119,7 @@ bool writeJUnit(const TestRegistry& reg, const SourceSet& sources, rt::PlcTime t
             for (const auto& f : t.failures) {
                 std::string type = !f.fault.empty() ? (f.fault == "timeout" ? "TIMEOUT" : "FAULT") : "ASSERT";
                 xml << fmt::format("      <failure message=\"{}\" type=\"{}\"", xmlEscape(reason(f)), type);
-                if (f.file >= 0) xml << fmt::format(" file=\"{}\" line=\"{}\"", xmlEscape(fileName(f.file, sources)), f.line);
+                if (f.file >= 0) xml << fmt::format(" file=\"{}\" line=\"{}\"", xmlEscape(fileName(f.file, sources)), originalLine(f, sources));
                 xml << ">" << xmlEscape(failureText(f, sources)) << "</failure>\n";
             }
             xml << "    </testcase>\n";

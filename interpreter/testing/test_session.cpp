@@ -29,13 +29,14 @@ private:
 
 std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
                                                     const sema::CompileOptions& options) {
-    CompileLog first;
-    auto model = project::compileProject(sources, userFiles, first, options);
+    // `log` may already hold the input stage's messages: both compiles start from them.
+    const CompileLog before = log;
+    auto model = project::compileProject(sources, userFiles, log, options);
     if (!model || model->tests->runCalls > 0) {
-        log = first;
         if (model) collectSuites(*model, *model->tests);
         return model;
     }
+    log = before;
     std::vector<int> files = userFiles;
     files.push_back(sources.add("<strun test program>", syntheticTestProgram(model->tests->suiteBlocks)));
     model = project::compileProject(sources, files, log, options);
