@@ -55,7 +55,7 @@ TEST_CASE("a rejected conversion names both types and suggests the conversion fu
     CHECK(c->hasError("implicit conversion from DINT to INT: possible loss of data; use DINT_TO_INT"));
     auto d = assignBetween("DATE", "DT");
     INFO(d->printed());
-    CHECK(d->hasError("cannot convert DATE to DT implicitly; use DATE_TO_DT"));
+    CHECK(d->hasError("cannot convert DATE to DATE_AND_TIME implicitly; use DATE_TO_DT"));
 }
 
 // Contract "Implicit conversions" / decision 0090: what CODESYS accepts.
@@ -131,9 +131,14 @@ TEST_CASE("an integer literal outside the target type is an error", "[checker][l
 }
 
 TEST_CASE("an untyped real literal adopts REAL or LREAL and is not an integer", "[checker][literal]") {
-    auto bad = compileMain("i : INT;", "i := 1.5;");
+    auto bad = compileMain("i : INT;", "i := 1.5;", true);
     INFO(bad->printed());
     CHECK_FALSE(bad->ok());
+    auto warned = runMain("i : INT;", "i := 2.6;");  // the default converts like REAL_TO_INT, with a warning
+    INFO(warned.compiled->printed());
+    REQUIRE(warned.ok());
+    CHECK(warned.var("Main", "i") == 3);
+    CHECK(warned.compiled->hasWarning("implicit conversion from LREAL to INT"));
     auto r = runMain("r : REAL; l : LREAL;", "r := 0.1; l := 0.1;");
     INFO(r.compiled->printed());
     REQUIRE(r.ok());
