@@ -31,7 +31,7 @@ CLI::Validator targetValidator() {
 }  // namespace
 
 void addFileArguments(CLI::App& command, CommandLine& line) {
-    command.add_option("FILE", line.files, "the ST source files of the project")
+    command.add_option("FILE", line.files, "the project's sources: ST files, PLCopen XML, TwinCAT objects, or directories of them")
         ->required()
         ->check(readableFileValidator())
         ->type_name("FILE");

@@ -1,6 +1,7 @@
 // strun: the command line (the fixed interface is described in docs/cli.md).
 //   strun run   [options] FILE...   compile the FILEs as one project and run it
 //   strun check [options] FILE...   compile only; print diagnostics
+//   strun test  [options] FILE...|DIR   run the unit tests (TcUnit / CfUnit API)
 //   strun help [COMMAND], strun --version
 // Exit status: 0 ok, 1 does not compile, 2 bad command line, 3 PLC STOP/HALT.
 #include <cstdlib>
@@ -11,6 +12,7 @@
 #include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
+#include "cli/test_command.h"
 #include "cli/usage_errors.h"
 
 #ifndef STRUN_VERSION
@@ -31,9 +33,11 @@ int runMain(int argc, char** argv) {
     CommandLine line;
     CLI::App* run = addRunCommand(app, line);
     CLI::App* check = addCheckCommand(app, line);
+    TestCommandLine testLine;
+    CLI::App* test = addTestCommand(app, line, testLine);
     CLI::App* help = app.add_subcommand("help", "show the commands, or the options of COMMAND");
     std::string helpTopic;
-    help->add_option("COMMAND", helpTopic, "run, check")->type_name("COMMAND");
+    help->add_option("COMMAND", helpTopic, "run, check, test")->type_name("COMMAND");
 
     if (int status = checkSubcommandName(app, argc, argv); status >= 0) return status;
     try {
@@ -50,6 +54,7 @@ int runMain(int argc, char** argv) {
     if (help->parsed()) return printHelp(app, helpTopic);
     if (run->parsed()) return runCommand(line);
     if (check->parsed()) return checkCommand(line);
+    if (test->parsed()) return testCommand(line, testLine);
     return kExitUsage;
 }
 

@@ -73,8 +73,8 @@ CLI::Validator readableFileValidator() {
         [](std::string& path) -> std::string {
             struct stat st {};
             if (::stat(path.c_str(), &st) != 0) return "'" + path + "': no such file";
-            if (S_ISDIR(st.st_mode)) return "'" + path + "' is a directory, not a file";
-            if (!S_ISREG(st.st_mode)) return "'" + path + "' is not a regular file";
+            // A directory stands for every source file under it (interpreter/source/project_inputs.h).
+            if (!S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) return "'" + path + "' is not a regular file or a directory";
             if (::access(path.c_str(), R_OK) != 0) return "'" + path + "' is not readable";
             return {};
         },

@@ -25,6 +25,8 @@ tokens {
     END_FUNCTION_BLOCK,
     METHOD,
     END_METHOD,
+    END_ACTION,
+    ACTION,
     PROPERTY,
     END_PROPERTY,
     INTERFACE,
@@ -130,6 +132,8 @@ tokens {
       {"END_FUNCTION_BLOCK", END_FUNCTION_BLOCK},
       {"METHOD", METHOD},
       {"END_METHOD", END_METHOD},
+      {"END_ACTION", END_ACTION},
+      {"ACTION", ACTION},
       {"PROPERTY", PROPERTY},
       {"END_PROPERTY", END_PROPERTY},
       {"INTERFACE", INTERFACE},
@@ -298,7 +302,7 @@ DIRECT_ADDRESS : '%' (I | Q | M | S) (X | B | W | D | L)? ( [0-9]+ ('.' [0-9]+)*
 PARTIAL_ACCESS : '%' (X | B | W | D | L) [0-9]+;
 
 fragment DEC_INT   : [0-9] ('_'? [0-9])*;
-fragment BASED_INT : ('2' | '8' | '16') '#' '_'? [0-9a-fA-F] ('_'? [0-9a-fA-F])*;
+fragment BASED_INT : ('2' | '8' | '10' | '16') '#' '_'? [0-9a-fA-F] ('_'? [0-9a-fA-F])*;
 fragment REAL_FRAG : DEC_INT '.' DEC_INT EXPONENT? | DEC_INT EXPONENT;
 fragment EXPONENT  : E ('+' | '-')? DEC_INT;
 fragment SQ_STRING : '\'' ( ~['$\r\n] | '$' ~[\r\n] )* '\'';

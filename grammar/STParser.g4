@@ -19,7 +19,7 @@ options { tokenVocab = STLexer; }
   }
   static bool isNameToken(size_t type) {
     return type == IDENTIFIER || type == GET || type == SET || type == TASK || type == ON ||
-           type == WITH || type == READ_ONLY || type == READ_WRITE;
+           type == WITH || type == READ_ONLY || type == READ_WRITE || type == ACTION;
   }
 }
 
@@ -32,6 +32,7 @@ compilationUnit
 topLevelItem
     : pouDecl
     | methodDecl
+    | actionDecl              // CODESYS: an ACTION after the POU it belongs to
     | typeDecl
     | varBlock                // a top-level VAR_GLOBAL list (GVL)
     | configuration
@@ -67,6 +68,7 @@ pouElement
 memberDecl
     : methodDecl
     | propertyDecl
+    | actionDecl
     ;
 
 modifier
@@ -75,6 +77,12 @@ modifier
 
 methodDecl
     : METHOD modifier* identifier (COLON typeSpec)? varBlock* stmtList END_METHOD
+    ;
+
+// CODESYS/TwinCAT action: code of a PROGRAM or FUNCTION_BLOCK working on its
+// variables, called as inst.Name() (or Name() inside the POU).
+actionDecl
+    : ACTION identifier COLON? stmtList END_ACTION SEMI?
     ;
 
 propertyDecl
@@ -323,7 +331,7 @@ qualifiedName
 
 // Soft keywords: words with a meaning in one place that stay usable as names.
 identifier
-    : IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE
+    : IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION
     ;
 
 // Task names and task parameter names: any word, keywords included

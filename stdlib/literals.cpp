@@ -36,9 +36,11 @@ Result<uint64_t> parseIntegerLiteral(std::string_view text) {
             base = 8;
         } else if (prefix == "16") {
             base = 16;
+        } else if (prefix == "10") {
+            base = 10;  // 10#0: CODESYS/TwinCAT accept the decimal base written out
         } else {
             return Result<uint64_t>::failure(
-                fmt::format("unknown base '{}' in integer literal {} (2#, 8# or 16#)", prefix,
+                fmt::format("unknown base '{}' in integer literal {} (2#, 8#, 10# or 16#)", prefix,
                             quoted(text)));
         }
         start = hash + 1;

@@ -70,7 +70,7 @@ __int128 fractionNs(std::string_view text, size_t from, size_t to, int64_t unitN
 
 }  // namespace
 
-Result<int64_t> parseDurationLiteral(std::string_view text) {
+Result<int64_t> parseDurationLiteral(std::string_view text, bool unsignedRange, bool* saturated) {
     using R = Result<int64_t>;
     const Result<std::string_view> stripped =
         stripPrefix(text, {"T", "TIME", "LT", "LTIME"}, "duration");
@@ -85,7 +85,7 @@ Result<int64_t> parseDurationLiteral(std::string_view text) {
     }
     if (pos >= body.size()) return R::failure(fmt::format("duration literal {} has no value", quoted(text)));
 
-    constexpr __int128 kMagnitudeLimit = static_cast<__int128>(1) << 63;  // |INT64_MIN|
+    const __int128 kMagnitudeLimit = (static_cast<__int128>(1) << (unsignedRange ? 64 : 63)) - (unsignedRange ? 1 : 0);  // |INT64_MIN| or UINT64_MAX
     __int128 total = 0;
     int previousUnit = -1;
     bool sawFraction = false;
@@ -150,9 +150,15 @@ Result<int64_t> parseDurationLiteral(std::string_view text) {
         previousUnit = unit;
         ++parts;
     }
-    if (negative) return R::success(static_cast<int64_t>(-total));
-    if (total == kMagnitudeLimit) {
-        return R::failure(fmt::format("duration literal {} is out of range", quoted(text)));
+    constexpr __int128 kSignedLimit = static_cast<__int128>(1) << 63;
+    if (negative) {
+        if (total > kSignedLimit) return R::failure(fmt::format("duration literal {} is out of range", quoted(text)));
+        return R::success(static_cast<int64_t>(-total));
+    }
+    if (total >= kSignedLimit) {
+        if (!unsignedRange) return R::failure(fmt::format("duration literal {} is out of range", quoted(text)));
+        if (saturated) *saturated = true;
+        return R::success(INT64_MAX);
     }
     return R::success(static_cast<int64_t>(total));
 }

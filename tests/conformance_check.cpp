@@ -1,6 +1,6 @@
 // conformance_check: runs one conformance program through the strun CLI and
 // compares the outcome with its expectation files (.json dump subset, .err stderr patterns,
-// .trace exact --trace lines; format: tests/conformance/README.md).
+// .trace exact --trace lines, .out exact `strun test` stdout; format: tests/conformance/README.md).
 //
 //   conformance_check <strun-binary> <file.st>   exit 0 = pass, 1 = fail, 2 = bad usage/test
 //   conformance_check --self-test                checks the comparison logic itself
@@ -255,17 +255,17 @@ std::vector<std::string> actualTraceLines(const std::string& stderrText) {
 // Empty when the traces are equal; else a description of the first difference
 // with up to `context` lines before it, both sides numbered (1-based trace lines).
 std::string traceDifference(const std::vector<std::string>& expected, const std::vector<std::string>& actual,
-                            std::size_t context = 3) {
+                            std::size_t context = 3, const char* what = "trace") {
     std::size_t i = 0;
     while (i < expected.size() && i < actual.size() && expected[i] == actual[i]) ++i;
     if (i == expected.size() && i == actual.size()) return "";
     std::ostringstream d;
-    d << "trace differs at line " << (i + 1) << " (expected " << expected.size() << " lines, actual "
+    d << what << " differs at line " << (i + 1) << " (expected " << expected.size() << " lines, actual "
       << actual.size() << ")\n";
     for (std::size_t k = i > context ? i - context : 0; k < i; ++k)
         d << "        " << (k + 1) << "   " << expected[k] << "\n";
-    d << "      expected " << (i + 1) << ": " << (i < expected.size() ? expected[i] : "<end of trace>") << "\n";
-    d << "      actual   " << (i + 1) << ": " << (i < actual.size() ? actual[i] : "<end of trace>");
+    d << "      expected " << (i + 1) << ": " << (i < expected.size() ? expected[i] : (std::string("<end of ") + what + ">")) << "\n";
+    d << "      actual   " << (i + 1) << ": " << (i < actual.size() ? actual[i] : (std::string("<end of ") + what + ">"));
     for (std::size_t k = i + 1; k < std::min(actual.size(), i + 1 + context); ++k)
         d << "\n        " << (k + 1) << "   " << actual[k] << "   (actual)";
     return d.str();
@@ -523,6 +523,11 @@ int checkOne(const std::string& strun, const std::string& programPath) {
     const auto expectedJsonText = readFile(base + ".json");
     const auto expectedErr = readFile(base + ".err");
     const auto expectedTrace = readFile(base + ".trace");
+    const auto expectedOut = readFile(base + ".out");
+    if (expectedOut && (expectedJsonText || expectedErr || expectedTrace || directives.args.front() != "test")) {
+        std::cerr << "conformance_check: " << programPath << " has a .out expectation: it needs the command 'test' and no .json/.err/.trace\n";
+        return 2;
+    }
     const auto expectedStderr = readFile(base + ".stderr");
     const auto expectedStdout = readFile(base + ".stdout");
     const auto expectedVcd = readFile(base + ".vcd");
@@ -604,6 +609,13 @@ int checkOne(const std::string& strun, const std::string& programPath) {
     if (ranToEnd && expectedTrace) {
         const std::string difference =
             traceDifference(expectedTraceLines(*expectedTrace), actualTraceLines(run.err));
+        if (!difference.empty()) failures.push_back(difference);
+    }
+    if (ranToEnd && expectedOut) {
+        // `{file}` in a .out line stands for the program's path as passed to strun (as in the args).
+        std::vector<std::string> expected = expectedTraceLines(*expectedOut);
+        for (auto& l : expected) l = expandTokens(l, programPath);
+        const std::string difference = traceDifference(expected, splitLines(run.out), 3, "stdout");
         if (!difference.empty()) failures.push_back(difference);
     }
     if (ranToEnd && expectedVcd) {
@@ -799,6 +811,38 @@ int selfTest() {
             for (const char* f : {"fake_strun", "good.st", "good.trace", "bad.st", "bad.trace", "both.st", "both.trace",
                                   "both.err"})
                 unlink((d + "/" + f).c_str());
+            rmdir(dir);
+        } else {
+            expect(false, "cannot create a temporary directory");
+        }
+    }
+    {
+        // A .out expectation: exact stdout of `strun test`, {file} standing for the program path.
+        char dirTemplate[] = "/tmp/conformance_selftest_XXXXXX";
+        if (const char* dir = mkdtemp(dirTemplate)) {
+            const std::string d = dir;
+            auto write = [](const std::string& path, const std::string& text) { std::ofstream(path) << text; };
+            write(d + "/fake_strun", "#!/bin/sh\nfor f; do :; done\necho \"FAIL S.T: $f:3: EXP: 1, ACT: 2, MSG: m\"\necho '0 passed, 1 failed'\nexit 1\n");
+            chmod((d + "/fake_strun").c_str(), 0755);
+            const char* head = "(* strun-test\n   args: test\n   exit: 1\n*)\n";
+            write(d + "/good.st", head);
+            write(d + "/good.out", "FAIL S.T: {file}:3: EXP: 1, ACT: 2, MSG: m\n0 passed, 1 failed\n\n");
+            write(d + "/bad.st", head);
+            write(d + "/bad.out", "FAIL S.T: {file}:3: EXP: 1, ACT: 3, MSG: m\n0 passed, 1 failed\n");
+            write(d + "/run.st", "PROGRAM Main END_PROGRAM\n");
+            write(d + "/run.out", "x\n");
+            std::ostringstream quiet;
+            auto* saved = std::cout.rdbuf(quiet.rdbuf());
+            auto* savedErr = std::cerr.rdbuf(quiet.rdbuf());
+            const int good = checkOne(d + "/fake_strun", d + "/good.st");
+            const int bad = checkOne(d + "/fake_strun", d + "/bad.st");
+            const int run = checkOne(d + "/fake_strun", d + "/run.st");
+            std::cout.rdbuf(saved);
+            std::cerr.rdbuf(savedErr);
+            expect(good == 0, "a matching .out passes ({file} replaced, trailing blank lines ignored)");
+            expect(bad == 1 && quiet.str().find("stdout differs at line 1") != std::string::npos, "a differing .out fails and names the line");
+            expect(run == 2, "a .out with a command other than test is a malformed test");
+            for (const char* f : {"fake_strun", "good.st", "good.out", "bad.st", "bad.out", "run.st", "run.out"}) unlink((d + "/" + f).c_str());
             rmdir(dir);
         } else {
             expect(false, "cannot create a temporary directory");

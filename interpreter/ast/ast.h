@@ -281,6 +281,7 @@ struct Pou {
     std::vector<VarBlock> vars;
     StmtList body;                // empty for interfaces / abstract methods
     bool hasBody = false;         // false for interface / abstract method prototypes
+    bool isAction = false;        // METHOD that is a CODESYS ACTION (no parameters, no variables of its own)
     std::vector<std::unique_ptr<Pou>> methods;
     std::vector<Property> properties;
     std::vector<Pragma> pragmas;

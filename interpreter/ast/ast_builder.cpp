@@ -87,6 +87,14 @@ void AstBuilder::topLevelItem(P::TopLevelItemContext* c, const std::string& name
         if (auto built = pou(p, nameSpace)) unit.pous.push_back(std::move(built));
     } else if (auto* m = c->methodDecl()) {
         unit.pous.push_back(method(m, nameSpace, false));
+    } else if (auto* a = c->actionDecl()) {
+        // CODESYS writes an ACTION after the POU it belongs to.
+        Pou* owner = unit.pous.empty() ? nullptr : unit.pous.back().get();
+        if (!owner || (owner->kind != PouKind::Program && owner->kind != PouKind::FunctionBlock)) {
+            error(loc(a), "ACTION '" + text(a->identifier()) + "' must follow the PROGRAM or FUNCTION_BLOCK it belongs to");
+            return;
+        }
+        owner->methods.push_back(action(a, owner->nameSpace));
     } else if (auto* t = c->typeDecl()) {
         typeDecl(t, nameSpace, unit);
     } else if (auto* v = c->varBlock()) {
@@ -174,6 +182,10 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
 
 void AstBuilder::member(P::MemberDeclContext* c, Pou& owner, bool inInterface) {
     if (auto* m = c->methodDecl()) owner.methods.push_back(method(m, owner.nameSpace, inInterface));
+    else if (auto* a = c->actionDecl()) {
+        if (inInterface) error(loc(a), "an INTERFACE cannot have an ACTION");
+        else owner.methods.push_back(action(a, owner.nameSpace));
+    }
     else if (auto* p = c->propertyDecl()) owner.properties.push_back(property(p, owner.nameSpace, inInterface));
 }
 
@@ -197,6 +209,22 @@ std::unique_ptr<Pou> AstBuilder::method(P::MethodDeclContext* c, const std::stri
         out->body.clear();
     }
     out->endLoc = loc(c->END_METHOD() ? c->END_METHOD()->getSymbol() : c->getStop());
+    return out;
+}
+
+// An ACTION is a method without parameters or variables of its own.
+std::unique_ptr<Pou> AstBuilder::action(P::ActionDeclContext* c, const std::string& nameSpace) {
+    auto out = std::make_unique<Pou>();
+    out->kind = PouKind::Method;
+    out->isAction = true;
+    out->loc = loc(c);
+    out->nameSpace = nameSpace;
+    out->pragmas = pragmasBefore(c->getStart());
+    out->name = text(c->identifier());
+    out->nameLoc = loc(c->identifier());
+    stmtList(c->stmtList(), out->body);
+    out->hasBody = true;
+    out->endLoc = loc(c->END_ACTION() ? c->END_ACTION()->getSymbol() : c->getStop());
     return out;
 }
 

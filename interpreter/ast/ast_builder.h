@@ -41,6 +41,7 @@ private:
     void topLevelItem(P::TopLevelItemContext* c, const std::string& nameSpace, CompilationUnit& unit);
     std::unique_ptr<Pou> pou(P::PouDeclContext* c, const std::string& nameSpace);
     std::unique_ptr<Pou> method(P::MethodDeclContext* c, const std::string& nameSpace, bool inInterface);
+    std::unique_ptr<Pou> action(P::ActionDeclContext* c, const std::string& nameSpace);
     Property property(P::PropertyDeclContext* c, const std::string& nameSpace, bool inInterface);
     void member(P::MemberDeclContext* c, Pou& owner, bool inInterface);
     void typeDecl(P::TypeDeclContext* c, const std::string& nameSpace, CompilationUnit& unit);

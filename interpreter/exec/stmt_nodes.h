@@ -128,6 +128,21 @@ struct AssignBytes final : Stmt {
 };
 
 // An expression evaluated for its effect (a call statement).
+// Runs `body` with `self` as the current instance: initialisers that take an
+// address (`r : REF_TO INT := REF(counter)`), run once before the first cycle.
+struct WithSelf final : Stmt {
+    uint8_t* self;
+    Stmt* body;
+    WithSelf(uint8_t* s, Stmt* b) : self(s), body(b) {}
+    Flow exec(Ctx& c) override {
+        uint8_t* saved = c.self;
+        c.self = self;
+        Flow f = body->exec(c);
+        c.self = saved;
+        return f;
+    }
+};
+
 struct EvalStmt final : Stmt {
     Expr* e;
     enum class Rep : uint8_t { Int, Real, Addr, None } rep;

@@ -7,6 +7,9 @@
 #include "interpreter/ast/parse.h"
 #include "interpreter/project/library_selection.h"
 #include "interpreter/sema/checker.h"
+#include "interpreter/testing/register_tcunit.h"
+#include "interpreter/testing/suite_finder.h"
+#include "interpreter/testing/test_registry.h"
 #include "stdlib/bind/register_builtins.h"
 #include "stdlib/embedded_sources.h"
 
@@ -59,6 +62,8 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     checker.setCompileOptions(options);
     if (const rt::PlcProfile* profile = rt::findProfile(options.target)) checker.setProfile(*profile);
     stdlib::registerBuiltins(checker);
+    model->tests = std::make_shared<testing::TestRegistry>();
+    testing::registerTcUnit(checker, *model->tests);
     // The checker recurses once per nested declaration and expression level;
     // both are capped (docs/limits.md), and the large stack gives the caps a
     // wide margin, also under sanitizers.
@@ -72,6 +77,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     });
     if (failure) std::rethrow_exception(failure);
     if (log.hasErrors()) return nullptr;
+    testing::recordProject(*model, *model->tests);
     // The AST is referenced by nothing at run time: all names are resolved.
     return model;
 }

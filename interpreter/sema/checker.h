@@ -45,6 +45,19 @@ public:
     TypeTable& types() { return *model_.types; }
     CompileLog& log() { return log_; }
     void error(const ast::Loc& loc, const std::string& message) { log_.error(loc, message); }
+    // A warning, unless `loc` is in strun's embedded library (its sources are never shown to users).
+    void warning(const ast::Loc& loc, const std::string& message) {
+        if (!libraryFiles_.count(loc.file)) log_.warning(loc, message);
+    }
+    // What CODESYS accepts and IEC 61131-3 does not (implicit narrowing, a constant
+    // expression that wraps): a warning by default, an error with --strict
+    // (decision 0090). Returns false when it was an error. The embedded library
+    // is always checked in the default mode.
+    bool lenient(const ast::Loc& loc, const std::string& message, const std::string& errorHint = "") {
+        if (options_.strict && !libraryFiles_.count(loc.file)) { error(loc, message + errorHint); return false; }
+        warning(loc, message);
+        return true;
+    }
     // Converts `e` implicitly to `target` (errors if the standard forbids it).
     Checked coerce(Checked e, const Type* target, const ast::Loc& loc, const char* what);
     // Explicit conversion (X_TO_Y / TO_Y): any elementary pair.
@@ -61,6 +74,9 @@ public:
     uint32_t allocTemp(uint32_t size);
     // A fresh aggregate place in the current frame's temporaries with the given type.
     exec::Expr* tempPlace(const Type* t, uint32_t* offsetOut = nullptr);
+    // Bindings the operators `+` / `-` on dates and times of day delegate to.
+    static constexpr const char* kDateAddOperator = "operator +";
+    static constexpr const char* kDateSubOperator = "operator -";
     // Registry of built-in functions (name upper-case).
     void addBuiltin(const std::string& upperName, BuiltinFn fn) { builtins_[upperName] = std::move(fn); }
     bool hasBuiltin(const std::string& upperName) const { return builtins_.count(upperName) != 0; }
@@ -92,6 +108,11 @@ private:
     void foldConstant(VarSym& v, const ast::VarDecl& decl);
     VarSym* addGlobal(const ast::VarDecl& decl, size_t nameIndex, const ast::VarBlock& block, uint32_t& listSize);
     bool constIntExpr(const ast::Expr* e, int64_t& out, const char* what);
+    bool isAddressInit(const VarSym* v) const;
+    exec::Stmt* addressInitStmt(VarSym* v);
+    std::vector<VarSym*> globalAddressInits_;
+    std::string qualifiedOnlyList_;   // while declaring a {attribute 'qualified_only'} global list: its name
+    bool qualifiedAccess_ = false;    // while resolving the member of `LIST.name`
     void writeInitial(uint8_t* base, const Type* t, const ast::Init* init, const ast::Loc& loc);
     void writeDefault(uint8_t* base, const Type* t);
     void writeScalar(uint8_t* p, const Type* t, const Checked& v);
@@ -152,6 +173,9 @@ private:
     exec::Stmt* callFunctionBlock(Checked inst, const ast::Expr& e);
     Checked varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside);
     Checked memberOf(Checked base, const std::string& member, const ast::Loc& loc);
+    Checked laterConstant(const std::string& upperName, const ast::Loc& loc);
+    std::set<std::string> pendingConstants_;
+    Checked partialAccess(Checked base, const std::string& key, const std::string& member, const ast::Loc& loc);
     VarSym* lookupVar(const std::string& upperName);
     const Enumerator* lookupEnumValue(const std::string& upperName, const Type** enumType);
     Checked makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc);

@@ -44,9 +44,20 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
         ck.error(call.kids[0]->loc, fmt::format("too few arguments for '{}' ({} given, it takes {})", callee, positionalCount, inputsInOrder.size()));
         return false;
     }
+    bool sawNamed = false;
     for (const auto& a : call.args) {
         VarSym* param = nullptr;
-        if (a.name.empty()) {
+        if (a.name.empty() && sawNamed) {
+            // CODESYS/TwinCAT: a positional argument after named ones takes the
+            // first input not given yet, in declaration order (decision 0091).
+            for (VarSym* p : inputsInOrder)
+                if (!seen.count(p)) { param = p; break; }
+            if (!param) {
+                ck.error(a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
+                ok = false;
+                continue;
+            }
+        } else if (a.name.empty()) {
             if (positional >= inputsInOrder.size()) {
                 ck.error(a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
                 ok = false;
@@ -54,6 +65,7 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
             }
             param = inputsInOrder[positional++];
         } else {
+            sawNamed = true;
             std::string key = ck.canonicalParameter(owner, upper(a.name));
             for (VarSym* p : params)
                 if (upper(p->name) == key) param = p;
@@ -142,6 +154,12 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
         }
         a = coerce(a, from, e.args[0].value->loc, key.c_str());
         if (!a.ok) return a;
+        // SINT_TO_INT(s + 1): narrow arithmetic is computed at 32 bits (decision 0078);
+        // the argument wraps to the parameter's width like any other argument.
+        if (!a.isConst && !a.isPlace && isIntRep(from) && bitWidth(integerView(from->kind)) < 32) {
+            a.node = makeIntByRep<exec::ConvIntInt>(pool(), repOf(from), a.node);
+            a.node->type = from;
+        }
     }
     Checked r = convert(a, to, e.loc, truncate);
     r.hasCall = a.hasCall;
@@ -165,6 +183,11 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         std::string key = upper(callee.name);
         VarSym* v = lookupVar(key);
         if (v && pou_ && v == pou_->result && pous_.count(key)) v = nullptr;  // recursion: F(...) inside F
+        // `max : INT` (a variable) and `MAX(a, b)` (the function) live side by side:
+        // a call of a name that is a plain variable calls the function of that name.
+        if (v && v->type->kind != TK::FunctionBlock && v->type->kind != TK::Pointer && v->type->kind != TK::Reference &&
+            v->type->kind != TK::Interface && (hasBuiltin(key) || (pous_.count(key) && pous_.at(key)->kind == ast::PouKind::Function)))
+            v = nullptr;
         if (v) {
             if (v->type->kind == TK::FunctionBlock) {
                 error(e.loc, fmt::format("'{}' is a function-block instance: call it as a statement and read its outputs as {}.Q", callee.name, callee.name));

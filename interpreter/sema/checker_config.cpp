@@ -10,6 +10,7 @@
 #include "interpreter/sema/node_factory.h"
 #include "runtime/plc_profile.h"
 #include "runtime/task_rules.h"
+#include "stdlib/time_literals.h"
 
 namespace strun::sema {
 
@@ -64,6 +65,13 @@ void Checker::buildConfiguration() {
     }
     // Tasks
     auto constTime = [&](const ast::Expr* e, rt::PlcTime& out) {
+        // T#500us, T#1500us: a literal keeps its microseconds (a TIME value
+        // counts milliseconds; the task period is in nanoseconds).
+        if (e->kind == ast::ExprKind::Literal && e->lit == ast::LitKind::Duration)
+            if (auto ns = stdlib::parseDurationLiteral(e->text); ns && ns.value() >= 0) {
+                out = ns.value();
+                return true;
+            }
         Checked c = checkExpr(*e);
         if (!c.ok) return false;
         if (!c.isConst || !isTimeLike(c.type->kind)) {
@@ -276,6 +284,10 @@ bool Checker::externalInput(const ast::Expr& value, rt::TaskSpec& spec) {
 // ---------------------------------------------------------------- driver
 
 void Checker::run(std::vector<ast::CompilationUnit>& units) {
+    // Library names code writes in front of standard blocks and functions
+    // (Tc2_Standard.TON, Tc2_System.MEMCPY): strun's library answers to them.
+    for (const char* library : {"TC2_STANDARD", "TC2_SYSTEM", "TC2_UTILITIES", "TC2_ETHERCAT", "STANDARD"})
+        namespaces_.insert(library);
     for (auto& u : units) collect(u);
     breakInheritanceCycles();
     // Types and enumerations first, so that enumeration values are known everywhere.

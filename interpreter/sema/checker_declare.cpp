@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "interpreter/sema/attributes.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/node_factory.h"
 
@@ -35,6 +36,13 @@ Checker::Checker(ProgramModel& model, CompileLog& log) : model_(model), log_(log
 void Checker::collect(ast::CompilationUnit& unit) {
     for (auto& t : unit.types) {
         std::string key = upper(t.name);
+        auto known = typeDecls_.find(key);
+        if (known != typeDecls_.end() && libraryFiles_.count(known->second->loc.file) && !libraryFiles_.count(t.loc.file)) {
+            // A user type named like a library one (an own T_MaxString, say) replaces it.
+            known->second = &t;
+            addNamespacePath(namespaces_, t.nameSpace);
+            continue;
+        }
         if (typeDecls_.count(key) || types().byName(key)) {
             error(t.nameLoc.line ? t.nameLoc : t.loc, fmt::format("duplicate type name '{}'", t.name));
             continue;
@@ -233,6 +241,8 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         Type t;
         t.kind = TK::Enum;
         t.name = decl->name;
+        t.strictEnum = hasAttribute(decl->pragmas, "strict");
+        t.qualifiedOnly = hasAttribute(decl->pragmas, "qualified_only");
         const Type* base = spec->elem ? resolveTypeSpec(spec->elem.get(), decl->name) : types().elementary(TK::Int);
         if (base && !isInteger(base->kind) && !isBitString(base->kind)) {
             error(spec->loc, "the base type of an enumeration must be an integer type");
@@ -256,6 +266,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         resolvedTypes_[key] = created;
         for (const auto& e : created->enumerators) {
             std::string ek = upper(e.name);
+            if (created->qualifiedOnly) continue;  // only E.value / E#value name it
             if (enumValues_.count(ek)) ambiguousEnumValues_.insert(ek);
             else enumValues_[ek] = {created, &e};
         }
@@ -451,7 +462,10 @@ void Checker::layoutPou(PouInfo* pou) {
         pou->instanceType = inst;
         if (pou->kind == ast::PouKind::FunctionBlock) instOff = kFbHeader;
         if (!pou->ast->extends.empty() && pou->kind == ast::PouKind::FunctionBlock) {
-            auto it = pous_.find(upper(pou->ast->extends));
+            // EXTENDS Lib.Base: namespaces are flattened, as for type names.
+            std::string base = upper(pou->ast->extends);
+            if (!pous_.count(base) && base.rfind('.') != std::string::npos) base = base.substr(base.rfind('.') + 1);
+            auto it = pous_.find(base);
             if (it == pous_.end() || it->second->kind != ast::PouKind::FunctionBlock) {
                 error(pou->ast->loc, fmt::format("unknown function block '{}' in EXTENDS", pou->ast->extends));
             } else {
@@ -517,6 +531,7 @@ void Checker::layoutPou(PouInfo* pou) {
         for (auto& v : pou->ownedVars) {
             if (v->storage != Storage::Self || v->byRef) continue;
             writeDefault(image.data() + v->offset, v->type);
+            if (isAddressInit(v.get())) { pou->addressInits.push_back(v.get()); continue; }
             if (v->decl && v->decl->init) writeInitial(image.data() + v->offset, v->type, v->decl->init.get(), v->decl->loc);
         }
         if (pou->kind == ast::PouKind::FunctionBlock) {
@@ -676,6 +691,7 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     v->loc = loc;
     v->type = t;
     v->section = ast::VarSection::Global;
+    v->qualifiedOnlyList = qualifiedOnlyList_;
     v->constant = block.constant;
     v->retain = block.retain || block.persistent;
     v->decl = &decl;
@@ -726,10 +742,15 @@ void Checker::declareGlobals() {
         }
         for (VarSym* v : placed) {
             writeDefault(v->abs, v->type);
+            if (isAddressInit(v)) { globalAddressInits_.push_back(v); continue; }
             if (v->decl->init) writeInitial(v->abs, v->type, v->decl->init.get(), v->decl->loc);
         }
     };
-    for (auto* list : globalLists_) declareBlocks(list->blocks);
+    for (auto* list : globalLists_) {
+        qualifiedOnlyList_ = hasAttribute(list->pragmas, "qualified_only") ? list->nameSpace : "";
+        declareBlocks(list->blocks);
+        qualifiedOnlyList_.clear();
+    }
     for (auto* conf : configurations_) {
         declareBlocks(conf->globals);
         for (auto& res : conf->resources) declareBlocks(res.globals);
@@ -763,6 +784,15 @@ void Checker::writeScalar(uint8_t* p, const Type* t, const Checked& v) {
         case 4: { uint32_t d = static_cast<uint32_t>(iv); std::memcpy(p, &d, 4); break; }
         default: std::memcpy(p, &iv, 8); break;
     }
+}
+
+// `r : REF_TO INT := REF(counter)`, `p : POINTER TO INT := ADR(x)`: an address
+// is only known per instance, so the initialiser runs once before the first cycle.
+bool Checker::isAddressInit(const VarSym* v) const {
+    if (!v->decl || !v->decl->init || v->decl->init->kind != ast::InitKind::Expr || !v->decl->init->expr) return false;
+    if (v->type->kind != TK::Pointer && v->type->kind != TK::Reference) return false;
+    return v->decl->init->expr->kind != ast::ExprKind::Literal && !(v->decl->init->expr->kind == ast::ExprKind::Name &&
+                                                                     upper(v->decl->init->expr->name) == "NULL");
 }
 
 void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, const ast::Loc& loc) {

@@ -147,10 +147,13 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
             return c;
         }
         case ast::LitKind::Duration: {
-            auto r = stdlib::parseDurationLiteral(e.text);
-            if (!r) return fail(fmt::format("invalid duration literal '{}': {}", e.text.substr(0, 40), r.error()));
             std::string u = upper(e.text);
             bool isLong = u.rfind("LT", 0) == 0;
+            bool saturated = false;
+            auto r = stdlib::parseDurationLiteral(e.text, isLong, &saturated);
+            if (!r) return fail(fmt::format("invalid duration literal '{}': {}", e.text.substr(0, 40), r.error()));
+            if (saturated)  // TwinCAT's LTIME is unsigned; strun's is signed (decision 0092)
+                warning(e.loc, fmt::format("'{}' is beyond the largest LTIME (2^63-1 ns); it is taken as LTIME#106751d23h47m16s854ms775us807ns", e.text.substr(0, 60)));
             if (isLong) return constInt(r.value(), types().elementary(TK::LTime), e.loc);
             int64_t ms = r.value() / 1000000;
             if (ms > std::numeric_limits<int32_t>::max() || ms < std::numeric_limits<int32_t>::min())
@@ -255,6 +258,9 @@ VarSym* Checker::lookupVar(const std::string& key) {
                 if (it != p->vars.end()) return it->second;
             }
     }
+    // strun's embedded library sees no user globals: a user's `max : INT` must not
+    // change what MAX means inside stdlib/util.st (defect 1 of issue 8).
+    if (pou_ && pou_->ast && libraryFiles_.count(pou_->ast->loc.file)) return nullptr;
     auto g = globals_.find(key);
     return g == globals_.end() ? nullptr : g->second;
 }
@@ -345,6 +351,11 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
 Checked Checker::checkName(const ast::Expr& e) {
     std::string key = upper(e.name);
     if (VarSym* v = lookupVar(key)) {
+        if (!v->qualifiedOnlyList.empty() && !qualifiedAccess_ && v->section == ast::VarSection::Global) {
+            error(e.loc, fmt::format("'{}' is in global list '{}' with {{attribute 'qualified_only'}}: write {}.{}", e.name,
+                                     v->qualifiedOnlyList, v->qualifiedOnlyList, e.name));
+            return bad(e.loc);
+        }
         return varAccess(v, e.loc, false);
     }
     if (!key.empty() && key[0] == '%') {
@@ -403,8 +414,34 @@ Checked Checker::checkName(const ast::Expr& e) {
         error(e.loc, fmt::format("'{}' is a POU, not a variable", e.name));
         return bad(e.loc);
     }
+    if (Checked later = laterConstant(key, e.loc); later.ok) return later;
     error(e.loc, fmt::format("undeclared identifier '{}'", e.name));
     return bad(e.loc);
+}
+
+// CODESYS resolves declarations in any order: a VAR CONSTANT of the POU being
+// laid out, declared further down (`arr : ARRAY[0..N] OF INT; ... N : INT := 3;`),
+// is its folded initial value here.
+Checked Checker::laterConstant(const std::string& key, const ast::Loc& loc) {
+    if (!pou_ || !pou_->layingOut || !pou_->ast || pendingConstants_.count(key)) return bad(loc);
+    for (const auto& block : pou_->ast->vars) {
+        if (!block.constant) continue;
+        for (const auto& decl : block.vars)
+            for (const auto& name : decl.names) {
+                if (upper(name) != key || !decl.type || !decl.init || decl.init->kind != ast::InitKind::Expr || !decl.init->expr) continue;
+                const Type* t = resolveTypeSpec(decl.type.get(), pou_->name);
+                if (!t || !(isIntRep(t) || isRealRep(t))) return bad(loc);
+                pendingConstants_.insert(key);  // N : INT := N + 1 must not recurse
+                Checked v = checkExpr(*decl.init->expr);
+                pendingConstants_.erase(key);
+                if (!v.ok) return bad(loc);
+                v = coerce(v, t, decl.init->expr->loc, "initial value");
+                if (!v.ok || !v.isConst) return bad(loc);
+                v.loc = loc;
+                return v;
+            }
+    }
+    return bad(loc);
 }
 
 Checked Checker::memberOf(Checked base, const std::string& member, const ast::Loc& loc) {
@@ -425,6 +462,8 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
     std::string key = upper(member);
     if (t->kind == TK::FunctionBlock) key = canonicalParameter(t->pou, key);
     if (key.size() > 2 && key[0] == '%' && key[1] == 'X') key = key.substr(2);  // x.%X3 is x.3
+    if (key.size() > 2 && key[0] == '%' && (key[1] == 'B' || key[1] == 'W' || key[1] == 'D' || key[1] == 'L'))
+        return partialAccess(base, key, member, loc);
     if ((isInteger(t->kind) || isBitString(t->kind)) && !key.empty() && !std::isdigit(static_cast<unsigned char>(key[0]))) {
         // CODESYS: w.BIT_FIVE with an integer CONSTANT as the bit number.
         VarSym* k = lookupVar(key);
@@ -513,10 +552,8 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
             mv->used = true;
             byRef = mv->byRef;
             if (byRef) ft = mv->type;
-            if (mv->section == ast::VarSection::Input && !insideOwnInstance(t->pou)) {
-                c.readOnly = true;
-                c.readOnlyWhy = fmt::format("'{}' is an input of '{}'; inputs are set in the call", mv->name, t->name);
-            }
+            // An input may be written from outside before the call (`fb.IN := TRUE;`):
+            // CODESYS and TwinCAT accept it (decision 0072).
             if (mv->section == ast::VarSection::Output && t->pou->kind == ast::PouKind::FunctionBlock && !insideOwnInstance(t->pou)) {
                 c.readOnly = true;
                 c.readOnlyWhy = fmt::format("'{}' is an output of '{}'; outputs are read-only outside the instance", mv->name, t->name);
@@ -545,6 +582,48 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
     return autoDeref(c);
 }
 
+// x.%B1, x.%W0, x.%D1, x.%L0: byte, word, double word or long word N of an
+// integer or bit string (IEC 61131-3 3rd ed. partial access; N counts from
+// the least significant end, as the value is stored little-endian).
+Checked Checker::partialAccess(Checked base, const std::string& key, const std::string& member, const ast::Loc& loc) {
+    const Type* t = base.type;
+    TK k = t->kind;
+    TK partKind = key[1] == 'B' ? TK::Byte : key[1] == 'W' ? TK::Word : key[1] == 'D' ? TK::DWord : TK::LWord;
+    const Type* part = types().elementary(partKind);
+    if (!(isInteger(k) || isBitString(k))) {
+        error(loc, fmt::format("partial access {} needs an integer or bit-string value, not {}", member, typeName(t)));
+        return bad(loc);
+    }
+    uint64_t index = 0;
+    for (size_t i = 2; i < key.size(); ++i) {
+        if (!std::isdigit(static_cast<unsigned char>(key[i])) || index > 64) { index = 99; break; }
+        index = index * 10 + static_cast<uint64_t>(key[i] - '0');
+    }
+    if ((index + 1) * part->size > t->size) {
+        error(loc, fmt::format("{} does not exist in {}", member, typeName(t)));
+        return bad(loc);
+    }
+    if (!base.isPlace) {
+        error(loc, "partial access needs a variable");
+        return bad(loc);
+    }
+    Checked c = base;
+    c.type = part;
+    c.isConst = false;
+    c.var = nullptr;
+    c.loc = loc;
+    const auto offset = static_cast<uint32_t>(index * part->size);
+    if (base.direct != Checked::Direct::None) {
+        c.directOffset = base.directOffset + offset;
+        c.node = directNode(pool(), c.direct, c.directOffset, c.directAbs, part);
+    } else {
+        c.direct = Checked::Direct::None;
+        c.node = loadFrom(pool().make<exec::OffsetPlace>(base.node, offset), part);
+    }
+    c.node->type = part;
+    return c;
+}
+
 Checked Checker::checkMember(const ast::Expr& e) {
     const ast::Expr& baseExpr = *e.kids[0];
     if (isNamespace(baseExpr) && !lookupVar(upper(baseExpr.name))) {
@@ -552,7 +631,10 @@ Checked Checker::checkMember(const ast::Expr& e) {
         plain.kind = ast::ExprKind::Name;
         plain.loc = e.nameLoc.line ? e.nameLoc : e.loc;
         plain.name = e.name;
-        return checkName(plain);
+        qualifiedAccess_ = true;
+        Checked c = checkName(plain);
+        qualifiedAccess_ = false;
+        return c;
     }
     if (baseExpr.kind == ast::ExprKind::Name) {
         std::string bkey = upper(baseExpr.name);
@@ -769,26 +851,34 @@ TK bitKindOf(int bits) {
         default: return TK::LWord;
     }
 }
-// Implicit conversion allowed from -> to (both elementary, not the same)?
-bool implicitOk(const Type* from, const Type* to) {
+// IEC 61131-3 implicit conversions (decision 0070): silent in both modes.
+bool iecImplicit(const Type* from, const Type* to) {
     TK f = from->kind, t = to->kind;
     if (f == t) return true;
-    if (isStringType(f) && f == t) return true;
-    if ((isInteger(f) || isBitString(f)) && (isInteger(t) || isBitString(t))) {
+    if (isInteger(f) && isInteger(t)) {
         IntInfo a = intInfo(f), b = intInfo(t);
-        if (isBitString(f) && isBitString(t)) return b.bits >= a.bits;
-        if (isBitString(f) || isBitString(t)) return b.bits >= a.bits;  // CODESYS: integer <-> bit string, not narrowing
         if (a.isSigned == b.isSigned) return b.bits >= a.bits;
-        if (!a.isSigned && b.isSigned) return b.bits > a.bits;
-        return false;  // signed -> unsigned
+        return !a.isSigned && b.isSigned && b.bits > a.bits;  // USINT -> INT, not USINT -> SINT
     }
+    if (isBitString(f) && isBitString(t)) return intInfo(t).bits >= intInfo(f).bits;
     if (f == TK::Bool && isBitString(t)) return true;
-    if ((isInteger(f) || isBitString(f)) && isReal(t)) return isInteger(f);
+    if (isInteger(f) && isReal(t)) return true;
     if (f == TK::Real && t == TK::LReal) return true;
     if (f == TK::Time && t == TK::LTime) return true;
-    if (f == TK::Char && t == TK::WChar) return false;
-    if (f == TK::Enum && (isInteger(t))) return true;  // CODESYS: an enumeration value is usable as its integer
     return false;
+}
+// Integer <-> bit string without narrowing (`w : WORD := i`): CODESYS converts
+// these silently, and so does strun in operands brought to a common type.
+bool bitStringMix(const Type* from, const Type* to) {
+    TK f = from->kind, t = to->kind;
+    if (!((isInteger(f) || isBitString(f)) && (isInteger(t) || isBitString(t)))) return false;
+    return intInfo(t).bits >= intInfo(f).bits;
+}
+// What CODESYS also converts implicitly (contract, "Implicit conversions"): any
+// integer, bit string, REAL or LREAL to any other, in either direction.
+bool codesysImplicit(const Type* from, const Type* to) {
+    auto numeric = [](TK k) { return isInteger(k) || isBitString(k) || isReal(k); };
+    return numeric(from->kind) && numeric(to->kind);
 }
 }  // namespace
 
@@ -867,8 +957,17 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         TK t = target->kind;
         if (isInteger(t) || isBitString(t) || t == TK::Bool) {
             if (!fitsIn(e.constInt, false, target)) {
-                error(loc, fmt::format("constant {} is outside the range of {}", e.constInt, typeName(target)));
-                return bad(loc);
+                // A literal that does not fit is an error; a constant expression
+                // (127 + 1) wraps like the run-time arithmetic, with a warning (decision 0090).
+                if (!e.foldedExpr || t == TK::Bool) {
+                    error(loc, fmt::format("constant {} is outside the range of {}", e.constInt, typeName(target)));
+                    return bad(loc);
+                }
+                Checked wrapped = convert(settle(e), target, loc);
+                if (!wrapped.ok) return wrapped;
+                if (!lenient(loc, fmt::format("constant {} does not fit {}; it wraps to {}", e.constInt, typeName(target), wrapped.constInt)))
+                    return bad(loc);
+                return wrapped;
             }
             Checked c = constInt(e.constInt, target, e.loc);
             return c;
@@ -908,6 +1007,18 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         e.type = target;  // POINTER TO x := ADR(...), any pointer, or 0
         return e;
     }
+    // CODESYS: a POINTER and an unsigned integer of the pointer's width convert
+    // into each other (temp : LWORD := pt; pt := temp), with a warning.
+    auto pointerWide = [](const Type* t) { return t->kind == TK::ULInt || t->kind == TK::LWord; };
+    if ((target->kind == TK::Pointer && pointerWide(from)) || (from->kind == TK::Pointer && pointerWide(target))) {
+        const bool promotion = std::strcmp(what, "operand") == 0;  // `pt < end`: compared as addresses
+        if (!promotion && !lenient(loc, fmt::format("implicit conversion from {} to {}", typeName(from), typeName(target)))) return bad(loc);
+        e.type = target;
+        if (e.node) e.node->type = target;
+        e.isPlace = false;
+        e.var = nullptr;
+        return e;
+    }
     if (target->kind == TK::Reference && from->kind == TK::Reference && sameType(from->target, target->target)) return e;
     if (target->kind == TK::Interface && (from->kind == TK::FunctionBlock || from->kind == TK::Interface)) {
         // An interface value is the address of an instance whose class implements it.
@@ -944,8 +1055,33 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         for (const Type* p = from->parent; p; p = p->parent)
             if (p == target) return e;  // derived struct to base: copies the base part
     }
-    if (isElementary(from->kind) && isElementary(target->kind) && implicitOk(from, target)) return convert(e, target, loc);
-    if (from->kind == TK::Enum && isInteger(target->kind) && implicitOk(from, target)) return convert(e, target, loc);
+    if (isElementary(from->kind) && isElementary(target->kind)) {
+        if (iecImplicit(from, target)) return convert(e, target, loc);
+        const bool promotion = std::strcmp(what, "operand") == 0;  // operands brought to their common type
+        if (promotion && bitStringMix(from, target)) return convert(e, target, loc);
+        if (codesysImplicit(from, target)) {
+            if (!lenient(loc, fmt::format("implicit conversion from {} to {}: possible loss of data", typeName(from), typeName(target)),
+                         fmt::format("; use {}_TO_{}", upper(from->name), upper(target->name))))
+                return bad(loc);
+            return convert(e, target, loc);
+        }
+    }
+    const bool enumToInt = from->kind == TK::Enum && (isInteger(target->kind) || isBitString(target->kind));
+    const bool intToEnum = target->kind == TK::Enum && (isInteger(from->kind) || isBitString(from->kind));
+    if (enumToInt || intToEnum) {
+        const Type* en = enumToInt ? from : target;
+        if (en->strictEnum) {
+            error(loc, fmt::format("{}: cannot convert {} to {} implicitly; '{}' has {{attribute 'strict'}}", what, typeName(from),
+                                   typeName(target), en->name));
+            return bad(loc);
+        }
+        if (!lenient(loc, fmt::format("implicit conversion from {} to {}", typeName(from), typeName(target)))) return bad(loc);
+        Checked c = convert(e, enumToInt ? target : en->base, loc);
+        if (!c.ok) return c;
+        c.type = target;
+        if (c.node) c.node->type = target;
+        return c;
+    }
     std::string hint;
     if (isElementary(from->kind) && isElementary(target->kind) && !isStringType(from->kind))
         hint = fmt::format("; use {}_TO_{}", upper(from->name == "TIME_OF_DAY" ? "TOD" : from->name == "DATE_AND_TIME" ? "DT" : from->name),
@@ -1006,6 +1142,9 @@ const Type* Checker::commonType(Checked& a, Checked& b, const ast::Loc& loc, boo
     }
     if (ka == TK::Enum && kb == TK::Enum) return ta == tb ? ta : fail();
     if ((ka == TK::Pointer || ka == TK::Interface) && (kb == TK::Pointer || kb == TK::Interface)) return ta;
+    // CODESYS: a pointer compares with an integer as the unsigned address (OSCAT's `pt < end`).
+    if ((ka == TK::Pointer && (isInteger(kb) || isBitString(kb))) || (kb == TK::Pointer && (isInteger(ka) || isBitString(ka))))
+        return types().elementary(TK::ULInt);
     if (ka == kb && isElementary(ka)) return ta;
     if (isTimeLike(ka) && isTimeLike(kb)) return types().elementary(TK::LTime);
     return fail();

@@ -114,6 +114,7 @@ Checked Checker::checkUnary(const ast::Expr& e) {
             // Wrapping negation: -(LINT min) must not be C++ signed overflow.
             Checked c = constInt(static_cast<int64_t>(uint64_t{0} - static_cast<uint64_t>(a.constInt)), a.type, e.loc);
             c.untypedInt = true;
+            c.foldedExpr = a.foldedExpr;
             return c;
         }
         if (a.isConst && a.type->kind == TK::ULInt && static_cast<uint64_t>(a.constInt) == (uint64_t(1) << 63)) {
@@ -211,6 +212,18 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
             if (!result) {
                 error(loc, fmt::format("operator '{}' is not defined for {} and {}", opText(op), typeName(a.type), typeName(b.type)));
                 return bad(loc);
+            }
+            if (isDateLike(ka) || isDateLike(kb)) {
+                // One rule for `dt - T#345ms` and SUB_DT_TIME (decision 0093).
+                auto fn = builtins_.find(op == ast::Op::Add ? kDateAddOperator : kDateSubOperator);
+                if (fn != builtins_.end()) {
+                    CallArgs call;
+                    call.name = opText(op);
+                    call.args = {a, b};
+                    call.names = {"", ""};
+                    call.loc = loc;
+                    return fn->second(*this, call);
+                }
             }
             // Bring both operands to nanoseconds-or-unit of the result.
             int64_t sr = nanosPerUnit(result->kind);
@@ -341,6 +354,7 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
         if (real) f.untypedReal = true;
         else f.untypedInt = true;
         if (f.untypedInt) { f.type = types().elementary(f.constInt >= INT32_MIN && f.constInt <= INT32_MAX ? TK::DInt : TK::LInt); f.node->type = f.type; }
+        f.foldedExpr = true;
     }
     return f;
 }

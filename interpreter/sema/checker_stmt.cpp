@@ -94,7 +94,9 @@ exec::Stmt* Checker::assignChecked(Checked target, Checked value, const ast::Loc
         return nullptr;
     }
     const Type* t = target.type;
-    if (t->kind == TK::Enum && !(value.type == t)) {
+    // An integer converts to an enumeration implicitly (a warning, an error with
+    // --strict or {attribute 'strict'}: coerce); another enumeration never does.
+    if (t->kind == TK::Enum && !(value.type == t) && !(value.untypedInt || isInteger(value.type->kind) || isBitString(value.type->kind))) {
         error(value.loc, fmt::format("cannot assign {} to {} (an enumeration takes only its own values)", typeName(value.type), typeName(t)));
         return nullptr;
     }
@@ -352,6 +354,8 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                     if (upper(prog.name) == upper(callee.name)) maybeFb = true;
             }
             if (callee.kind == ast::ExprKind::Name && pou_ && pou_->result && upper(callee.name) == upper(pou_->result->name)) maybeFb = false;
+            // Lib.F(): a namespace-qualified function, not a member of an instance.
+            if (callee.kind == ast::ExprKind::Member && isNamespace(*callee.kids[0]) && !lookupVar(upper(callee.kids[0]->name))) maybeFb = false;
             if (maybeFb) {
                 bool isMethod = false;
                 if (callee.kind == ast::ExprKind::Member) {

@@ -15,6 +15,8 @@
 #include "runtime/machine.h"
 #include "runtime/task_spec.h"
 
+namespace strun::testing { class TestRegistry; }
+
 namespace strun::sema {
 
 struct ProgramInstance {
@@ -61,6 +63,9 @@ struct ProgramModel {
     // Owners of what the checker declared: the dump and the run refer to them.
     std::vector<std::unique_ptr<PouInfo>> pouStore;
     std::vector<std::unique_ptr<VarSym>> globalStore;
+    // The TcUnit API's state (interpreter/testing): created by the compile
+    // pipeline before checking, referenced by the test nodes.
+    std::shared_ptr<testing::TestRegistry> tests;
 
     uint8_t* allocate(size_t size) {
         blocks.push_back(std::make_unique<uint8_t[]>(size ? size : 1));

@@ -40,6 +40,8 @@ struct VarSym {
     PouInfo* owner = nullptr;    // POU the variable belongs to (null for globals)
     VarSym* global = nullptr;    // VAR_EXTERNAL: the global it names
     bool used = false;
+    // Global of a list with {attribute 'qualified_only'}: only `LIST.name` names it.
+    std::string qualifiedOnlyList;
     // CONSTANT with a constant initial value: folded into uses.
     bool hasConstValue = false;
     int64_t constInt = 0;
@@ -70,6 +72,10 @@ struct PouInfo {
     const ast::Property* property = nullptr;  // property accessor (METHOD): the property
     bool isSetter = false;
     int slot = -1;                            // METHOD: project-wide method slot of its name
+    // Instance variables initialised with an address (`p : POINTER TO INT := ADR(x)`):
+    // assigned once per instance before the first cycle (checker_fb_init.cpp).
+    std::vector<VarSym*> addressInits;
+    exec::Stmt* addressInitCode = nullptr;
 };
 
 // An expression after checking: its node, type, and what the checker knows
@@ -83,6 +89,7 @@ struct Checked {
     double constReal = 0;
     bool untypedInt = false;   // integer literal not yet given a type (ANY_INT)
     bool untypedReal = false;  // real literal not yet given a type (ANY_REAL)
+    bool foldedExpr = false;   // an untyped constant computed by an operator (127 + 1), not a literal
     bool flexibleLiteral = false;  // not constant, but computed from untyped literals only
                                    // (SEL(g, 1, 2), 10 / 0): converts to any numeric type it meets
     bool isPlace = false;      // designates storage (can be assigned / passed by reference)

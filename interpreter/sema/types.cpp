@@ -106,6 +106,7 @@ TypeTable::TypeTable() {
     names_["DT"] = elementary(TK::Dt);
     names_["LTOD"] = elementary(TK::LTod);
     names_["LDT"] = elementary(TK::LDt);
+    names_["BIT"] = elementary(TK::Bool);  // CODESYS/TwinCAT structure bits: a BOOL here (decision 0091)
     names_.erase("ENUM");
     names_.erase("ARRAY");
     names_.erase("STRUCT");

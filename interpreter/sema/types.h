@@ -71,6 +71,10 @@ struct Type {
     const Type* target = nullptr;
     // default initial value of an Enum (first enumerator unless given)
     int64_t enumDefault = 0;
+    // Enum with {attribute 'strict'}: never converts to or from an integer implicitly.
+    bool strictEnum = false;
+    // Enum / global list with {attribute 'qualified_only'}: its names must be qualified.
+    bool qualifiedOnly = false;
     // Initial image of a value of this type when it is not all zeros
     // (structs with member initialisers, enums, aliases with an initial value, FB instances).
     std::vector<uint8_t> defaultImage;

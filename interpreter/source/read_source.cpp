@@ -4,35 +4,18 @@
 #include <cstdio>
 #include <memory>
 
-#include <sys/stat.h>
-
 namespace strun {
 
-namespace {
-std::size_t projectBytes(const SourceSet& sources) {
-    std::size_t total = 0;
-    for (int k = 0; k < sources.size(); ++k) total += sources.file(k).text.size();
-    return total;
-}
-}  // namespace
-
-bool readSourceFile(const std::string& path, SourceSet& sources, int& index, std::string& error) {
-    struct stat info {};
-    if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) {
-        error = "'" + path + "' is a directory, not a source file";
-        return false;
-    }
+bool readSourceText(const std::string& path, std::size_t projectBytes, std::string& text, std::string& error) {
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
     if (!file) {
         error = "cannot open '" + path + "'";
         return false;
     }
-    // Read at most one byte past the limit: a huge file, a device like
-    // /dev/zero or an endless pipe stops there instead of exhausting memory.
-    const std::size_t already = projectBytes(sources);
-    const std::size_t room = already >= kMaxProjectSourceBytes ? 0 : kMaxProjectSourceBytes - already;
+    // Read at most one byte past the limit.
+    const std::size_t room = projectBytes >= kMaxProjectSourceBytes ? 0 : kMaxProjectSourceBytes - projectBytes;
     const std::size_t limit = std::min(kMaxSourceFileBytes, room);
-    std::string text;
+    text.clear();
     char buffer[65536];
     while (text.size() <= limit) {
         std::size_t n = std::fread(buffer, 1, sizeof buffer, file.get());
@@ -49,7 +32,6 @@ bool readSourceFile(const std::string& path, SourceSet& sources, int& index, std
                     : "the source files together are larger than the limit of " + std::to_string(kMaxProjectSourceBytes >> 20) + " MiB";
         return false;
     }
-    index = sources.add(path, std::move(text));
     return true;
 }
 

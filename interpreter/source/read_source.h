@@ -1,20 +1,20 @@
-// Reading the source files named on the command line, within the input
-// limits of docs/limits.md. One function, so that the rule "a directory is
-// an error" can later become "a directory means every source under it".
+// Reading one source file within the input limits of docs/limits.md: a
+// huge file, a device like /dev/zero or an endless pipe stops at the limit
+// instead of exhausting memory. project_inputs.cpp reads every file of a
+// project (named or found under a directory) through it.
 #pragma once
 
 #include <cstddef>
 #include <string>
-
-#include "interpreter/source/source_set.h"
 
 namespace strun {
 
 inline constexpr std::size_t kMaxSourceFileBytes = std::size_t{4} << 20;     // one file
 inline constexpr std::size_t kMaxProjectSourceBytes = std::size_t{8} << 20;  // all files of a project together
 
-// Adds `path` to `sources` (its index in `index`); false with `error` set when
-// it cannot be read, is not a file, or would pass a size limit.
-bool readSourceFile(const std::string& path, SourceSet& sources, int& index, std::string& error);
+// Reads `path` into `text`, given that the project's files read so far hold
+// `projectBytes`; false with `error` set when it cannot be read or would pass
+// a size limit.
+bool readSourceText(const std::string& path, std::size_t projectBytes, std::string& text, std::string& error);
 
 }  // namespace strun

@@ -3,6 +3,7 @@
 // compiler style: FILE:LINE:COL: error: MESSAGE.
 #pragma once
 
+#include <algorithm>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -11,15 +12,33 @@
 
 namespace strun {
 
+// Where one line of a converted source (ST assembled from an XML file) comes
+// from: line `line` of the original file, columns shifted by `colShift`; a
+// line strun wrote itself (END_FUNCTION_BLOCK, a declaration built from XML
+// elements) points at `fixedCol` of the element it was made from.
+struct LineOrigin {
+    int line = 1;
+    int colShift = 0;
+    int fixedCol = -1;
+};
+
 struct SourceFile {
     std::string path;  // as given on the command line
-    std::string text;
+    std::string text;  // ST text (for XML inputs: the ST assembled from them)
+    std::vector<LineOrigin> origins;  // empty for ST files; else one per line of `text`
+
+    // The position in the file the user has (the XML line and column) of a position in `text`.
+    std::pair<int, int> original(int line, int col) const {
+        if (origins.empty() || line < 1) return {line, col};
+        const LineOrigin& o = origins[std::min<size_t>(static_cast<size_t>(line), origins.size()) - 1];
+        return {o.line, o.fixedCol >= 0 ? o.fixedCol : col + o.colShift};
+    }
 };
 
 class SourceSet {
 public:
-    int add(std::string path, std::string text) {
-        files_.push_back({std::move(path), std::move(text)});
+    int add(std::string path, std::string text, std::vector<LineOrigin> origins = {}) {
+        files_.push_back({std::move(path), std::move(text), std::move(origins)});
         return static_cast<int>(files_.size()) - 1;
     }
     const SourceFile& file(int index) const { return files_.at(static_cast<size_t>(index)); }
@@ -51,10 +70,10 @@ public:
     // FILE:LINE:COL: error: MESSAGE, one per line, in the order reported.
     void print(std::ostream& out, const SourceSet& sources) const {
         for (const auto& m : messages_) {
-            const std::string& path = (m.loc.file >= 0 && m.loc.file < sources.size())
-                                          ? sources.file(m.loc.file).path
-                                          : std::string("<unknown>");
-            out << path << ':' << (m.loc.line > 0 ? m.loc.line : 1) << ':' << (m.loc.col > 0 ? m.loc.col : 1)
+            const bool known = m.loc.file >= 0 && m.loc.file < sources.size();
+            const std::string& path = known ? sources.file(m.loc.file).path : std::string("<unknown>");
+            auto [line, col] = known ? sources.file(m.loc.file).original(m.loc.line, m.loc.col) : std::pair<int, int>{m.loc.line, m.loc.col};
+            out << path << ':' << (line > 0 ? line : 1) << ':' << (col > 0 ? col : 1)
                 << ": " << (m.severity == Severity::Error ? "error" : "warning") << ": " << m.message << '\n';
         }
         if (dropped_ > 0) out << "note: " << dropped_ << " further messages suppressed\n";

@@ -36,6 +36,9 @@ std::vector<exec::Expr*> nodesOf(const std::vector<Checked>& v, size_t from = 0)
 Checked checkSel(Checker& ck, CallArgs& call) {
     std::vector<Checked> a;
     if (!bindFixed(ck, call, {{"G"}, {"IN0"}, {"IN1"}}, a)) return ck.bad(call.loc);
+    // SEL(1, a, b): the literal 0 or 1 is a BOOL, as in `b : BOOL := 1`.
+    if (a[0].untypedInt) a[0] = ck.coerce(a[0], ck.types().elementary(TK::Bool), a[0].loc, "G");
+    if (!a[0].ok) return ck.bad(call.loc);
     if (a[0].type->kind != TK::Bool) return argError(ck, a[0], call.name, "G must be BOOL");
     std::vector<Checked> ins = {a[1], a[2]};
     const Type* t = unify(ck, call, ins, false, !a[0].isConst);

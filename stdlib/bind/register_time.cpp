@@ -242,6 +242,13 @@ Checked checkDayOfWeek(Checker& ck, CallArgs& call) {
 }  // namespace
 
 void registerTime(Checker& ck) {
+    // The operators `+` and `-` on dates and times of day use the very rule of
+    // ADD_DT_TIME / SUB_DT_TIME (issue 8, defect 9). The names contain a space,
+    // so no ST program can call them.
+    for (TimeOp op : {TimeOp::Add, TimeOp::Sub})
+        ck.addBuiltin(op == TimeOp::Add ? Checker::kDateAddOperator : Checker::kDateSubOperator, [op](Checker& ck, CallArgs& call) -> Checked {
+            return timeArithmetic(ck, call, op, call.args[0], call.args[1]);
+        });
     addNamedArith(ck, "ADD_TIME", TimeOp::Add, TK::Time, TK::Time);
     addNamedArith(ck, "ADD_LTIME", TimeOp::Add, TK::LTime, TK::LTime);
     addNamedArith(ck, "ADD_TOD_TIME", TimeOp::Add, TK::Tod, TK::Time);
@@ -291,6 +298,12 @@ void registerTime(Checker& ck) {
 void registerClock(Checker& ck) {
     // Internal: the timer blocks of stdlib/st/timers.st read the PLC clock through these.
     ck.addBuiltin("__PLC_TIME", [](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);
+        return makeResult(ck, ck.pool().make<PlcTimeMsNode>(), ck.types().elementary(TK::Time), call, a, false);
+    });
+    // CODESYS/TwinCAT TIME(): the PLC time since start, in milliseconds.
+    ck.addBuiltin("TIME", [](Checker& ck, CallArgs& call) -> Checked {
         std::vector<Checked> a;
         if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);
         return makeResult(ck, ck.pool().make<PlcTimeMsNode>(), ck.types().elementary(TK::Time), call, a, false);

@@ -15,7 +15,7 @@ TEST_CASE("syntax errors: what was found and what was expected", "[errors]") {
     CHECK(parse("PROGRAM P\nWHILE x DO\n  x := 1;\nEND_FOR\nEND_PROGRAM")->errors() ==
           "4:1: syntax error: unexpected 'END_FOR', expected 'END_WHILE'\n");
     CHECK(parse("PROGRAM P\nx := 1;\n")->errors() ==
-          "3:1: syntax error: unexpected end of file, expected 'END_PROGRAM', 'METHOD' or 'PROPERTY'\n");
+          "3:1: syntax error: unexpected end of file, expected 'END_PROGRAM', 'METHOD', 'ACTION' or 'PROPERTY'\n");
     CHECK(parse("TYPE X : ; END_TYPE")->errors() == "1:10: syntax error: unexpected ';', expected a type\n");
     CHECK(parse("VAR_GLOBAL a INT; END_VAR")->errors() ==
           "1:14: syntax error: unexpected 'INT', expected 'AT', ',' or ':'\n");
@@ -77,7 +77,7 @@ TEST_CASE("syntax errors: at most one per line, and a cap per file", "[errors]")
 TEST_CASE("syntax errors: lexical errors at their opening location", "[errors]") {
     CHECK(parse("PROGRAM P\nx := 1;\n  (* open (* nested *) never closed\nEND_PROGRAM\n")->errors() ==
           "3:3: syntax error: unterminated comment: '(*' has no matching '*)'\n"
-          "5:1: syntax error: unexpected end of file, expected 'END_PROGRAM', 'METHOD' or 'PROPERTY'\n");
+          "5:1: syntax error: unexpected end of file, expected 'END_PROGRAM', 'METHOD', 'ACTION' or 'PROPERTY'\n");
     CHECK(parse("PROGRAM P\n/* open\nEND_PROGRAM\n")->errors().rfind(
               "2:1: syntax error: unterminated comment: '/*' has no matching '*/'\n", 0) == 0);
     CHECK(parse("{attribute 'x'\nPROGRAM P END_PROGRAM")->errors().rfind(

@@ -76,10 +76,13 @@ struct Compiled {
     }
 };
 
-inline std::unique_ptr<Compiled> compileSt(const std::string& source) {
+// `strict`: --strict (IEC typing; the default is CODESYS-compatible, decision 0090).
+inline std::unique_ptr<Compiled> compileSt(const std::string& source, bool strict = false) {
     auto c = std::make_unique<Compiled>();
     c->userFile = c->sources.add(kTestFile, source);
-    c->model = project::compileProject(c->sources, {c->userFile}, c->log);
+    sema::CompileOptions options;
+    options.strict = strict;
+    c->model = project::compileProject(c->sources, {c->userFile}, c->log, options);
     return c;
 }
 
@@ -158,8 +161,8 @@ inline RunOutcome runMain(const std::string& vars, const std::string& body, uint
 }
 
 // Compiles PROGRAM Main with the given declarations and body (for checker tests).
-inline std::unique_ptr<Compiled> compileMain(const std::string& vars, const std::string& body) {
-    return compileSt("PROGRAM Main\nVAR\n" + vars + "\nEND_VAR\n" + body + "\nEND_PROGRAM\n");
+inline std::unique_ptr<Compiled> compileMain(const std::string& vars, const std::string& body, bool strict = false) {
+    return compileSt("PROGRAM Main\nVAR\n" + vars + "\nEND_VAR\n" + body + "\nEND_PROGRAM\n", strict);
 }
 
 }  // namespace strun::test

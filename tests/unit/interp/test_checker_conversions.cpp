@@ -11,13 +11,13 @@ using namespace strun::test;
 namespace {
 
 // `dst := src;` with src of type `from` and dst of type `to`.
-std::unique_ptr<Compiled> assignBetween(const std::string& from, const std::string& to) {
-    return compileMain("src : " + from + "; dst : " + to + ";", "dst := src;");
+std::unique_ptr<Compiled> assignBetween(const std::string& from, const std::string& to, bool strict = false) {
+    return compileMain("src : " + from + "; dst : " + to + ";", "dst := src;", strict);
 }
 
 }  // namespace
 
-TEST_CASE("implicit widenings are accepted", "[checker][conversion]") {
+TEST_CASE("implicit widenings are accepted, silently, also with --strict", "[checker][conversion]") {
     const std::pair<const char*, const char*> allowed[] = {
         {"INT", "DINT"},    {"USINT", "INT"},   {"SINT", "LREAL"}, {"REAL", "LREAL"}, {"BYTE", "WORD"},
         {"SINT", "INT"},    {"INT", "LINT"},    {"UINT", "UDINT"}, {"UINT", "DINT"},  {"WORD", "DWORD"},
@@ -25,14 +25,15 @@ TEST_CASE("implicit widenings are accepted", "[checker][conversion]") {
         {"USINT", "LINT"},  {"UDINT", "LINT"},
     };
     for (const auto& [from, to] : allowed) {
-        auto c = assignBetween(from, to);
+        auto c = assignBetween(from, to, true);
         INFO(from << " -> " << to << "\n" << c->printed());
         CHECK(c->ok());
         CHECK(c->errors().empty());
+        CHECK(c->warnings().empty());
     }
 }
 
-TEST_CASE("narrowing and unrelated implicit conversions are rejected", "[checker][conversion]") {
+TEST_CASE("with --strict, narrowing and unrelated implicit conversions are rejected", "[checker][conversion]") {
     const std::pair<const char*, const char*> rejected[] = {
         {"DINT", "INT"},    {"REAL", "INT"},   {"BOOL", "INT"},    {"INT", "BOOL"},   {"STRING", "INT"},
         {"INT", "UINT"},    {"SINT", "USINT"}, {"DINT", "UDINT"},  {"LINT", "ULINT"}, {"LREAL", "REAL"},
@@ -40,7 +41,7 @@ TEST_CASE("narrowing and unrelated implicit conversions are rejected", "[checker
         {"UINT", "INT"},    {"REAL", "DINT"},  {"DATE", "DT"},     {"CHAR", "WCHAR"}, {"LREAL", "LINT"},
     };
     for (const auto& [from, to] : rejected) {
-        auto c = assignBetween(from, to);
+        auto c = assignBetween(from, to, true);
         INFO(from << " -> " << to << "\n" << c->printed());
         CHECK_FALSE(c->ok());
         CHECK(c->errors().size() == 1);
@@ -48,10 +49,46 @@ TEST_CASE("narrowing and unrelated implicit conversions are rejected", "[checker
 }
 
 TEST_CASE("a rejected conversion names both types and suggests the conversion function", "[checker][conversion]") {
-    auto c = assignBetween("DINT", "INT");
+    auto c = assignBetween("DINT", "INT", true);
     INFO(c->printed());
     REQUIRE_FALSE(c->ok());
-    CHECK(c->hasError("cannot convert DINT to INT implicitly; use DINT_TO_INT"));
+    CHECK(c->hasError("implicit conversion from DINT to INT: possible loss of data; use DINT_TO_INT"));
+    auto d = assignBetween("DATE", "DT");
+    INFO(d->printed());
+    CHECK(d->hasError("cannot convert DATE to DATE_AND_TIME implicitly; use DATE_TO_DT"));
+}
+
+// Contract "Implicit conversions" / decision 0090: what CODESYS accepts.
+TEST_CASE("by default, numeric narrowing compiles with a warning; other kinds stay errors", "[checker][conversion]") {
+    const std::pair<const char*, const char*> warned[] = {
+        {"DINT", "INT"}, {"REAL", "INT"}, {"INT", "UINT"}, {"LREAL", "REAL"}, {"WORD", "BYTE"},
+        {"UINT", "INT"}, {"LREAL", "LINT"}, {"INT", "WORD"}, {"DWORD", "REAL"},
+    };
+    for (const auto& [from, to] : warned) {
+        auto c = assignBetween(from, to);
+        INFO(from << " -> " << to << "\n" << c->printed());
+        CHECK(c->ok());
+        CHECK(c->hasWarning(std::string("implicit conversion from ") + from + " to " + to + ": possible loss of data"));
+    }
+    const std::pair<const char*, const char*> rejected[] = {
+        {"BOOL", "INT"}, {"INT", "BOOL"}, {"STRING", "INT"}, {"INT", "STRING"}, {"TIME", "DINT"},
+        {"DINT", "TIME"}, {"LTIME", "TIME"}, {"DATE", "DT"}, {"CHAR", "WCHAR"},
+    };
+    for (const auto& [from, to] : rejected) {
+        auto c = assignBetween(from, to);
+        INFO(from << " -> " << to << "\n" << c->printed());
+        CHECK_FALSE(c->ok());
+    }
+}
+
+TEST_CASE("a constant expression that does not fit wraps with a warning, an error with --strict", "[checker][literal]") {
+    auto r = runMain("x : SINT;", "x := 127 + 1;");
+    INFO(r.compiled->printed());
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "x") == -128);
+    CHECK(r.compiled->hasWarning("constant 128 does not fit SINT; it wraps to -128"));
+    auto s = compileMain("x : SINT;", "x := 127 + 1;", true);
+    CHECK(s->hasError("constant 128 does not fit SINT"));
 }
 
 TEST_CASE("the explicit conversion function makes a rejected assignment legal", "[checker][conversion]") {
@@ -94,9 +131,14 @@ TEST_CASE("an integer literal outside the target type is an error", "[checker][l
 }
 
 TEST_CASE("an untyped real literal adopts REAL or LREAL and is not an integer", "[checker][literal]") {
-    auto bad = compileMain("i : INT;", "i := 1.5;");
+    auto bad = compileMain("i : INT;", "i := 1.5;", true);
     INFO(bad->printed());
     CHECK_FALSE(bad->ok());
+    auto warned = runMain("i : INT;", "i := 2.6;");  // the default converts like REAL_TO_INT, with a warning
+    INFO(warned.compiled->printed());
+    REQUIRE(warned.ok());
+    CHECK(warned.var("Main", "i") == 3);
+    CHECK(warned.compiled->hasWarning("implicit conversion from LREAL to INT"));
     auto r = runMain("r : REAL; l : LREAL;", "r := 0.1; l := 0.1;");
     INFO(r.compiled->printed());
     REQUIRE(r.ok());

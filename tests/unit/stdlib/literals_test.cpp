@@ -21,11 +21,13 @@ TEST_CASE("integer literals: decimal and based forms", "[literals]") {
     CHECK(parseIntegerLiteral("16#FFFF_FFFF_FFFF_FFFF").value() == UINT64_MAX);
     CHECK(parseIntegerLiteral("2#" + std::string(64, '1')).value() == UINT64_MAX);
     CHECK(parseIntegerLiteral("007").value() == 7);
+    CHECK(parseIntegerLiteral("10#0").value() == 0);  // CODESYS/TwinCAT decimal base written out
+    CHECK(parseIntegerLiteral("10#1_234").value() == 1234);
 }
 
 TEST_CASE("integer literals: errors", "[literals]") {
     for (const char* bad : {"", "_1", "1_", "1__0", "16#", "16#_F", "16#F_", "16#G", "8#8", "2#102",
-                            "10#5", "#5", "1a", "12 ", "-1", "+1", "1.0"}) {
+                            "11#5", "#5", "1a", "12 ", "-1", "+1", "1.0"}) {
         INFO(bad);
         const Result<uint64_t> parsed = parseIntegerLiteral(bad);
         CHECK_FALSE(parsed.ok());

@@ -1,0 +1,29 @@
+// strun test [options] FILE...|DIR: runs the TcUnit / CfUnit unit tests of a
+// project (contract "Tests: strun test"; docs/testing.md).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/command_line.h"
+
+namespace strun::cli {
+
+// What `test` takes besides the FILEs, compile options and stimulus of CommandLine.
+struct TestCommandLine {
+    std::optional<int64_t> stmtCost;    // --stmt-cost, ns
+    std::optional<int64_t> timeout;     // --timeout, ns
+    std::string junit;                  // --junit FILE
+    std::string filter;                 // --filter PATTERN
+    bool list = false;                  // --list
+};
+
+CLI::App* addTestCommand(CLI::App& app, CommandLine& line, TestCommandLine& test);
+
+// Exit status: 0 every test passed, 1 a test failed or the project does not compile, 2 bad command line.
+int testCommand(const CommandLine& line, const TestCommandLine& test);
+
+}  // namespace strun::cli

@@ -1,0 +1,344 @@
+// PLCopen TC6 XML (v2.01, as CODESYS, Beremiz/OpenPLC and others export it):
+// data types, POUs with their interface and ST body, actions, CODESYS methods
+// and global variable lists (addData), configurations with resources, tasks
+// and program instances. Declarations are written as ST lines pointing at
+// the XML element they come from; bodies are copied with their positions.
+#include <cctype>
+#include <cstring>
+
+#include <pugixml.hpp>
+
+#include "interpreter/source/st_assembler.h"
+#include "interpreter/source/xml_inputs.h"
+
+namespace strun::source {
+
+namespace {
+
+constexpr const char* kTc6Namespace = "http://www.plcopen.org/xml/tc6_0201";
+constexpr int kMaxTypeDepth = 64;  // nested type elements: far beyond real projects
+
+// Element name without a namespace prefix (`xhtml:p` -> `p`).
+std::string localName(const pugi::xml_node& n) {
+    std::string s = n.name();
+    size_t colon = s.find(':');
+    return colon == std::string::npos ? s : s.substr(colon + 1);
+}
+
+pugi::xml_node child(const pugi::xml_node& n, const char* name) {
+    for (pugi::xml_node c : n.children())
+        if (c.type() == pugi::node_element && localName(c) == name) return c;
+    return {};
+}
+
+std::vector<pugi::xml_node> children(const pugi::xml_node& n, const char* name) {
+    std::vector<pugi::xml_node> out;
+    for (pugi::xml_node c : n.children())
+        if (c.type() == pugi::node_element && localName(c) == name) out.push_back(c);
+    return out;
+}
+
+pugi::xml_node firstElement(const pugi::xml_node& n) {
+    for (pugi::xml_node c : n.children())
+        if (c.type() == pugi::node_element) return c;
+    return {};
+}
+
+// ISO 8601 duration (PT0.01S, PT1H2M) or an IEC literal (T#10ms) -> an IEC literal.
+std::string durationLiteral(std::string text) {
+    if (text.size() > 2 && (text[0] == 'P' || text[0] == 'p')) {
+        std::string out = "T#";
+        bool inTime = false;
+        std::string number;
+        for (size_t i = 1; i < text.size(); ++i) {
+            char c = static_cast<char>(std::toupper(static_cast<unsigned char>(text[i])));
+            if (c == 'T') { inTime = true; continue; }
+            if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') { number.push_back(c); continue; }
+            const char* unit = c == 'D' ? "d" : c == 'H' ? "h" : (c == 'M' && inTime) ? "m" : c == 'S' ? "s" : nullptr;
+            if (!unit || number.empty()) return "T#0s";
+            out += number + unit;
+            number.clear();
+        }
+        return out.size() > 2 ? out : "T#0s";
+    }
+    return text;
+}
+
+struct Reader {
+    const std::string& xml;
+    TextPositions positions;
+    StAssembler out;
+    Converted result;
+
+    explicit Reader(const std::string& x) : xml(x), positions(x) {}
+
+    std::pair<int, int> where(const pugi::xml_node& n) const { return positions.at(n.offset_debug()); }
+    void written(const pugi::xml_node& n, const std::string& st) {
+        auto [line, col] = where(n);
+        out.written(st, line, col);
+    }
+    void error(const pugi::xml_node& n, std::string message) {
+        auto [line, col] = where(n);
+        result.errors.push_back({line, col, std::move(message)});
+    }
+
+    // <type><INT/></type>, <derived name="T"/>, <array>, <string length>, <pointer>, <enum>, <struct>, subranges.
+    std::string typeText(const pugi::xml_node& holder, int depth = 0) {
+        pugi::xml_node t = firstElement(holder);
+        if (!t || depth > kMaxTypeDepth) return "INT";
+        std::string k = localName(t);
+        if (k == "derived") return t.attribute("name").value();
+        if (k == "string" || k == "wstring") {
+            std::string s = k == "string" ? "STRING" : "WSTRING";
+            if (t.attribute("length")) s += std::string("[") + t.attribute("length").value() + "]";
+            return s;
+        }
+        if (k == "array") {
+            std::string dims;
+            for (pugi::xml_node d : children(t, "dimension"))
+                dims += (dims.empty() ? "" : ", ") + std::string(d.attribute("lower").value()) + ".." + d.attribute("upper").value();
+            return "ARRAY[" + dims + "] OF " + typeText(child(t, "baseType"), depth + 1);
+        }
+        if (k == "pointer") return "POINTER TO " + typeText(child(t, "baseType"), depth + 1);
+        if (k == "subrangeSigned" || k == "subrangeUnsigned") {
+            pugi::xml_node r = child(t, "range");
+            return typeText(child(t, "baseType"), depth + 1) + "(" + r.attribute("lower").value() + ".." + r.attribute("upper").value() + ")";
+        }
+        if (k == "enum") {
+            std::string values;
+            for (pugi::xml_node v : children(child(t, "values"), "value")) {
+                values += (values.empty() ? "" : ", ") + std::string(v.attribute("name").value());
+                if (v.attribute("value")) values += std::string(" := ") + v.attribute("value").value();
+            }
+            std::string s = "(" + values + ")";
+            if (pugi::xml_node b = child(t, "baseType")) s += " " + typeText(b, depth + 1);
+            return s;
+        }
+        if (k == "struct") return "STRUCT";  // members follow on their own lines (dataType)
+        // Elementary types are written as elements of their own name: <INT/>, <BOOL/>, <TIME/>...
+        std::string upper;
+        for (char c : k) upper.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+        return upper;
+    }
+
+    // <initialValue><simpleValue value="5"/></initialValue>, arrayValue, structValue.
+    std::string valueText(const pugi::xml_node& v, int depth = 0) {
+        if (!v || depth > kMaxTypeDepth) return "";
+        std::string k = localName(v);
+        if (k == "initialValue" || k == "value") return valueText(firstElement(v), depth + 1);
+        if (k == "simpleValue") return v.attribute("value").value();
+        if (k == "arrayValue") {
+            std::string items;
+            for (pugi::xml_node item : children(v, "value")) {
+                std::string one = valueText(firstElement(item), depth + 1);
+                if (item.attribute("repetitionValue")) one = std::string(item.attribute("repetitionValue").value()) + "(" + one + ")";
+                items += (items.empty() ? "" : ", ") + one;
+            }
+            return "[" + items + "]";
+        }
+        if (k == "structValue") {
+            std::string items;
+            for (pugi::xml_node item : children(v, "value"))
+                items += (items.empty() ? "" : ", ") + std::string(item.attribute("member").value()) + " := " + valueText(firstElement(item), depth + 1);
+            return "(" + items + ")";
+        }
+        return "";
+    }
+
+    void variable(const pugi::xml_node& var) {
+        std::string line = std::string("    ") + var.attribute("name").value();
+        if (var.attribute("address")) line += std::string(" AT ") + var.attribute("address").value();
+        line += " : " + typeText(child(var, "type"));
+        if (pugi::xml_node init = child(var, "initialValue")) {
+            std::string v = valueText(init);
+            if (!v.empty()) line += " := " + v;
+        }
+        written(var, line + ";");
+    }
+
+    void varSection(const pugi::xml_node& section, const char* keyword) {
+        std::string head = keyword;
+        if (section.attribute("constant").as_bool()) head += " CONSTANT";
+        if (section.attribute("retain").as_bool()) head += " RETAIN";
+        if (section.attribute("persistent").as_bool()) head += " PERSISTENT";
+        written(section, head);
+        for (pugi::xml_node v : children(section, "variable")) variable(v);
+        written(section, "END_VAR");
+    }
+
+    void interfaceOf(const pugi::xml_node& itf) {
+        static const std::pair<const char*, const char*> sections[] = {
+            {"inputVars", "VAR_INPUT"}, {"outputVars", "VAR_OUTPUT"}, {"inOutVars", "VAR_IN_OUT"},
+            {"externalVars", "VAR_EXTERNAL"}, {"localVars", "VAR"}, {"tempVars", "VAR_TEMP"}, {"globalVars", "VAR_GLOBAL"}};
+        for (pugi::xml_node s : itf.children()) {
+            if (s.type() != pugi::node_element) continue;
+            const std::string k = localName(s);
+            for (const auto& [tag, keyword] : sections)
+                if (k == tag) varSection(s, keyword);
+        }
+    }
+
+    // The ST text of <body><ST>...</ST></body> (inside xhtml elements, CDATA or text).
+    void bodyOf(const pugi::xml_node& owner, const std::string& pouName) {
+        pugi::xml_node body = child(owner, "body");
+        if (!body) return;
+        pugi::xml_node lang = firstElement(body);
+        if (!lang) return;
+        const std::string k = localName(lang);
+        if (k != "ST") {
+            error(lang, "'" + pouName + "' has a body in " + k + "; strun runs Structured Text (ST) bodies only");
+            return;
+        }
+        copyText(lang, 0);
+    }
+
+    void copyText(const pugi::xml_node& n, int depth) {
+        if (depth > kMaxTypeDepth) return;
+        for (pugi::xml_node c : n.children()) {
+            if (c.type() == pugi::node_cdata || c.type() == pugi::node_pcdata) {
+                auto [line, col] = where(c);
+                out.verbatim(c.value(), line, col);
+            } else if (c.type() == pugi::node_element) {
+                copyText(c, depth + 1);
+            }
+        }
+    }
+
+    void dataType(const pugi::xml_node& dt) {
+        pugi::xml_node base = child(dt, "baseType");
+        pugi::xml_node t = firstElement(base);
+        written(dt, "TYPE");
+        if (t && localName(t) == "struct") {
+            written(dt, std::string(dt.attribute("name").value()) + " :");
+            written(t, "STRUCT");
+            for (pugi::xml_node v : children(t, "variable")) variable(v);
+            written(t, "END_STRUCT");
+            written(dt, "END_TYPE");
+            return;
+        }
+        std::string line = std::string(dt.attribute("name").value()) + " : " + typeText(base);
+        if (pugi::xml_node init = child(dt, "initialValue")) {
+            std::string v = valueText(init);
+            if (!v.empty()) line += " := " + v;
+        }
+        written(dt, line + ";");
+        written(dt, "END_TYPE");
+    }
+
+    void pou(const pugi::xml_node& p) {
+        const std::string name = p.attribute("name").value();
+        const std::string kind = p.attribute("pouType").value();
+        pugi::xml_node itf = child(p, "interface");
+        const char* keyword = kind == "program" ? "PROGRAM" : kind == "functionBlock" ? "FUNCTION_BLOCK" : kind == "function" ? "FUNCTION" : nullptr;
+        if (!keyword) {
+            error(p, "POU '" + name + "' has an unknown pouType '" + kind + "'");
+            return;
+        }
+        std::string head = std::string(keyword) + " " + name;
+        if (kind == "function") head += " : " + (child(itf, "returnType") ? typeText(child(itf, "returnType")) : std::string("INT"));
+        written(p, head);
+        interfaceOf(itf);
+        bodyOf(p, name);
+        for (pugi::xml_node method : codesysMethods(p)) {
+            pugi::xml_node mitf = child(method, "interface");
+            std::string mhead = std::string("METHOD ") + method.attribute("name").value();
+            if (pugi::xml_node r = child(mitf, "returnType")) mhead += " : " + typeText(r);
+            written(method, mhead);
+            interfaceOf(mitf);
+            bodyOf(method, name + "." + method.attribute("name").value());
+            written(method, "END_METHOD");
+        }
+        for (pugi::xml_node a : children(child(p, "actions"), "action")) {
+            written(a, std::string("ACTION ") + a.attribute("name").value() + ":");
+            bodyOf(a, name + "." + a.attribute("name").value());
+            written(a, "END_ACTION");
+        }
+        written(p, std::string("END_") + keyword);
+    }
+
+    // CODESYS keeps methods in <addData><data name=".../method"><Method>.
+    static std::vector<pugi::xml_node> codesysMethods(const pugi::xml_node& p) {
+        std::vector<pugi::xml_node> out;
+        for (pugi::xml_node data : children(child(p, "addData"), "data"))
+            for (pugi::xml_node m : children(data, "Method")) out.push_back(m);
+        return out;
+    }
+
+    void configuration(const pugi::xml_node& c) {
+        written(c, std::string("CONFIGURATION ") + c.attribute("name").value());
+        for (pugi::xml_node g : children(c, "globalVars")) varSection(g, "VAR_GLOBAL");
+        for (pugi::xml_node r : children(c, "resource")) {
+            written(r, std::string("RESOURCE ") + r.attribute("name").value() + " ON PLC");
+            for (pugi::xml_node g : children(r, "globalVars")) varSection(g, "VAR_GLOBAL");
+            for (pugi::xml_node t : children(r, "task")) {
+                std::string params;
+                if (t.attribute("interval")) params += "INTERVAL := " + durationLiteral(t.attribute("interval").value());
+                if (t.attribute("single")) params += (params.empty() ? "" : ", ") + std::string("SINGLE := ") + t.attribute("single").value();
+                if (t.attribute("priority")) params += (params.empty() ? "" : ", ") + std::string("PRIORITY := ") + t.attribute("priority").value();
+                written(t, std::string("TASK ") + t.attribute("name").value() + " (" + params + ");");
+                for (pugi::xml_node inst : children(t, "pouInstance"))
+                    written(inst, std::string("PROGRAM ") + inst.attribute("name").value() + " WITH " + t.attribute("name").value() + " : " +
+                                      inst.attribute("typeName").value() + ";");
+            }
+            for (pugi::xml_node inst : children(r, "pouInstance"))
+                written(inst, std::string("PROGRAM ") + inst.attribute("name").value() + " : " + inst.attribute("typeName").value() + ";");
+            written(r, "END_RESOURCE");
+        }
+        written(c, "END_CONFIGURATION");
+    }
+
+    // Named global variable lists CODESYS exports in addData: NAMESPACE name + VAR_GLOBAL (decision 0094).
+    void namedGlobalLists(const pugi::xml_node& n, int depth) {
+        if (depth > kMaxTypeDepth) return;
+        for (pugi::xml_node c : n.children()) {
+            if (c.type() != pugi::node_element) continue;
+            if (localName(c) == "globalVars" && c.attribute("name") && localName(c.parent()) == "data") {
+                written(c, std::string("NAMESPACE ") + c.attribute("name").value());
+                varSection(c, "VAR_GLOBAL");
+                written(c, "END_NAMESPACE");
+            } else {
+                namedGlobalLists(c, depth + 1);
+            }
+        }
+    }
+
+    void run() {
+        pugi::xml_document doc;
+        pugi::xml_parse_result parsed = doc.load_buffer(xml.data(), xml.size(), pugi::parse_default, pugi::encoding_utf8);
+        if (!parsed) {
+            auto [line, col] = positions.at(parsed.offset);
+            result.errors.push_back({line, col, std::string("not well-formed XML: ") + parsed.description()});
+            return;
+        }
+        pugi::xml_node project = firstElement(doc);
+        pugi::xml_node types = child(project, "types");
+        for (pugi::xml_node dt : children(child(types, "dataTypes"), "dataType")) dataType(dt);
+        for (pugi::xml_node p : children(child(types, "pous"), "pou")) pou(p);
+        namedGlobalLists(project, 0);
+        for (pugi::xml_node c : children(child(child(project, "instances"), "configurations"), "configuration")) configuration(c);
+        result.text = std::move(out.text());
+        result.origins = std::move(out.origins());
+    }
+};
+
+}  // namespace
+
+bool isPlcOpenProject(const std::string& xml) {
+    pugi::xml_document doc;
+    if (!doc.load_buffer(xml.data(), xml.size(), pugi::parse_default, pugi::encoding_utf8)) return false;
+    pugi::xml_node root = firstElement(doc);
+    if (!root || localName(root) != "project") return false;
+    for (pugi::xml_attribute a : root.attributes()) {
+        std::string n = a.name();
+        if ((n == "xmlns" || n.rfind("xmlns:", 0) == 0) && std::strcmp(a.value(), kTc6Namespace) == 0) return true;
+    }
+    return false;
+}
+
+Converted readPlcOpen(const std::string& xml) {
+    Reader r(xml);
+    r.run();
+    return std::move(r.result);
+}
+
+}  // namespace strun::source

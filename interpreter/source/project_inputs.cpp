@@ -1,0 +1,105 @@
+#include "interpreter/source/project_inputs.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <system_error>
+
+#include "interpreter/source/read_source.h"
+#include "interpreter/source/xml_inputs.h"
+
+namespace strun::source {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string lowerExtension(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+bool isTwinCatObject(const std::string& path) {
+    const std::string ext = lowerExtension(path);
+    return ext == ".tcpou" || ext == ".tcdut" || ext == ".tcgvl" || ext == ".tcio";
+}
+
+// The bytes of the project's files read so far, for the project size limit.
+std::size_t projectBytes(const SourceSet& sources) {
+    std::size_t total = 0;
+    for (int k = 0; k < sources.size(); ++k) total += sources.file(k).text.size();
+    return total;
+}
+
+// One file into the SourceSet: converted when it is XML.
+void addFile(const std::string& path, std::string text, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log) {
+    const std::string ext = lowerExtension(path);
+    Converted converted;
+    if (isTwinCatObject(path)) {
+        converted = readTwinCat(text);
+    } else if (ext == ".xml") {
+        if (!isPlcOpenProject(text)) {
+            int raw = sources.add(path, "");
+            log.error(ast::Loc{raw, 1, 1}, "not a PLCopen TC6 XML project (the root must be <project> in namespace http://www.plcopen.org/xml/tc6_0201)");
+            return;
+        }
+        converted = readPlcOpen(text);
+    } else {
+        userFiles.push_back(sources.add(path, std::move(text)));
+        return;
+    }
+    if (!converted.errors.empty()) {
+        // Positions of these messages are in the XML itself: a view of the file without conversion.
+        int raw = sources.add(path, "");
+        for (const auto& e : converted.errors) log.error(ast::Loc{raw, e.line, e.col}, e.message);
+    }
+    userFiles.push_back(sources.add(path, std::move(converted.text), std::move(converted.origins)));
+}
+
+}  // namespace
+
+bool isProjectSource(const std::string& path) {
+    const std::string ext = lowerExtension(path);
+    return ext == ".st" || ext == ".xml" || isTwinCatObject(path);
+}
+
+bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log,
+                       std::string& usageError) {
+    for (const auto& path : paths) {
+        std::error_code ec;
+        if (fs::is_directory(path, ec)) {
+            // Every source under the directory, in a stable (name) order; project
+            // files of the IDEs (.plcproj, .tsproj, .sln, ...) are not sources.
+            std::vector<std::string> found;
+            fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
+            for (; !ec && it != end; it.increment(ec))
+                if (it->is_regular_file(ec) && isProjectSource(it->path().string())) found.push_back(it->path().string());
+            if (ec) {
+                usageError = "cannot read directory '" + path + "'";
+                return false;
+            }
+            if (found.empty()) {
+                usageError = "'" + path + "' contains no source files (.st, PLCopen .xml, .TcPOU, .TcDUT, .TcGVL, .TcIO)";
+                return false;
+            }
+            std::sort(found.begin(), found.end());
+            for (const auto& f : found) {
+                std::string text;
+                if (!readSourceText(f, projectBytes(sources), text, usageError)) return false;
+                addFile(f, std::move(text), sources, userFiles, log);
+            }
+            continue;
+        }
+        std::string text;
+        if (!fs::exists(path, ec)) {
+            usageError = "'" + path + "': no such file";
+            return false;
+        }
+        if (!readSourceText(path, projectBytes(sources), text, usageError)) return false;
+        addFile(path, std::move(text), sources, userFiles, log);
+    }
+    return true;
+}
+
+}  // namespace strun::source

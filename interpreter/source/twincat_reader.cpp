@@ -1,0 +1,175 @@
+// TwinCAT 3 PLC objects: <TcPlcObject> holding one POU (with Method,
+// Property/Get/Set, Action, Transition children), DUT, GVL or Itf. The ST
+// lives in CDATA sections of <Declaration> and <Implementation><ST>; strun
+// adds the END_xxx lines TwinCAT leaves out.
+#include <cctype>
+#include <cstring>
+
+#include <pugixml.hpp>
+
+#include "interpreter/source/st_assembler.h"
+#include "interpreter/source/xml_inputs.h"
+
+namespace strun::source {
+
+namespace {
+
+struct Reader {
+    const std::string& xml;
+    TextPositions positions;
+    StAssembler out;
+    Converted result;
+
+    explicit Reader(const std::string& x) : xml(x), positions(x) {}
+
+    std::pair<int, int> where(const pugi::xml_node& n) const { return positions.at(n.offset_debug()); }
+
+    void error(const pugi::xml_node& n, std::string message) {
+        auto [line, col] = where(n);
+        result.errors.push_back({line, col, std::move(message)});
+    }
+
+    // The text of an element (its CDATA or plain text child), copied with its position.
+    void copyText(const pugi::xml_node& element) {
+        for (pugi::xml_node c : element.children()) {
+            if (c.type() != pugi::node_cdata && c.type() != pugi::node_pcdata) continue;
+            auto [line, col] = where(c);
+            out.verbatim(c.value(), line, col);
+        }
+    }
+
+    void written(const pugi::xml_node& n, const std::string& st) {
+        auto [line, col] = where(n);
+        out.written(st, line, col);
+    }
+
+    // <Implementation><ST>...</ST></Implementation>; another language is an error naming the POU.
+    void implementation(const pugi::xml_node& owner, const std::string& pouName) {
+        pugi::xml_node impl = owner.child("Implementation");
+        if (!impl) return;
+        for (pugi::xml_node lang : impl.children()) {
+            if (lang.type() != pugi::node_element) continue;
+            if (std::strcmp(lang.name(), "ST") == 0) {
+                copyText(lang);
+            } else {
+                error(lang, "'" + pouName + "' has a body in " + languageName(lang.name()) +
+                                "; strun runs Structured Text (ST) bodies only");
+            }
+        }
+    }
+
+    static std::string languageName(const char* tag) {
+        std::string t = tag;
+        if (t == "NWL" || t == "FBD") return "FBD";
+        if (t == "LD") return "LD";
+        if (t == "SFC") return "SFC";
+        if (t == "IL") return "IL";
+        if (t == "CFC") return "CFC";
+        return t;
+    }
+
+    // The first keyword of a declaration (comments and pragmas skipped).
+    static std::string firstKeyword(const pugi::xml_node& decl) {
+        std::string text;
+        for (pugi::xml_node c : decl.children()) text += c.value();
+        size_t i = 0;
+        while (i < text.size()) {
+            if (std::isspace(static_cast<unsigned char>(text[i]))) { ++i; continue; }
+            if (text.compare(i, 2, "(*") == 0) { size_t e = text.find("*)", i + 2); i = e == std::string::npos ? text.size() : e + 2; continue; }
+            if (text.compare(i, 2, "//") == 0) { size_t e = text.find('\n', i); i = e == std::string::npos ? text.size() : e + 1; continue; }
+            if (text[i] == '{') { size_t e = text.find('}', i); i = e == std::string::npos ? text.size() : e + 1; continue; }
+            break;
+        }
+        std::string word;
+        while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_'))
+            word.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(text[i++]))));
+        return word;
+    }
+
+    void methods(const pugi::xml_node& pou, bool prototypes) {
+        for (pugi::xml_node m : pou.children("Method")) {
+            copyText(m.child("Declaration"));
+            if (!prototypes) implementation(m, m.attribute("Name").value());
+            written(m, "END_METHOD");
+        }
+        for (pugi::xml_node p : pou.children("Property")) {
+            copyText(p.child("Declaration"));
+            for (const char* accessor : {"Get", "Set"}) {
+                pugi::xml_node a = p.child(accessor);
+                if (!a) continue;
+                written(a, std::strcmp(accessor, "Get") == 0 ? "GET" : "SET");
+                copyText(a.child("Declaration"));
+                if (!prototypes) implementation(a, std::string(p.attribute("Name").value()) + "." + accessor);
+                written(a, std::strcmp(accessor, "Get") == 0 ? "END_GET" : "END_SET");
+            }
+            written(p, "END_PROPERTY");
+        }
+    }
+
+    void pou(const pugi::xml_node& pou) {
+        const std::string name = pou.attribute("Name").value();
+        pugi::xml_node decl = pou.child("Declaration");
+        const std::string kind = firstKeyword(decl);
+        const char* end = kind == "PROGRAM" ? "END_PROGRAM" : kind == "FUNCTION_BLOCK" ? "END_FUNCTION_BLOCK"
+                          : kind == "FUNCTION" ? "END_FUNCTION" : nullptr;
+        if (!end) {
+            error(decl ? decl : pou, "'" + name + "': the declaration does not start with PROGRAM, FUNCTION_BLOCK or FUNCTION");
+            return;
+        }
+        copyText(decl);
+        implementation(pou, name);
+        methods(pou, false);
+        for (pugi::xml_node a : pou.children("Action")) {
+            written(a, std::string("ACTION ") + a.attribute("Name").value() + ":");
+            implementation(a, name + "." + a.attribute("Name").value());
+            written(a, "END_ACTION");
+        }
+        // <Transition>s belong to SFC bodies, which are reported above.
+        written(pou, end);
+    }
+
+    void run() {
+        pugi::xml_document doc;
+        pugi::xml_parse_result parsed = doc.load_buffer(xml.data(), xml.size(), pugi::parse_default, pugi::encoding_utf8);
+        if (!parsed) {
+            auto [line, col] = positions.at(parsed.offset);
+            result.errors.push_back({line, col, std::string("not well-formed XML: ") + parsed.description()});
+            return;
+        }
+        pugi::xml_node root = doc.child("TcPlcObject");
+        if (!root) {
+            result.errors.push_back({1, 1, "not a TwinCAT PLC object (no <TcPlcObject> root)"});
+            return;
+        }
+        for (pugi::xml_node n : root.children()) {
+            if (n.type() != pugi::node_element) continue;
+            const std::string tag = n.name();
+            if (tag == "POU") {
+                pou(n);
+            } else if (tag == "DUT") {
+                copyText(n.child("Declaration"));
+            } else if (tag == "GVL") {
+                // A named global variable list: GVL.var (decision 0094).
+                written(n, std::string("NAMESPACE ") + n.attribute("Name").value());
+                copyText(n.child("Declaration"));
+                written(n, "END_NAMESPACE");
+            } else if (tag == "Itf") {
+                copyText(n.child("Declaration"));
+                methods(n, true);
+                written(n, "END_INTERFACE");
+            }
+        }
+        result.text = std::move(out.text());
+        result.origins = std::move(out.origins());
+    }
+};
+
+}  // namespace
+
+Converted readTwinCat(const std::string& xml) {
+    Reader r(xml);
+    r.run();
+    return std::move(r.result);
+}
+
+}  // namespace strun::source

@@ -1,0 +1,337 @@
+#include "interpreter/testing/register_tcunit.h"
+
+#include <initializer_list>
+
+#include <fmt/format.h>
+
+#include "interpreter/exec/value_nodes.h"
+#include "interpreter/sema/checker.h"
+#include "interpreter/testing/tcunit_nodes.h"
+
+namespace strun::testing {
+
+using sema::CallArgs;
+using sema::Checked;
+using sema::Checker;
+using sema::TK;
+using sema::Type;
+
+namespace {
+
+// The function's name as written in the call (CallArgs::name is upper case).
+std::string written(const CallArgs& call) {
+    if (call.call && !call.call->kids.empty() && !call.call->kids[0]->name.empty()) return call.call->kids[0]->name;
+    return call.name;
+}
+
+struct Param {
+    const char* name;  // as TcUnit spells it; matched in any case
+    bool required;
+};
+
+// Binds TcUnit-style arguments: positional in order or by name (any case);
+// inputs TcUnit declares but a call leaves out keep their default (Message '',
+// Delta 0). `out[k].ok` is false for a parameter not given.
+bool bindArgs(Checker& ck, CallArgs& call, std::initializer_list<Param> params, std::vector<Checked>& out) {
+    const size_t n = params.size();
+    const Param* p = params.begin();
+    out.assign(n, Checked{});
+    std::vector<bool> given(n, false);
+    size_t positional = 0;
+    for (size_t k = 0; k < call.args.size(); ++k) {
+        const ast::Arg& a = call.call->args[k];
+        if (a.output) {
+            ck.error(a.loc, fmt::format("'{}' has no output '{}'", written(call), a.name));
+            return false;
+        }
+        size_t idx = n;
+        if (call.names[k].empty()) {
+            idx = positional++;
+            if (idx >= n) {
+                ck.error(call.loc, fmt::format("too many arguments for '{}' (it takes {})", written(call), n));
+                return false;
+            }
+        } else {
+            for (size_t j = 0; j < n; ++j)
+                if (call.names[k] == sema::upper(p[j].name)) idx = j;
+            if (idx == n) {
+                ck.error(a.loc, fmt::format("'{}' has no parameter '{}'", written(call), a.name));
+                return false;
+            }
+        }
+        if (given[idx]) {
+            ck.error(a.loc, fmt::format("parameter '{}' of '{}' given twice", p[idx].name, written(call)));
+            return false;
+        }
+        given[idx] = true;
+        out[idx] = call.args[k];
+    }
+    for (size_t j = 0; j < n; ++j)
+        if (p[j].required && !given[j]) {
+            ck.error(call.loc, fmt::format("'{}' needs the input '{}'", written(call), p[j].name));
+            return false;
+        }
+    return true;
+}
+
+Checked result(Checker& ck, Expr* node, TK kind, const CallArgs& call) {
+    node->type = ck.types().elementary(kind);
+    Checked r;
+    r.ok = true;
+    r.loc = call.loc;
+    r.type = node->type;
+    r.node = node;
+    r.hasCall = true;
+    return r;
+}
+
+// A STRING/WSTRING argument (TestName, Message): the node and its type, or an error.
+bool stringInput(Checker& ck, const Checked& a, const CallArgs& call, const char* what, Expr*& node, const Type*& type) {
+    if (!a.ok) return true;  // not given: ''
+    if (!a.type || !sema::isStringType(a.type->kind)) {
+        ck.error(a.loc, fmt::format("{}: {} must be a STRING, not {}", written(call), what, sema::typeName(a.type)));
+        return false;
+    }
+    node = a.node;
+    type = a.type;
+    return true;
+}
+
+bool deltaInput(Checker& ck, const Checked& a, const Type* t, const CallArgs& call, Expr*& node) {
+    if (!a.ok) return true;
+    Checked d = ck.coerce(a, ck.types().elementary(t && t->kind == TK::Real ? TK::Real : TK::LReal), a.loc, written(call).c_str());
+    if (!d.ok) return false;
+    node = d.node;
+    return true;
+}
+
+// The elementary types that have an AssertEquals_<TYPE> and array asserts, by
+// the name used in the function name (TcUnit's, plus every IEC spelling).
+const std::vector<std::pair<const char*, TK>>& assertTypes() {
+    static const std::vector<std::pair<const char*, TK>> list = {
+        {"BOOL", TK::Bool}, {"BYTE", TK::Byte}, {"WORD", TK::Word}, {"DWORD", TK::DWord}, {"LWORD", TK::LWord},
+        {"SINT", TK::SInt}, {"INT", TK::Int}, {"DINT", TK::DInt}, {"LINT", TK::LInt},
+        {"USINT", TK::USInt}, {"UINT", TK::UInt}, {"UDINT", TK::UDInt}, {"ULINT", TK::ULInt},
+        {"REAL", TK::Real}, {"LREAL", TK::LReal}, {"TIME", TK::Time}, {"LTIME", TK::LTime},
+        {"DATE", TK::Date}, {"LDATE", TK::LDate}, {"TIME_OF_DAY", TK::Tod}, {"TOD", TK::Tod},
+        {"LTIME_OF_DAY", TK::LTod}, {"LTOD", TK::LTod}, {"DATE_AND_TIME", TK::Dt}, {"DT", TK::Dt},
+        {"LDATE_AND_TIME", TK::LDt}, {"LDT", TK::LDt}, {"CHAR", TK::Char}, {"WCHAR", TK::WChar},
+        {"STRING", TK::String}, {"WSTRING", TK::WString},
+    };
+    return list;
+}
+
+// Prepares the common part of an assertion node (registry, location, message).
+bool assertCommon(Checker& ck, TestRegistry& reg, CallArgs& call, const Checked& message, AssertBase* node) {
+    node->reg = &reg;
+    node->file = call.loc.file;
+    node->line = call.loc.line;
+    return stringInput(ck, message, call, "Message", node->message, node->messageType);
+}
+
+// Expected/Actual of AssertEquals_<TYPE>: coerced to the type (strings keep their length).
+bool typedOperand(Checker& ck, const Checked& a, TK kind, const CallArgs& call, Operand& out) {
+    if (kind == TK::String || kind == TK::WString) {
+        if (!a.type || a.type->kind != kind) {
+            ck.error(a.loc, fmt::format("{}: expected a {}, not {}", written(call), kind == TK::String ? "STRING" : "WSTRING", sema::typeName(a.type)));
+            return false;
+        }
+        out.e = a.node;
+        out.t = a.type;
+        return true;
+    }
+    Checked c = ck.coerce(a, ck.types().elementary(kind), a.loc, written(call).c_str());
+    if (!c.ok) return false;
+    out.e = c.node;
+    out.t = c.node->type ? c.node->type : c.type;
+    out.t = c.type;
+    return true;
+}
+
+// An array argument of AssertArray*Equals_<TYPE>.
+bool arrayOperand(Checker& ck, const Checked& a, TK kind, size_t dims, const CallArgs& call, ArrayOperand& out, const Type*& elem) {
+    const Type* t = a.type;
+    if (!t || t->kind != TK::Array || !t->elem || t->elem->kind != kind) {
+        ck.error(a.loc, fmt::format("{}: expected an ARRAY of {}, not {}", written(call), sema::typeName(ck.types().elementary(kind)), sema::typeName(t)));
+        return false;
+    }
+    if (kind == TK::String || kind == TK::WString) {
+        if (elem && elem->maxLen != t->elem->maxLen) {
+            ck.error(a.loc, fmt::format("{}: the arrays' string lengths differ", written(call)));
+            return false;
+        }
+    }
+    elem = t->elem;
+    if (t->flexible) {
+        if (!a.flexDesc) {
+            ck.error(a.loc, fmt::format("{}: this ARRAY[*] cannot be compared here", written(call)));
+            return false;
+        }
+        out.desc = a.flexDesc;
+        return true;
+    }
+    if (t->dims.size() != dims) {
+        ck.error(a.loc, fmt::format("{}: expected a {}-dimensional array, not {}", written(call), dims, sema::typeName(t)));
+        return false;
+    }
+    out.place = a.node;
+    for (const auto& d : t->dims) {
+        out.lo.push_back(d.lo);
+        out.hi.push_back(d.hi);
+    }
+    return true;
+}
+
+void registerTestControl(Checker& ck, TestRegistry& reg) {
+    for (bool ordered : {false, true}) {
+        ck.addBuiltin(ordered ? "TEST_ORDERED" : "TEST", [&reg, ordered](Checker& ck, CallArgs& call) -> Checked {
+            std::vector<Checked> a;
+            if (!bindArgs(ck, call, {{"TestName", true}}, a)) return ck.bad(call.loc);
+            auto* n = ck.pool().make<BeginTestNode>();
+            n->reg = &reg;
+            n->ordered = ordered;
+            if (!stringInput(ck, a[0], call, "TestName", n->name, n->nameType)) return ck.bad(call.loc);
+            // --list names the tests without running them: remember the constant names.
+            if (auto* lit = dynamic_cast<exec::ConstBytes*>(n->name); lit && n->nameType->kind == TK::String && ck.currentPouName())
+                reg.staticTests.push_back({*ck.currentPouName(),
+                                           std::string(reinterpret_cast<const char*>(lit->bytes.data()),
+                                                       strnlen(reinterpret_cast<const char*>(lit->bytes.data()), lit->bytes.size())),
+                                           call.loc.file, call.loc.line});
+            return result(ck, n, ordered ? TK::Bool : TK::Void, call);
+        });
+    }
+    ck.addBuiltin("TEST_FINISHED", [&reg](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindArgs(ck, call, {}, a)) return ck.bad(call.loc);
+        auto* n = ck.pool().make<FinishTestNode>();
+        n->reg = &reg;
+        return result(ck, n, TK::Bool, call);
+    });
+    for (bool query : {false, true}) {
+        ck.addBuiltin(query ? "IS_TEST_FINISHED" : "TEST_FINISHED_NAMED", [&reg, query](Checker& ck, CallArgs& call) -> Checked {
+            std::vector<Checked> a;
+            if (!bindArgs(ck, call, {{"TestName", true}}, a)) return ck.bad(call.loc);
+            Expr* name = nullptr;
+            const Type* type = nullptr;
+            if (!stringInput(ck, a[0], call, "TestName", name, type)) return ck.bad(call.loc);
+            if (query) {
+                auto* n = ck.pool().make<IsTestFinishedNode>();
+                n->reg = &reg;
+                n->name = name;
+                n->nameType = type;
+                return result(ck, n, TK::Bool, call);
+            }
+            auto* n = ck.pool().make<FinishNamedTestNode>();
+            n->reg = &reg;
+            n->name = name;
+            n->nameType = type;
+            return result(ck, n, TK::Bool, call);
+        });
+    }
+    for (bool inSequence : {false, true}) {
+        ck.addBuiltin(inSequence ? "RUN_IN_SEQUENCE" : "RUN", [&reg, inSequence](Checker& ck, CallArgs& call) -> Checked {
+            std::vector<Checked> a;
+            if (!bindArgs(ck, call, {}, a)) return ck.bad(call.loc);
+            ++reg.runCalls;
+            auto* n = ck.pool().make<RunSuitesNode>();
+            n->reg = &reg;
+            n->inSequence = inSequence;
+            return result(ck, n, TK::Void, call);
+        });
+    }
+    ck.addBuiltin("TCUNIT_ADSLOGSTR", [](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindArgs(ck, call, {{"msgCtrlMask", false}, {"msgFmtStr", true}, {"strArg", false}}, a)) return ck.bad(call.loc);
+        auto* n = ck.pool().make<AdsLogNode>();
+        if (!stringInput(ck, a[1], call, "msgFmtStr", n->format, n->formatType) ||
+            !stringInput(ck, a[2], call, "strArg", n->arg, n->argType))
+            return ck.bad(call.loc);
+        return result(ck, n, TK::DInt, call);
+    });
+}
+
+void registerAssertions(Checker& ck, TestRegistry& reg) {
+    for (bool expected : {true, false}) {
+        ck.addBuiltin(expected ? "ASSERTTRUE" : "ASSERTFALSE", [&reg, expected](Checker& ck, CallArgs& call) -> Checked {
+            std::vector<Checked> a;
+            if (!bindArgs(ck, call, {{"Condition", true}, {"Message", false}}, a)) return ck.bad(call.loc);
+            auto* n = ck.pool().make<AssertConditionNode>();
+            if (!assertCommon(ck, reg, call, a[1], n)) return ck.bad(call.loc);
+            Checked cond = ck.coerce(a[0], ck.types().elementary(TK::Bool), a[0].loc, written(call).c_str());
+            if (!cond.ok) return ck.bad(call.loc);
+            n->condition = cond.node;
+            n->expected = expected;
+            return result(ck, n, TK::Void, call);
+        });
+    }
+    // AssertEquals(Expected, Actual, Message): any type; compared by type class, size and bytes.
+    ck.addBuiltin("ASSERTEQUALS", [&reg](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindArgs(ck, call, {{"Expected", true}, {"Actual", true}, {"Message", false}}, a)) return ck.bad(call.loc);
+        auto* n = ck.pool().make<AssertEqualsNode>();
+        if (!assertCommon(ck, reg, call, a[2], n)) return ck.bad(call.loc);
+        Checked& e = a[0];
+        Checked& v = a[1];
+        // An untyped literal takes the other side's type (decision 0140).
+        bool eLit = e.untypedInt || e.untypedReal || e.flexibleLiteral;
+        bool vLit = v.untypedInt || v.untypedReal || v.flexibleLiteral;
+        if (eLit && !vLit && v.type && sema::isElementary(v.type->kind)) e = ck.coerce(e, v.type, e.loc, written(call).c_str());
+        else if (vLit && !eLit && e.type && sema::isElementary(e.type->kind)) v = ck.coerce(v, e.type, v.loc, written(call).c_str());
+        if (!e.ok || !v.ok) return ck.bad(call.loc);
+        e = ck.settle(e);
+        v = ck.settle(v);
+        for (Checked* x : {&e, &v}) {
+            TK k = x->type ? x->type->kind : TK::Void;
+            if (k == TK::Void) {
+                ck.error(x->loc, fmt::format("{}: this argument has no value", written(call)));
+                return ck.bad(call.loc);
+            }
+        }
+        n->generic = true;
+        n->expected = {e.node, e.type};
+        n->actual = {v.node, v.type};
+        return result(ck, n, TK::Void, call);
+    });
+    for (const auto& [typeName, kind] : assertTypes()) {
+        const TK k = kind;
+        const bool real = k == TK::Real || k == TK::LReal;
+        ck.addBuiltin(std::string("ASSERTEQUALS_") + typeName, [&reg, k, real](Checker& ck, CallArgs& call) -> Checked {
+            std::vector<Checked> a;
+            bool ok = real ? bindArgs(ck, call, {{"Expected", true}, {"Actual", true}, {"Delta", false}, {"Message", false}}, a)
+                           : bindArgs(ck, call, {{"Expected", true}, {"Actual", true}, {"Message", false}}, a);
+            if (!ok) return ck.bad(call.loc);
+            auto* n = ck.pool().make<AssertEqualsNode>();
+            if (!assertCommon(ck, reg, call, a[real ? 3 : 2], n)) return ck.bad(call.loc);
+            if (!typedOperand(ck, a[0], k, call, n->expected) || !typedOperand(ck, a[1], k, call, n->actual)) return ck.bad(call.loc);
+            if (real && !deltaInput(ck, a[2], ck.types().elementary(k), call, n->delta)) return ck.bad(call.loc);
+            // Without a Delta TcUnit compares within 0: equal values pass.
+            return result(ck, n, TK::Void, call);
+        });
+        for (size_t dims = 1; dims <= 3; ++dims) {
+            std::string name = dims == 1 ? "ASSERTARRAYEQUALS_" : fmt::format("ASSERTARRAY{}DEQUALS_", dims);
+            ck.addBuiltin(name + typeName, [&reg, k, real, dims](Checker& ck, CallArgs& call) -> Checked {
+                std::vector<Checked> a;
+                bool ok = real ? bindArgs(ck, call, {{"Expecteds", true}, {"Actuals", true}, {"Delta", false}, {"Message", false}}, a)
+                               : bindArgs(ck, call, {{"Expecteds", true}, {"Actuals", true}, {"Message", false}}, a);
+                if (!ok) return ck.bad(call.loc);
+                auto* n = ck.pool().make<AssertArrayNode>();
+                if (!assertCommon(ck, reg, call, a[real ? 3 : 2], n)) return ck.bad(call.loc);
+                n->dims = dims;
+                if (!arrayOperand(ck, a[0], k, dims, call, n->expected, n->elem) ||
+                    !arrayOperand(ck, a[1], k, dims, call, n->actual, n->elem))
+                    return ck.bad(call.loc);
+                if (real && !deltaInput(ck, a[2], ck.types().elementary(k), call, n->delta)) return ck.bad(call.loc);
+                return result(ck, n, TK::Void, call);
+            });
+        }
+    }
+}
+
+}  // namespace
+
+void registerTcUnit(Checker& checker, TestRegistry& registry) {
+    registerTestControl(checker, registry);
+    registerAssertions(checker, registry);
+}
+
+}  // namespace strun::testing

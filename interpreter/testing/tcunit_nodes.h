@@ -1,0 +1,130 @@
+// The resolved-tree nodes of the TcUnit API: TEST / TEST_ORDERED /
+// TEST_FINISHED / TEST_FINISHED_NAMED / IS_TEST_FINISHED / RUN /
+// RUN_IN_SEQUENCE / TCUNIT_ADSLOGSTR and the assertions. They act on the
+// project's TestRegistry. A passing assertion reads its operands and compares
+// them, nothing more: no allocation unless it fails.
+#pragma once
+
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "interpreter/exec/node.h"
+#include "interpreter/testing/test_registry.h"
+
+namespace strun::testing {
+
+using exec::Ctx;
+using exec::Expr;
+
+// A STRING / WSTRING operand seen as characters (WSTRING: its UTF-8 text, built on demand).
+std::string_view stringArg(Expr* e, const sema::Type* t, Ctx& c, std::string& scratch);
+
+struct BeginTestNode final : Expr {
+    TestRegistry* reg = nullptr;
+    Expr* name = nullptr;
+    const sema::Type* nameType = nullptr;
+    bool ordered = false;
+    std::string scratch;
+    std::vector<int> hints;  // per suite: the index of the test this call registered (sized at the first call)
+    int64_t i(Ctx& c) override {
+        int* hint = nullptr;
+        if (reg->currentSuite >= 0) {
+            if (hints.size() != reg->suites.size()) hints.assign(reg->suites.size(), -1);
+            hint = &hints[static_cast<size_t>(reg->currentSuite)];
+        }
+        return reg->beginTest(stringArg(name, nameType, c, scratch), ordered, c.m->now, hint);
+    }
+};
+
+struct FinishTestNode final : Expr {
+    TestRegistry* reg = nullptr;
+    int64_t i(Ctx& c) override { return reg->finishCurrent(c.m->now); }
+};
+
+struct FinishNamedTestNode final : Expr {
+    TestRegistry* reg = nullptr;
+    Expr* name = nullptr;
+    const sema::Type* nameType = nullptr;
+    std::string scratch;
+    int64_t i(Ctx& c) override { return reg->finishNamed(stringArg(name, nameType, c, scratch), c.m->now); }
+};
+
+struct IsTestFinishedNode final : Expr {
+    TestRegistry* reg = nullptr;
+    Expr* name = nullptr;
+    const sema::Type* nameType = nullptr;
+    std::string scratch;
+    int64_t i(Ctx& c) override { return reg->isFinished(stringArg(name, nameType, c, scratch)); }
+};
+
+struct RunSuitesNode final : Expr {
+    TestRegistry* reg = nullptr;
+    bool inSequence = false;
+    int64_t i(Ctx& c) override {
+        reg->runSuites(c, inSequence);
+        return 0;
+    }
+};
+
+// TCUNIT_ADSLOGSTR(msgCtrlMask, msgFmtStr, strArg): the message, %s replaced by strArg, on stderr.
+struct AdsLogNode final : Expr {
+    Expr* format = nullptr;
+    const sema::Type* formatType = nullptr;
+    Expr* arg = nullptr;
+    const sema::Type* argType = nullptr;
+    int64_t i(Ctx& c) override;
+};
+
+// What every assertion knows: where it is written and its message.
+struct AssertBase : Expr {
+    TestRegistry* reg = nullptr;
+    int file = -1;
+    int line = 0;
+    Expr* message = nullptr;  // null: ''
+    const sema::Type* messageType = nullptr;
+    void fail(Ctx& c, std::string expected, std::string actual, const char* messageSuffix = "");
+};
+
+// AssertTrue / AssertFalse.
+struct AssertConditionNode final : AssertBase {
+    Expr* condition = nullptr;
+    bool expected = true;
+    int64_t i(Ctx& c) override;
+};
+
+// One operand of an assertion: its value as the bytes of its type.
+struct Operand {
+    Expr* e = nullptr;
+    const sema::Type* t = nullptr;
+    // Scalars are stored into `buf` as their type stores them; aggregates are read in place.
+    const uint8_t* load(Ctx& c, uint8_t* buf) const;
+};
+
+// AssertEquals_<TYPE> (Delta for REAL/LREAL) and the generic AssertEquals.
+struct AssertEqualsNode final : AssertBase {
+    Operand expected, actual;
+    Expr* delta = nullptr;  // REAL/LREAL: maximum |Expected - Actual|; null: exact
+    bool generic = false;   // AssertEquals(ANY): type class and size are compared first
+    int64_t i(Ctx& c) override;
+};
+
+// AssertArrayEquals_<TYPE>, AssertArray2dEquals_<TYPE>, AssertArray3dEquals_<TYPE>.
+struct ArrayOperand {
+    Expr* place = nullptr;    // the array (fixed bounds), or
+    Expr* desc = nullptr;     // an ARRAY[*] parameter's descriptor { address, lo0, hi0, ... }
+    std::vector<int64_t> lo, hi;  // fixed bounds
+    // Base address and bounds now; false when the dimension count differs.
+    uint8_t* resolve(Ctx& c, size_t dims, int64_t* los, int64_t* his) const;
+};
+
+struct AssertArrayNode final : AssertBase {
+    ArrayOperand expected, actual;
+    const sema::Type* elem = nullptr;
+    size_t dims = 1;
+    Expr* delta = nullptr;
+    int64_t i(Ctx& c) override;
+};
+
+}  // namespace strun::testing

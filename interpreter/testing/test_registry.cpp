@@ -1,0 +1,254 @@
+#include "interpreter/testing/test_registry.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include <fmt/format.h>
+
+#include "interpreter/exec/call_nodes.h"
+#include "stdlib/value_format.h"
+
+namespace strun::testing {
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+    return s;
+}
+
+bool startsWithNoCase(std::string_view s, std::string_view prefix) {
+    if (s.size() < prefix.size()) return false;
+    for (size_t k = 0; k < prefix.size(); ++k)
+        if (std::tolower(static_cast<unsigned char>(s[k])) != std::tolower(static_cast<unsigned char>(prefix[k]))) return false;
+    return true;
+}
+
+const std::string kRunPou = "RUN";
+
+}  // namespace
+
+bool globMatch(std::string_view p, std::string_view t) {
+    // Iterative matcher with one backtrack point: linear in practice, no recursion.
+    size_t pi = 0, ti = 0, star = std::string_view::npos, mark = 0;
+    auto same = [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b)); };
+    while (ti < t.size()) {
+        if (pi < p.size() && (p[pi] == '?' || (p[pi] != '*' && same(p[pi], t[ti])))) {
+            ++pi;
+            ++ti;
+        } else if (pi < p.size() && p[pi] == '*') {
+            star = pi++;
+            mark = ti;
+        } else if (star != std::string_view::npos) {
+            pi = star + 1;
+            ti = ++mark;
+        } else {
+            return false;
+        }
+    }
+    while (pi < p.size() && p[pi] == '*') ++pi;
+    return pi == p.size();
+}
+
+bool Suite::finished() const {
+    if (cycles == 0) return false;
+    for (const auto& t : tests)
+        if (!t.finished && !t.skipped) return false;
+    return true;
+}
+
+bool TestRegistry::selected(const Suite& s, const std::string& test) const {
+    if (filter.empty()) return true;
+    return globMatch(filter, s.name + "." + test) || globMatch(filter, s.path + "." + test);
+}
+
+bool TestRegistry::beginTest(std::string_view rawName, bool ordered, rt::PlcTime now, int* hint) {
+    currentTest = -1;
+    ignoreCurrent = true;
+    if (currentSuite < 0) return false;
+    Suite& s = suites[static_cast<size_t>(currentSuite)];
+    std::string_view name = trim(rawName);
+    bool disabled = startsWithNoCase(name, "disabled_");
+    if (disabled) name.remove_prefix(9);
+    int index = -1;
+    if (hint && *hint >= 0 && static_cast<size_t>(*hint) < s.tests.size() && s.tests[static_cast<size_t>(*hint)].name == name) {
+        index = *hint;  // the usual case: this TEST() call site registered it
+    } else {
+        for (size_t k = 0; k < s.tests.size(); ++k)
+            if (s.tests[k].name == name) index = static_cast<int>(k);
+    }
+    if (index < 0) {
+        TestCase t;
+        t.name = std::string(name);
+        t.skipped = disabled || !selected(s, t.name);
+        t.startedAt = now;
+        t.lastCycle = s.cycles;
+        if (ordered) t.order = ++s.orderedCount;
+        s.tests.push_back(std::move(t));
+        index = static_cast<int>(s.tests.size()) - 1;
+    } else if (s.tests[static_cast<size_t>(index)].lastCycle == s.cycles && s.cycles != 0) {
+        // The same name twice in one cycle: TcUnit ignores the second one.
+        return false;
+    }
+    TestCase& t = s.tests[static_cast<size_t>(index)];
+    t.lastCycle = s.cycles;
+    currentTest = index;
+    if (hint) *hint = index;
+    if (t.skipped || t.finished) return false;
+    if (t.order > 0) {
+        // TEST_ORDERED: its turn once every ordered test before it finished.
+        for (const auto& other : s.tests)
+            if (other.order > 0 && other.order < t.order && !other.finished && !other.skipped) return false;
+    }
+    ignoreCurrent = false;
+    return true;
+}
+
+bool TestRegistry::finishCurrent(rt::PlcTime now) {
+    if (currentSuite < 0 || currentTest < 0 || ignoreCurrent) return false;
+    TestCase& t = suites[static_cast<size_t>(currentSuite)].tests[static_cast<size_t>(currentTest)];
+    if (!t.finished) {
+        t.finished = true;
+        t.finishedAt = now;
+    }
+    ignoreCurrent = true;
+    return true;
+}
+
+bool TestRegistry::finishNamed(std::string_view name, rt::PlcTime now) {
+    if (currentSuite < 0) return false;
+    name = trim(name);
+    for (auto& t : suites[static_cast<size_t>(currentSuite)].tests) {
+        if (t.name != name || t.skipped) continue;
+        if (!t.finished) {
+            t.finished = true;
+            t.finishedAt = now;
+        }
+        return true;
+    }
+    return false;
+}
+
+bool TestRegistry::isFinished(std::string_view name) const {
+    if (currentSuite < 0) return false;
+    name = trim(name);
+    for (const auto& t : suites[static_cast<size_t>(currentSuite)].tests)
+        if (t.name == name) return t.finished;
+    return false;
+}
+
+void TestRegistry::recordFailure(Failure f) {
+    if (!assertionsActive()) return;
+    TestCase& t = suites[static_cast<size_t>(currentSuite)].tests[static_cast<size_t>(currentTest)];
+    // A multi-cycle test repeats its assertions every cycle: report each distinct failure once.
+    for (const auto& old : t.failures)
+        if (old.file == f.file && old.line == f.line && old.expected == f.expected && old.actual == f.actual &&
+            old.message == f.message && old.fault == f.fault)
+            return;
+    t.failures.push_back(std::move(f));
+}
+
+void TestRegistry::runSuites(exec::Ctx& c, bool inSequence) {
+    exec::Site site{&kRunPou, 0};
+    capture.machine = c.m;
+    capture.ctx = &c;
+    for (size_t k = 0; k < suites.size(); ++k) {
+        Suite& s = suites[k];
+        if (s.finished()) continue;
+        currentSuite = static_cast<int>(k);
+        currentTest = -1;
+        ignoreCurrent = true;
+        ++s.cycles;
+        capture.inner = c.m->handler;
+        capture.abortedByTest = false;
+        capture.budgetEnd = watchdog > 0 ? c.m->now + watchdog : rt::kNever;
+        c.m->handler = &capture;
+        if (capture.budgetEnd < c.m->deadline.load(std::memory_order_relaxed)) c.m->deadline.store(capture.budgetEnd, std::memory_order_relaxed);
+        uint8_t* f = exec::pushFrame(c, *s.body, site);
+        if (f) {
+            exec::runBody(c, *s.body, s.instance, f);
+            c.stackTop = f;
+        }
+        c.m->handler = capture.inner;
+        // The budget deadline is ours: let the scheduler re-arm its own at the next look.
+        if (capture.budgetEnd != rt::kNever) c.m->requestAttention();
+        currentSuite = -1;
+        currentTest = -1;
+        if (c.aborting) {
+            if (!capture.abortedByTest) return;  // the scheduler's abort (STOP, end of run): unwind
+            c.aborting = false;                  // a test's fault: the other suites go on
+        }
+        if (inSequence && !s.finished()) break;
+    }
+}
+
+bool TestRegistry::allFinished() const {
+    for (const auto& s : suites)
+        if (!s.finished()) return false;
+    return true;
+}
+
+void TestRegistry::failUnfinished(const std::string& why) {
+    for (auto& s : suites)
+        for (auto& t : s.tests)
+            if (!t.finished && !t.skipped && t.failures.empty()) {
+                Failure f;
+                f.fault = why;
+                t.failures.push_back(std::move(f));
+            }
+}
+
+bool FaultCapture::onAttention() {
+    if (machine && machine->now >= budgetEnd) {
+        TestRegistry& r = registry_;
+        if (r.currentSuite >= 0 && r.currentTest >= 0) {
+            Failure f;
+            if (ctx && ctx->pouName) {
+                auto file = r.pouFiles.find(*ctx->pouName);
+                f.file = file == r.pouFiles.end() ? -1 : file->second;
+                f.line = ctx->stmt ? ctx->stmt->line : 0;
+            }
+            f.fault = fmt::format("WATCHDOG: the test ran longer than the task watchdog ({}) in one cycle", stdlib::formatDuration(r.watchdog));
+            r.ignoreCurrent = false;
+            r.recordFailure(std::move(f));
+            r.suites[static_cast<size_t>(r.currentSuite)].tests[static_cast<size_t>(r.currentTest)].finished = true;
+        }
+        abortedByTest = true;
+        budgetEnd = rt::kNever;
+        return true;
+    }
+    bool abort = inner->onAttention();
+    if (budgetEnd < machine->deadline.load(std::memory_order_relaxed)) machine->deadline.store(budgetEnd, std::memory_order_relaxed);
+    return abort;
+}
+
+void FaultCapture::onFault(rt::DiagCode code, std::string_view pou, int line, std::string message) {
+    TestRegistry& r = registry_;
+    if (r.currentSuite < 0 || r.currentTest < 0 || code == rt::DiagCode::Overrun) {
+        inner->onFault(code, pou, line, std::move(message));
+        return;
+    }
+    TestCase& t = r.suites[static_cast<size_t>(r.currentSuite)].tests[static_cast<size_t>(r.currentTest)];
+    if (t.skipped) {
+        // A disabled test's code still runs (as in TcUnit); its faults count for nothing.
+        if (code == rt::DiagCode::CallDepth) abortedByTest = true;
+        return;
+    }
+    Failure f;
+    auto file = r.pouFiles.find(std::string(pou));
+    f.file = file == r.pouFiles.end() ? -1 : file->second;
+    f.line = line;
+    f.fault = fmt::format("{}: {}", rt::diagCodeName(code), message);
+    bool wasIgnored = r.ignoreCurrent;
+    r.ignoreCurrent = false;  // a fault after TEST_FINISHED in the same cycle still belongs to the test
+    r.recordFailure(std::move(f));
+    r.ignoreCurrent = wasIgnored;
+    // CALL_DEPTH aborts the activation: the test cannot go on, the others can.
+    if (code == rt::DiagCode::CallDepth) {
+        t.finished = true;
+        abortedByTest = true;
+    }
+}
+
+}  // namespace strun::testing

@@ -1,0 +1,127 @@
+// The state of a `strun test` run that the TcUnit API nodes share: the suites
+// RUN() calls, the tests each suite registered with TEST(), their failures,
+// and the fault capture that turns a runtime fault inside a test into a
+// failure of that test instead of a PLC STOP. One per compiled project
+// (owned by the ProgramModel); the nodes hold a plain pointer to it.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "runtime/machine.h"
+
+namespace strun::exec { struct PouCode; struct Ctx; }
+
+namespace strun::testing {
+
+// One failed assertion, or the fault / timeout that ended a test.
+struct Failure {
+    int file = -1;  // SourceSet index of the assertion (or faulting statement); -1 unknown
+    int line = 0;
+    std::string expected, actual, message;
+    std::string fault;  // non-empty: "ARRAY_BOUNDS: subscript 11 outside 1..10" (no EXP/ACT)
+};
+
+struct TestCase {
+    std::string name;         // as given to TEST(), trimmed, without the DISABLED_ prefix
+    bool skipped = false;     // DISABLED_ or not selected by --filter: neither run nor counted
+    bool finished = false;
+    int order = 0;            // TEST_ORDERED: 1, 2, ... in the order first seen; 0 = unordered
+    rt::PlcTime startedAt = 0, finishedAt = 0;
+    uint64_t lastCycle = 0;   // the suite cycle that last called TEST() for it (duplicate check)
+    std::vector<Failure> failures;
+};
+
+struct Suite {
+    std::string name;         // the instance's name as declared
+    std::string path;         // Program.member path ("PRG_TEST.fbSuite")
+    std::string typeName;     // the FUNCTION_BLOCK
+    std::vector<std::string> blocks;  // it and the blocks it extends, upper case
+    uint8_t* instance = nullptr;
+    exec::PouCode* body = nullptr;
+    std::vector<TestCase> tests;
+    int orderedCount = 0;
+    uint64_t cycles = 0;      // how many times RUN() called it
+    bool finished() const;    // called at least once and every test finished or skipped
+};
+
+class TestRegistry;
+
+// Installed as Machine::handler while RUN() calls a suite: a fault inside a
+// test fails that test (and the PLC keeps running); the suite call gets a
+// watchdog budget of its own. Everything else goes to the scheduler.
+class FaultCapture final : public rt::AttentionHandler {
+public:
+    explicit FaultCapture(TestRegistry& r) : registry_(r) {}
+    bool onAttention() override;
+    void onFault(rt::DiagCode code, std::string_view pou, int line, std::string message) override;
+    rt::PlcTime currentTime() override { return inner->currentTime(); }
+    int64_t calendarNanos() override { return inner->calendarNanos(); }
+
+    rt::AttentionHandler* inner = nullptr;
+    rt::Machine* machine = nullptr;
+    const exec::Ctx* ctx = nullptr;  // the task context running the suite (the position of a WATCHDOG)
+    rt::PlcTime budgetEnd = rt::kNever;
+    bool abortedByTest = false;  // the abort unwinding now was caused by a test fault
+
+private:
+    TestRegistry& registry_;
+};
+
+class TestRegistry {
+public:
+    TestRegistry() : capture(*this) {}
+    TestRegistry(const TestRegistry&) = delete;
+    TestRegistry& operator=(const TestRegistry&) = delete;
+
+    // ---- filled at compile time
+    int runCalls = 0;  // RUN() / RUN_IN_SEQUENCE() calls the checker saw
+    // TEST('name') calls with a constant name: the POU code name that makes
+    // the call ("FB_X" or "FB_X.Method"), the name, and where it is written.
+    struct StaticTest {
+        std::string pou, name;
+        int file = 0, line = 0;
+    };
+    std::vector<StaticTest> staticTests;
+    std::map<std::string, int> pouFiles;  // POU code name -> source file (fault locations)
+    std::vector<std::string> suiteBlocks;  // FUNCTION_BLOCKs extending FB_TestSuite, not ABSTRACT
+
+    // ---- set up by the runner
+    std::vector<Suite> suites;
+    std::string filter;               // --filter: glob over "Suite.Test"; empty = all
+    rt::PlcTime watchdog = 0;         // budget of one suite call (the task's watchdog); 0 = none
+
+    // ---- the API (called by the nodes)
+    // TEST / TEST_ORDERED: makes `name` the current test; for TEST_ORDERED
+    // returns whether it is its turn. `hint` (per call site and suite) caches
+    // the test's index so that the usual call finds it without a search.
+    bool beginTest(std::string_view name, bool ordered, rt::PlcTime now, int* hint = nullptr);
+    bool finishCurrent(rt::PlcTime now);
+    bool finishNamed(std::string_view name, rt::PlcTime now);
+    bool isFinished(std::string_view name) const;
+    // Whether an assertion now counts (a test is current, running, not skipped).
+    bool assertionsActive() const { return currentSuite >= 0 && currentTest >= 0 && !ignoreCurrent; }
+    void recordFailure(Failure f);  // into the current test (duplicates of an earlier one are dropped)
+    // RUN(): calls the suites (all, or in sequence) on the task's context.
+    void runSuites(exec::Ctx& c, bool inSequence);
+
+    bool allFinished() const;
+    // After the run: unfinished tests fail with `why` ("timeout").
+    void failUnfinished(const std::string& why);
+
+    int currentSuite = -1;
+    int currentTest = -1;
+    bool ignoreCurrent = false;
+    FaultCapture capture;
+
+private:
+    bool selected(const Suite& s, const std::string& test) const;
+};
+
+// Glob match with '*' (any run) and '?' (one character), case-insensitive.
+bool globMatch(std::string_view pattern, std::string_view text);
+
+}  // namespace strun::testing

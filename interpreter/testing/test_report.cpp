@@ -1,0 +1,160 @@
+#include "interpreter/testing/test_report.h"
+
+#include <algorithm>
+#include <fstream>
+#include <tuple>
+
+#include <fmt/format.h>
+
+#include "interpreter/sema/types.h"
+#include "interpreter/testing/test_registry.h"
+
+namespace strun::testing {
+
+namespace {
+
+std::string fileName(int file, const SourceSet& sources) {
+    return file >= 0 && file < sources.size() ? sources.file(file).path : std::string("<unknown>");
+}
+
+std::string xmlEscape(const std::string& s) {
+    std::string out;
+    out.reserve(s.size());
+    for (char ch : s) {
+        switch (ch) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&apos;"; break;
+            default:
+                // Control characters are not allowed in XML 1.0 (tab and newlines are).
+                if (static_cast<unsigned char>(ch) < 0x20 && ch != '\t' && ch != '\n' && ch != '\r') out += ' ';
+                else out += ch;
+        }
+    }
+    return out;
+}
+
+std::string seconds(rt::PlcTime ns) { return fmt::format("{:.6f}", static_cast<double>(ns) / 1e9); }
+
+// The part of a failure after the location (the JUnit message).
+std::string reason(const Failure& f) {
+    if (!f.fault.empty()) return f.fault;
+    return "EXP: " + f.expected + ", ACT: " + f.actual + ", MSG: " + f.message;
+}
+
+// The line in the file as the user has it (a TwinCAT / PLCopen XML file is
+// compiled as ST converted from it; SourceFile::original maps back).
+int originalLine(const Failure& f, const SourceSet& sources) {
+    if (f.file < 0 || f.file >= sources.size()) return f.line;
+    return sources.file(f.file).original(f.line, 1).first;
+}
+
+}  // namespace
+
+std::string failureText(const Failure& f, const SourceSet& sources) {
+    if (f.file < 0) return reason(f);
+    return fmt::format("{}:{}: {}", fileName(f.file, sources), originalLine(f, sources), reason(f));
+}
+
+TestCounts printResults(const TestRegistry& reg, const SourceSet& sources, std::ostream& out) {
+    TestCounts n;
+    for (const auto& s : reg.suites) {
+        for (const auto& t : s.tests) {
+            if (t.skipped) {
+                ++n.skipped;
+                continue;
+            }
+            if (t.failures.empty()) {
+                ++n.passed;
+                out << "PASS " << s.name << '.' << t.name << '\n';
+            } else {
+                ++n.failed;
+                out << "FAIL " << s.name << '.' << t.name << ": " << failureText(t.failures.front(), sources) << '\n';
+            }
+        }
+    }
+    out << n.passed << " passed, " << n.failed << " failed\n";
+    return n;
+}
+
+bool writeJUnit(const TestRegistry& reg, const SourceSet& sources, rt::PlcTime totalTime, const std::string& path, std::string& error) {
+    std::ofstream xml(path, std::ios::binary | std::ios::trunc);
+    if (!xml) {
+        error = "cannot write '" + path + "'";
+        return false;
+    }
+    int tests = 0, failures = 0, skipped = 0;
+    for (const auto& s : reg.suites)
+        for (const auto& t : s.tests) {
+            ++tests;
+            if (t.skipped) ++skipped;
+            else if (!t.failures.empty()) ++failures;
+        }
+    xml << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    xml << fmt::format("<testsuites name=\"strun\" tests=\"{}\" failures=\"{}\" disabled=\"{}\" errors=\"0\" time=\"{}\">\n", tests, failures,
+                       skipped, seconds(totalTime));
+    int id = 0;
+    for (const auto& s : reg.suites) {
+        int sFail = 0, sSkip = 0;
+        rt::PlcTime sTime = 0;
+        for (const auto& t : s.tests) {
+            if (t.skipped) ++sSkip;
+            else if (!t.failures.empty()) ++sFail;
+            if (!t.skipped && t.finished) sTime += t.finishedAt - t.startedAt;
+        }
+        xml << fmt::format("  <testsuite id=\"{}\" name=\"{}\" tests=\"{}\" failures=\"{}\" skipped=\"{}\" errors=\"0\" time=\"{}\">\n", id++,
+                           xmlEscape(s.name), s.tests.size(), sFail, sSkip, seconds(sTime));
+        for (const auto& t : s.tests) {
+            rt::PlcTime tTime = t.finished ? t.finishedAt - t.startedAt : 0;
+            xml << fmt::format("    <testcase name=\"{}\" classname=\"{}\" time=\"{}\" status=\"{}\"", xmlEscape(t.name), xmlEscape(s.name),
+                               seconds(tTime), t.skipped ? "SKIP" : t.failures.empty() ? "PASS" : "FAIL");
+            if (!t.skipped && t.failures.empty()) {
+                xml << "/>\n";
+                continue;
+            }
+            xml << ">\n";
+            if (t.skipped) xml << "      <skipped/>\n";
+            for (const auto& f : t.failures) {
+                std::string type = !f.fault.empty() ? (f.fault == "timeout" ? "TIMEOUT" : "FAULT") : "ASSERT";
+                xml << fmt::format("      <failure message=\"{}\" type=\"{}\"", xmlEscape(reason(f)), type);
+                if (f.file >= 0) xml << fmt::format(" file=\"{}\" line=\"{}\"", xmlEscape(fileName(f.file, sources)), originalLine(f, sources));
+                xml << ">" << xmlEscape(failureText(f, sources)) << "</failure>\n";
+            }
+            xml << "    </testcase>\n";
+        }
+        xml << "  </testsuite>\n";
+    }
+    xml << "</testsuites>\n";
+    xml.flush();
+    if (!xml) {
+        error = "cannot write '" + path + "'";
+        return false;
+    }
+    return true;
+}
+
+void printTestList(const TestRegistry& reg, std::ostream& out) {
+    // In the order they are written (the checker visits methods by name).
+    std::vector<TestRegistry::StaticTest> calls = reg.staticTests;
+    std::stable_sort(calls.begin(), calls.end(), [](const auto& a, const auto& b) { return std::tie(a.file, a.line) < std::tie(b.file, b.line); });
+    for (const auto& s : reg.suites) {
+        std::vector<std::string> seen;
+        for (const auto& call : calls) {
+            const std::string& pou = call.pou;
+            const std::string& raw = call.name;
+            // Code names are "Block" and "Block.Method": the call must be in the suite's block or one it extends.
+            std::string block = sema::upper(pou.substr(0, pou.find('.')));
+            if (std::find(s.blocks.begin(), s.blocks.end(), block) == s.blocks.end()) continue;
+            std::string name = raw;
+            if (sema::upper(name.substr(0, 9)) == "DISABLED_") continue;
+            if (!reg.filter.empty() && !globMatch(reg.filter, s.name + "." + name) && !globMatch(reg.filter, s.path + "." + name)) continue;
+            if (std::find(seen.begin(), seen.end(), name) != seen.end()) continue;
+            seen.push_back(name);
+            out << s.name << '.' << name << '\n';
+        }
+    }
+}
+
+}  // namespace strun::testing
