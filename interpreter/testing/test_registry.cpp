@@ -223,10 +223,10 @@ bool FaultCapture::onAttention() {
     return abort;
 }
 
-void FaultCapture::onFault(rt::DiagCode code, std::string_view pou, int line, std::string message) {
+void FaultCapture::onFault(rt::DiagCode code, std::string_view pou, int line, std::string message, int file, int col) {
     TestRegistry& r = registry_;
     if (r.currentSuite < 0 || r.currentTest < 0 || code == rt::DiagCode::Overrun) {
-        inner->onFault(code, pou, line, std::move(message));
+        inner->onFault(code, pou, line, std::move(message), file, col);
         return;
     }
     TestCase& t = r.suites[static_cast<size_t>(r.currentSuite)].tests[static_cast<size_t>(r.currentTest)];
@@ -236,8 +236,9 @@ void FaultCapture::onFault(rt::DiagCode code, std::string_view pou, int line, st
         return;
     }
     Failure f;
-    auto file = r.pouFiles.find(std::string(pou));
-    f.file = file == r.pouFiles.end() ? -1 : file->second;
+    // The statement's own file when the evaluator knows it, else the POU's.
+    auto pouFile = r.pouFiles.find(std::string(pou));
+    f.file = file >= 0 ? file : pouFile == r.pouFiles.end() ? -1 : pouFile->second;
     f.line = line;
     f.fault = fmt::format("{}: {}", rt::diagCodeName(code), message);
     bool wasIgnored = r.ignoreCurrent;

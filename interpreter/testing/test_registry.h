@@ -57,7 +57,7 @@ class FaultCapture final : public rt::AttentionHandler {
 public:
     explicit FaultCapture(TestRegistry& r) : registry_(r) {}
     bool onAttention() override;
-    void onFault(rt::DiagCode code, std::string_view pou, int line, std::string message) override;
+    void onFault(rt::DiagCode code, std::string_view pou, int line, std::string message, int file = -1, int col = 0) override;
     rt::PlcTime currentTime() override { return inner->currentTime(); }
     int64_t calendarNanos() override { return inner->calendarNanos(); }
 
