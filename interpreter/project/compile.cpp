@@ -4,7 +4,7 @@
 
 #include "interpreter/ast/parse.h"
 #include "interpreter/sema/checker.h"
-#include "stdlib/bind/register_builtins.h"
+#include "interpreter/builtins/register_builtins.h"
 #include "stdlib/embedded_sources.h"
 
 namespace strun::project {
