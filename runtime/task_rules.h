@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "interpreter/ast/ast.h"
 #include "runtime/plc_profile.h"
+#include "runtime/source_location.h"
 #include "runtime/task_spec.h"
 
 namespace strun::rt {
 
 struct TaskRuleViolation {
-    ast::Loc loc;
+    SourceLoc loc;
     std::string message;
 };
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "interpreter/ast/ast.h"
 #include "runtime/machine.h"
+#include "runtime/source_location.h"
 
 namespace strun::rt {
 
@@ -41,7 +41,7 @@ struct BoolRef {
 
 struct TaskSpec {
     std::string name;
-    ast::Loc loc;
+    SourceLoc loc;
     TaskKind kind = TaskKind::Freewheeling;
     int priority = 30;
     bool priorityGiven = false;  // PRIORITY was written (else the profile's default applies)

@@ -8,14 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "runtime/source_location.h"
+
 namespace strun::ast {
 
 // 1-based line and column; file is an index into the SourceSet (source_set.h).
-struct Loc {
-    int file = 0;
-    int line = 0;
-    int col = 0;
-};
+using Loc = rt::SourceLoc;
 
 // `{attribute 'x'}` / `{text}` pragma: kept verbatim (without braces) on the
 // declaration it precedes.

@@ -7,10 +7,10 @@
 #include "interpreter/ast/parse.h"
 #include "interpreter/project/library_selection.h"
 #include "interpreter/sema/checker.h"
+#include "interpreter/builtins/register_builtins.h"
 #include "interpreter/testing/register_tcunit.h"
 #include "interpreter/testing/suite_finder.h"
 #include "interpreter/testing/test_registry.h"
-#include "stdlib/bind/register_builtins.h"
 #include "stdlib/embedded_sources.h"
 
 namespace strun::project {

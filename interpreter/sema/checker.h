@@ -21,7 +21,7 @@ namespace strun::sema {
 
 class Checker;
 
-// What a standard-library binding sees of a call (stdlib/bind/).
+// What a standard-library binding sees of a call (interpreter/builtins/).
 struct CallArgs {
     const ast::Expr* call = nullptr;
     std::string name;             // upper-case callee name

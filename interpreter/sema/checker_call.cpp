@@ -1,5 +1,5 @@
 // Calls: user functions, function-block instances, explicit conversions and
-// the standard-library functions registered by stdlib/bind.
+// the standard-library functions registered by interpreter/builtins.
 #include <fmt/format.h>
 
 #include "interpreter/sema/checker.h"
@@ -131,7 +131,7 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
         if (!from) return bad(e.loc);
     }
     if (!to) return bad(e.loc);
-    if (isStringType(to->kind) || (from && isStringType(from->kind))) return bad(e.loc);  // string conversions: stdlib/bind
+    if (isStringType(to->kind) || (from && isStringType(from->kind))) return bad(e.loc);  // string conversions: interpreter/builtins
     handled = true;
     if (e.args.size() != 1 || e.args[0].output || !e.args[0].value) {
         error(e.loc, fmt::format("{} takes exactly one input", key));
@@ -140,7 +140,7 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
     Checked a = checkExpr(*e.args[0].value);
     if (!a.ok) return a;
     if (!from && isStringType(a.type->kind)) {
-        handled = false;  // TO_INT('12'): a STRING source is a stdlib conversion (stdlib/bind)
+        handled = false;  // TO_INT('12'): a STRING source is a stdlib conversion (interpreter/builtins)
         return bad(e.loc);
     }
     if (truncate && !(isReal(a.type->kind) || a.untypedReal)) {

@@ -348,6 +348,10 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
             const ast::Expr& callee = *s.expr->kids[0];
             // A function-block instance called as a statement?
             bool maybeFb = callee.kind != ast::ExprKind::Name || lookupVar(upper(callee.name)) != nullptr;
+            // Lib.F(...) / NS.F(...) as a statement: a function of a namespace or library, not an instance.
+            if (callee.kind == ast::ExprKind::Member && isNamespace(*callee.kids[0]) && !lookupVar(upper(callee.kids[0]->name)) &&
+                !lookupVar(upper(callee.name)))
+                maybeFb = false;
             if (callee.kind == ast::ExprKind::Name) {
                 // CODESYS: a PROGRAM called from another POU runs its (single) instance.
                 for (const auto& prog : model_.programs)
@@ -358,7 +362,9 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
             if (callee.kind == ast::ExprKind::Member && isNamespace(*callee.kids[0]) && !lookupVar(upper(callee.kids[0]->name))) maybeFb = false;
             if (maybeFb) {
                 bool isMethod = false;
-                if (callee.kind == ast::ExprKind::Member) {
+                const bool qualifiedGlobal = callee.kind == ast::ExprKind::Member && isNamespace(*callee.kids[0]) &&
+                                             !lookupVar(upper(callee.kids[0]->name));  // GVL.fbInstance(...)
+                if (callee.kind == ast::ExprKind::Member && !qualifiedGlobal) {
                     // inst.Method(...) vs. structVar.fbMember(...)
                     Checked base = checkExpr(*callee.kids[0]);
                     if (base.ok && (base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou)

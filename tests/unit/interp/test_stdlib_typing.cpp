@@ -1,4 +1,4 @@
-// Type checking of the standard-library functions (stdlib/bind): generic
+// Type checking of the standard-library functions (interpreter/builtins): generic
 // parameters resolved at check time, result types, constant folding of
 // literal calls, and the errors for wrong arguments.
 #include <catch2/catch.hpp>

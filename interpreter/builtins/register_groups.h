@@ -11,7 +11,8 @@ void registerSelect(sema::Checker& ck);    // SEL MAX MIN LIMIT MUX, GT GE EQ LE
 void registerStrings(sema::Checker& ck);   // LEN LEFT RIGHT MID CONCAT INSERT DELETE REPLACE FIND
 void registerConvert(sema::Checker& ck);   // *_TO_STRING, STRING_TO_*, BCD, endianness, IS_VALID
 void registerTime(sema::Checker& ck);      // ADD_TIME ... DAY_OF_WEEK
-void registerClock(sema::Checker& ck);     // the PLC clock read by the ST timer blocks
+void registerClock(sema::Checker& ck);     // the PLC clock read by the ST timer blocks, TIME()
+void registerTwinCat(sema::Checker& ck);   // Tc2_System: ADSLOGSTR, ADSLOGDINT, ADSLOGLREAL
 void registerTaskCycle(sema::Checker& ck); // GetCurrentTaskCycle, SetCurrentTaskCycle (--target m241)
 
 }  // namespace strun::stdlib::bind

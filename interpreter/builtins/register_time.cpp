@@ -3,10 +3,10 @@
 // the generic ADD/SUB/MUL/DIV; the PLC-clock functions of the timer blocks.
 #include <fmt/format.h>
 
-#include "stdlib/bind/bind_support.h"
-#include "stdlib/bind/register_groups.h"
-#include "stdlib/bind/time_arith.h"
-#include "stdlib/bind/time_nodes.h"
+#include "interpreter/builtins/bind_support.h"
+#include "interpreter/builtins/register_groups.h"
+#include "interpreter/builtins/time_arith.h"
+#include "interpreter/builtins/time_nodes.h"
 
 namespace strun::stdlib::bind {
 

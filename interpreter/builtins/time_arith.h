@@ -2,7 +2,7 @@
 // MUL/DIV functions and the named ADD_TIME ... DIV_LTIME functions.
 #pragma once
 
-#include "stdlib/bind/bind_support.h"
+#include "interpreter/builtins/bind_support.h"
 
 namespace strun::stdlib::bind {
 

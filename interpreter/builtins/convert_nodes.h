@@ -8,7 +8,7 @@
 #include <string>
 
 #include "interpreter/exec/node.h"
-#include "stdlib/bind/string_nodes.h"
+#include "interpreter/builtins/string_nodes.h"
 #include "stdlib/conversions.h"
 
 namespace strun::stdlib::bind {

@@ -3,10 +3,10 @@
 // (SHL SHR ROL ROR) and the logic functions (AND OR XOR NOT).
 #include <fmt/format.h>
 
-#include "stdlib/bind/bind_support.h"
-#include "stdlib/bind/math_nodes.h"
-#include "stdlib/bind/register_groups.h"
-#include "stdlib/bind/time_arith.h"
+#include "interpreter/builtins/bind_support.h"
+#include "interpreter/builtins/math_nodes.h"
+#include "interpreter/builtins/register_groups.h"
+#include "interpreter/builtins/time_arith.h"
 
 namespace strun::stdlib::bind {
 

@@ -4,9 +4,9 @@
 // LITTLE_ENDIAN; IS_VALID; IS_VALID_BCD.
 #include <fmt/format.h>
 
-#include "stdlib/bind/bind_support.h"
-#include "stdlib/bind/convert_nodes.h"
-#include "stdlib/bind/register_groups.h"
+#include "interpreter/builtins/bind_support.h"
+#include "interpreter/builtins/convert_nodes.h"
+#include "interpreter/builtins/register_groups.h"
 
 namespace strun::stdlib::bind {
 

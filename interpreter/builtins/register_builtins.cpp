@@ -1,9 +1,9 @@
-#include "stdlib/bind/register_builtins.h"
+#include "interpreter/builtins/register_builtins.h"
 
 #include <string>
 
+#include "interpreter/builtins/register_groups.h"
 #include "interpreter/sema/checker.h"
-#include "stdlib/bind/register_groups.h"
 
 namespace strun::stdlib {
 
@@ -17,6 +17,7 @@ void registerBuiltins(sema::Checker& checker) {
     bind::registerTime(checker);
     bind::registerClock(checker);
     bind::registerTaskCycle(checker);
+    bind::registerTwinCat(checker);
     registerParameterAliases(checker);
 }
 
@@ -28,7 +29,7 @@ void registerParameterAliases(sema::Checker& checker) {
     checker.addParameterAlias("SR", "R", "RESET");
     checker.addParameterAlias("RS", "S", "SET");
     checker.addParameterAlias("RS", "R1", "RESET1");
-    for (const char* suffix : {"", "_DINT", "_LINT", "_UDINT", "_ULINT"}) {
+    for (const char* suffix : {"", "_INT", "_DINT", "_LINT", "_UDINT", "_ULINT"}) {
         std::string s = suffix;
         checker.addParameterAlias("CTU" + s, "RESET", "R");
         checker.addParameterAlias("CTD" + s, "LOAD", "LD");

@@ -1,9 +1,9 @@
 // Selection (SEL MAX MIN LIMIT MUX) and comparison functions (GT GE EQ LE LT NE).
 #include <fmt/format.h>
 
-#include "stdlib/bind/bind_support.h"
-#include "stdlib/bind/register_groups.h"
-#include "stdlib/bind/select_nodes.h"
+#include "interpreter/builtins/bind_support.h"
+#include "interpreter/builtins/register_groups.h"
+#include "interpreter/builtins/select_nodes.h"
 
 namespace strun::stdlib::bind {
 

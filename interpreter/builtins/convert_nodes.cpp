@@ -1,4 +1,4 @@
-#include "stdlib/bind/convert_nodes.h"
+#include "interpreter/builtins/convert_nodes.h"
 
 #include "stdlib/text_encoding.h"
 #include "stdlib/value_encodings.h"

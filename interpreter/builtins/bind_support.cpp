@@ -1,4 +1,4 @@
-#include "stdlib/bind/bind_support.h"
+#include "interpreter/builtins/bind_support.h"
 
 #include <algorithm>
 #include <limits>

@@ -5,8 +5,8 @@
 // target's interval rules (>= 4 ms, a multiple of 4 ms) and refuses others.
 #include <fmt/format.h>
 
-#include "stdlib/bind/bind_support.h"
-#include "stdlib/bind/register_groups.h"
+#include "interpreter/builtins/bind_support.h"
+#include "interpreter/builtins/register_groups.h"
 
 namespace strun::stdlib::bind {
 

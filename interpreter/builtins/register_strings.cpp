@@ -3,9 +3,9 @@
 // IEC ones (IN, IN1, L, P) and the CODESYS ones (STR, STR1, SIZE, LEN, POS).
 #include <fmt/format.h>
 
-#include "stdlib/bind/bind_support.h"
-#include "stdlib/bind/register_groups.h"
-#include "stdlib/bind/string_nodes.h"
+#include "interpreter/builtins/bind_support.h"
+#include "interpreter/builtins/register_groups.h"
+#include "interpreter/builtins/string_nodes.h"
 
 namespace strun::stdlib::bind {
 

@@ -1,0 +1,66 @@
+// The input stage (interpreter/source): TwinCAT and PLCopen XML become ST
+// whose every line knows where it came from in the XML file.
+#include <catch2/catch.hpp>
+
+#include "interpreter/source/st_assembler.h"
+#include "interpreter/source/xml_inputs.h"
+
+using namespace strun;
+using namespace strun::source;
+
+TEST_CASE("text positions: offsets to 1-based line and column", "[source]") {
+    TextPositions p("ab\ncd\n\nx");
+    CHECK(p.at(0) == std::pair<int, int>{1, 1});
+    CHECK(p.at(4) == std::pair<int, int>{2, 2});
+    CHECK(p.at(7) == std::pair<int, int>{4, 1});
+}
+
+TEST_CASE("assembled ST maps copied and written lines back to the original", "[source]") {
+    StAssembler a;
+    a.written("PROGRAM P", 3, 5);
+    a.verbatim("x := 1;\ny := 2;", 7, 20);
+    SourceFile f{"p.xml", a.text(), a.origins()};
+    CHECK(f.text == "PROGRAM P\nx := 1;\ny := 2;\n");
+    CHECK(f.original(1, 9) == std::pair<int, int>{3, 5});    // written: the element's position
+    CHECK(f.original(2, 1) == std::pair<int, int>{7, 20});   // first copied line: shifted by the CDATA column
+    CHECK(f.original(3, 6) == std::pair<int, int>{8, 6});    // later lines: the same column
+}
+
+TEST_CASE("a TwinCAT POU gets its END keyword, methods and actions", "[source][twincat]") {
+    const std::string xml =
+        "<?xml version=\"1.0\"?>\n<TcPlcObject><POU Name=\"FB\"><Declaration><![CDATA[FUNCTION_BLOCK FB\nVAR x : INT; END_VAR]]></Declaration>"
+        "<Implementation><ST><![CDATA[x := x + 1;]]></ST></Implementation>"
+        "<Method Name=\"M\"><Declaration><![CDATA[METHOD M : INT]]></Declaration><Implementation><ST><![CDATA[M := x;]]></ST></Implementation></Method>"
+        "<Action Name=\"A\"><Implementation><ST><![CDATA[x := 0;]]></ST></Implementation></Action></POU></TcPlcObject>";
+    Converted c = readTwinCat(xml);
+    REQUIRE(c.errors.empty());
+    CHECK(c.text == "FUNCTION_BLOCK FB\nVAR x : INT; END_VAR\nx := x + 1;\nMETHOD M : INT\nM := x;\nEND_METHOD\nACTION A:\nx := 0;\nEND_ACTION\nEND_FUNCTION_BLOCK\n");
+    REQUIRE(c.origins.size() == 10);
+    CHECK(c.origins[0].line == 2);
+}
+
+TEST_CASE("XML that is not well-formed, and bodies in other languages, are errors", "[source]") {
+    Converted broken = readTwinCat("<TcPlcObject><POU>");
+    REQUIRE(broken.errors.size() == 1);
+    CHECK(broken.errors[0].message.find("not well-formed XML") != std::string::npos);
+    Converted fbd = readTwinCat("<TcPlcObject><POU Name=\"B\"><Declaration>PROGRAM B</Declaration><Implementation><SFC/></Implementation></POU></TcPlcObject>");
+    REQUIRE(fbd.errors.size() == 1);
+    CHECK(fbd.errors[0].message == "'B' has a body in SFC; strun runs Structured Text (ST) bodies only");
+}
+
+TEST_CASE("PLCopen: the namespace decides, variables and tasks become ST", "[source][plcopen]") {
+    CHECK_FALSE(isPlcOpenProject("<project/>"));
+    CHECK_FALSE(isPlcOpenProject("not xml"));
+    const std::string xml =
+        "<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\"><types><pous><pou name=\"P\" pouType=\"program\">"
+        "<interface><localVars constant=\"true\"><variable name=\"n\"><type><INT/></type><initialValue><simpleValue value=\"3\"/></initialValue></variable></localVars></interface>"
+        "<body><ST><xhtml>n := n;</xhtml></ST></body></pou></pous></types>"
+        "<instances><configurations><configuration name=\"C\"><resource name=\"R\"><task name=\"T\" interval=\"PT0.05S\" priority=\"2\">"
+        "<pouInstance name=\"p1\" typeName=\"P\"/></task></resource></configuration></configurations></instances></project>";
+    REQUIRE(isPlcOpenProject(xml));
+    Converted c = readPlcOpen(xml);
+    REQUIRE(c.errors.empty());
+    CHECK(c.text.find("VAR CONSTANT\n    n : INT := 3;\nEND_VAR") != std::string::npos);
+    CHECK(c.text.find("TASK T (INTERVAL := T#0.05s, PRIORITY := 2);") != std::string::npos);
+    CHECK(c.text.find("PROGRAM p1 WITH T : P;") != std::string::npos);
+}
