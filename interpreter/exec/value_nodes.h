@@ -136,6 +136,22 @@ struct DerefPlace final : Expr {
     uint8_t* badTarget(Ctx& c, const uint8_t* p);
 };
 
+// An element of an array reached through a pointer (`PT^[i]` with PT : POINTER
+// TO ARRAY[0..32767] OF BYTE, as OSCAT writes buffer code): the pointer only
+// has to lead into project memory, and each element access is checked itself,
+// because the declared array is usually larger than the buffer pointed at.
+struct MemoryCheckedPlace final : Expr {
+    Expr* place;
+    DerefPlace* deref;  // reports the fault like the dereference would
+    uint32_t size;
+    MemoryCheckedPlace(Expr* p, DerefPlace* d, uint32_t n) : place(p), deref(d), size(n) {}
+    uint8_t* addr(Ctx& c) override {
+        uint8_t* p = place->addr(c);
+        if (__builtin_expect(!c.m->memory.contains(p, size), 0)) return deref->badTarget(c, p);
+        return p;
+    }
+};
+
 // ADR(x) / REF(x): the address of a place as a pointer value.
 struct AddressOf final : Expr {
     Expr* place;

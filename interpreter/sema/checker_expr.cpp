@@ -731,6 +731,14 @@ Checked Checker::checkIndex(const ast::Expr& e) {
         }
         dims.push_back({ix.node, t->dims[k].lo, t->dims[k].count(), strides[k]});
     }
+    // PT^[i] through a pointer to an array: the pointer only has to lead into
+    // project memory, and the element itself is checked (MemoryCheckedPlace).
+    auto* deref = dynamic_cast<exec::DerefPlace*>(base.node);
+    if (deref) deref->targetSize = 1;
+    auto throughPointer = [&](exec::Expr* place) -> exec::Expr* {
+        if (!deref) return place;
+        return pool().make<exec::MemoryCheckedPlace>(place, deref, static_cast<uint32_t>(t->elem->size));
+    };
     Checked c;
     c.ok = true;
     c.loc = e.loc;
@@ -769,13 +777,13 @@ Checked Checker::checkIndex(const ast::Expr& e) {
         n->count = dims[0].count;
         n->stride = dims[0].stride;
         n->site = site(e.loc);
-        c.node = loadFrom(n, c.type);
+        c.node = loadFrom(throughPointer(n), c.type);
     } else {
         auto* n = pool().make<exec::IndexPlace>();
         n->base = base.node;
         n->dims = std::move(dims);
         n->site = site(e.loc);
-        c.node = loadFrom(n, c.type);
+        c.node = loadFrom(throughPointer(n), c.type);
     }
     c.node->type = c.type;
     return c;

@@ -15,8 +15,9 @@ namespace {
 constexpr int kMaxNesting = 64;  // instances inside instances: far beyond real programs
 }
 
-// Whether a value of type `t` holds any FB instance with an FB_init: arrays of
-// types without one are skipped instead of visited element by element.
+// Whether a value of type `t` holds any instance that needs start-up code (an
+// FB_init, or REF()/ADR() declaration initialisers): arrays of types without
+// any are skipped instead of visited element by element.
 bool Checker::holdsFbInit(const Type* t) {
     if (!t) return false;
     auto known = holdsFbInit_.find(t);
@@ -29,6 +30,7 @@ bool Checker::holdsFbInit(const Type* t) {
             for (const auto& f : p->fields) result = result || holdsFbInit(f.type);
     else if (t->kind == TK::FunctionBlock && t->pou) {
         result = t->pou->kind == ast::PouKind::FunctionBlock && findMethod(t->pou, "FB_INIT");
+        for (PouInfo* p = t->pou; p && !result; p = p->parent) result = !p->addressInits.empty();
         for (PouInfo* p = t->pou; p && !result; p = p->parent)
             for (auto& v : p->ownedVars)
                 if (v->storage == Storage::Self && !v->byRef) result = result || holdsFbInit(v->type);

@@ -358,8 +358,6 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                     if (upper(prog.name) == upper(callee.name)) maybeFb = true;
             }
             if (callee.kind == ast::ExprKind::Name && pou_ && pou_->result && upper(callee.name) == upper(pou_->result->name)) maybeFb = false;
-            // Lib.F(): a namespace-qualified function, not a member of an instance.
-            if (callee.kind == ast::ExprKind::Member && isNamespace(*callee.kids[0]) && !lookupVar(upper(callee.kids[0]->name))) maybeFb = false;
             if (maybeFb) {
                 bool isMethod = false;
                 const bool qualifiedGlobal = callee.kind == ast::ExprKind::Member && isNamespace(*callee.kids[0]) &&
