@@ -79,8 +79,9 @@ std::vector<Case> cases() {
         {"too_many_tokens",
          [main] { return main + std::string(3000000, ';'); },
          {"check", "@"}, 1, "more than 2000000 tokens", 20, 1500},
-        {"dev_zero_as_file", [] { return std::string(); }, {"check", "/dev/zero"}, 2, "larger than the limit", 10, 500},
-        {"directory_as_file", [] { return std::string(); }, {"check", "/"}, 2, "is a directory", 10, 500},
+        {"dev_zero_as_file", [] { return std::string(); }, {"check", "/dev/zero"}, 2, "is not a regular file", 10, 500},
+        // A directory stands for every source under it (contract); one without any is exit 2.
+        {"directory_as_file", [] { return std::string(); }, {"check", "/dev"}, 2, "contains no source files", 10, 500},
         {"fb_init_array_10_million",
          [] { return "FUNCTION_BLOCK F VAR v : INT; END_VAR\n"
                      "METHOD FB_init : BOOL VAR_INPUT bInitRetains : BOOL; bInCopyCode : BOOL; END_VAR v := 1; END_METHOD\n"

@@ -49,7 +49,7 @@ sleep 0.5
 kill -TERM $pid
 wait $pid
 [ -s "$FILE" ] || fail "SIGTERM did not save"
-out=$("$STRUN" run --virtual --cycles 0 --dump --retain "$FILE" "$HERE/counter.st") || fail "run after SIGTERM"
+out=$("$STRUN" run --virtual --for 0 --dump --retain "$FILE" "$HERE/counter.st") || fail "run after SIGTERM"
 [ "$(value count "$out")" -gt 0 ] || fail "SIGTERM saved no progress: $out"
 
 # SIGKILL at random moments: the file is the previous or the new complete one.
@@ -63,7 +63,7 @@ for round in $(seq 1 15); do
     wait $pid 2>/dev/null
     grep -q "not a complete retain file" "$WORK/err" && fail "round $round: the run started from a damaged file"
     [ -e "$FILE" ] || continue  # killed before the first save
-    out=$("$STRUN" run --virtual --cycles 0 --dump --retain "$FILE" "$HERE/counter.st" 2>"$WORK/err") || fail "round $round: check run"
+    out=$("$STRUN" run --virtual --for 0 --dump --retain "$FILE" "$HERE/counter.st" 2>"$WORK/err") || fail "round $round: check run"
     grep -q "warning" "$WORK/err" && fail "round $round: $(cat "$WORK/err")"
     now=$(value count "$out")
     [ "$now" -ge "$last" ] || fail "round $round: count went back from $last to $now"
