@@ -146,17 +146,8 @@ int runCommand(const CommandLine& line) {
     } else if (!specs.empty()) {
         run.cyclesTask = specs.front().name;  // MainTask without a CONFIGURATION, else the first TASK declared
     }
-    // Stimulus: every name and value is checked before anything runs.
-    std::vector<project::StimulusEntry> entries;
-    for (const std::string& text : line.sets) {
-        project::StimulusEntry entry;
-        if (!parseSetOption(text, entry, error)) return usage(error);
-        entries.push_back(std::move(entry));
-    }
-    for (const std::string& file : line.stimulusFiles)
-        if (!readStimulusFile(file, entries, error)) return usage(error);
     rt::Stimulus stimulus;
-    if (!project::buildStimulus(model, entries, stimulus, error, run.profile ? *run.profile : rt::defaultProfile()))
+    if (!buildCommandLineStimulus(line, model, run.profile ? *run.profile : rt::defaultProfile(), stimulus, error))
         return usage(error);
     if (!stimulus.empty()) run.stimulus = &stimulus;
 

@@ -105,4 +105,17 @@ bool readStimulusFile(const std::string& path, std::vector<project::StimulusEntr
     return true;
 }
 
+bool buildCommandLineStimulus(const CommandLine& line, sema::ProgramModel& model, const rt::PlcProfile& profile,
+                              rt::Stimulus& stimulus, std::string& error) {
+    std::vector<project::StimulusEntry> entries;
+    for (const std::string& text : line.sets) {
+        project::StimulusEntry entry;
+        if (!parseSetOption(text, entry, error)) return false;
+        entries.push_back(std::move(entry));
+    }
+    for (const std::string& file : line.stimulusFiles)
+        if (!readStimulusFile(file, entries, error)) return false;
+    return project::buildStimulus(model, entries, stimulus, error, profile);
+}
+
 }  // namespace strun::cli

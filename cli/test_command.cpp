@@ -82,17 +82,9 @@ int testCommand(const CommandLine& line, const TestCommandLine& test) {
         testing::printTestList(reg, std::cout);
         return kExitOk;
     }
-    // Stimulus, as for run: every name and value is checked before anything runs.
-    std::vector<project::StimulusEntry> entries;
-    for (const std::string& text : line.sets) {
-        project::StimulusEntry entry;
-        if (!parseSetOption(text, entry, error)) return usage(error);
-        entries.push_back(std::move(entry));
-    }
-    for (const std::string& file : line.stimulusFiles)
-        if (!readStimulusFile(file, entries, error)) return usage(error);
+    // Stimulus, as for run (with the target's input aliases).
     rt::Stimulus stimulus;
-    if (!project::buildStimulus(*model, entries, stimulus, error)) return usage(error);
+    if (!buildCommandLineStimulus(line, *model, run.profile ? *run.profile : rt::defaultProfile(), stimulus, error)) return usage(error);
     if (!stimulus.empty()) run.stimulus = &stimulus;
     if (reg.suites.empty())
         std::cerr << "strun: warning: no test suite runs: declare instances of FUNCTION_BLOCKs that EXTEND FB_TestSuite "

@@ -1,5 +1,7 @@
 #include "interpreter/project/library_selection.h"
 
+#include "interpreter/sema/types.h"
+
 #include <algorithm>
 #include <string>
 #include <unordered_set>
@@ -8,15 +10,11 @@ namespace strun::project {
 
 namespace {
 
+// One case folding for the whole checker (sema/types.h).
+std::string upper(std::string_view s) { return sema::upper(std::string(s)); }
+
 bool isIdentStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
 bool isIdentPart(char c) { return isIdentStart(c) || (c >= '0' && c <= '9'); }
-
-std::string upper(std::string_view s) {
-    std::string out(s);
-    for (char& c : out)
-        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-    return out;
-}
 
 // Calls f(word) for every identifier-shaped word of the text.
 template <typename F>

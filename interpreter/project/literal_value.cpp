@@ -15,11 +15,8 @@ using sema::Type;
 
 namespace {
 
-std::string upper(std::string_view s) {
-    std::string out(s);
-    for (char& c : out) c = char(std::toupper(static_cast<unsigned char>(c)));
-    return out;
-}
+// One case folding for the whole checker (sema/types.h).
+std::string upper(std::string_view s) { return sema::upper(std::string(s)); }
 
 // Drops a type prefix (`INT#`, `Color#`) but not a base (`16#`).
 std::string_view withoutTypePrefix(std::string_view text) {

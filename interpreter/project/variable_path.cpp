@@ -11,11 +11,8 @@ using sema::Type;
 
 namespace {
 
-std::string upper(std::string_view s) {
-    std::string out(s);
-    for (char& c : out) c = char(std::toupper(static_cast<unsigned char>(c)));
-    return out;
-}
+// One case folding for the whole checker (sema/types.h).
+std::string upper(std::string_view s) { return sema::upper(std::string(s)); }
 
 bool opaque(const Type* t) { return t->kind == TK::Pointer || t->kind == TK::Reference || t->kind == TK::Interface; }
 
