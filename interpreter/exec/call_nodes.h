@@ -36,6 +36,7 @@ struct PouCode {
     uint32_t frameSize = 0;
     std::vector<uint8_t> frameInit;  // initial image of the frame (locals with their initial values)
     uint32_t resultOffset = 0;       // FUNCTION / METHOD result, in the frame
+    bool library = false;            // declared in the embedded standard library
 };
 
 void reportCallDepth(Ctx& c, const Site& site, const std::string& callee);
@@ -62,9 +63,19 @@ inline void runBody(Ctx& c, const PouCode& code, uint8_t* inst, uint8_t* f) {
     c.self = inst;
     c.frame = f;
     c.pouName = &code.name;
+    // Entering the library from user code: remember where (see Ctx::userStmt).
+    const bool entersLibrary = code.library && !c.userStmt;
+    if (entersLibrary) {
+        c.userStmt = savedStmt;
+        c.userPou = savedPou;
+    }
     ++c.depth;
     code.body->exec(c);
     --c.depth;
+    if (entersLibrary) {
+        c.userStmt = nullptr;
+        c.userPou = nullptr;
+    }
     c.self = savedSelf;
     c.frame = savedFrame;
     c.stmt = savedStmt;

@@ -14,6 +14,13 @@ namespace {
 const std::string kUnknownPou = "?";
 const std::string& pouOf(const Site& s) { return s.pou ? *s.pou : kUnknownPou; }
 
+// Where a fault is reported: the node's own site, or, inside library code,
+// the user's statement that called the library (Ctx::userStmt).
+Site at(const Ctx& c, const Site& s) {
+    if (!c.userStmt) return s;
+    return Site{c.userPou, c.userStmt->line, c.userStmt->file, c.userStmt->col};
+}
+
 uint8_t* sink(Ctx& c) {
     // Large enough for any element: the checker sizes it to the largest type in the project.
     std::memset(c.faultSink, 0, kFaultSinkSize);
@@ -22,47 +29,47 @@ uint8_t* sink(Ctx& c) {
 }  // namespace
 
 void reportDivByZero(Ctx& c, const Site& site) {
-    c.m->handler->onFault(rt::DiagCode::DivByZero, pouOf(site), site.line, "division by zero; divisor 1 used", site.file, site.col);
+    c.m->handler->onFault(rt::DiagCode::DivByZero, pouOf(at(c, site)), at(c, site).line, "division by zero; divisor 1 used", at(c, site).file, at(c, site).col);
 }
 
 void reportCallDepth(Ctx& c, const Site& site, const std::string& callee) {
-    c.m->handler->onFault(rt::DiagCode::CallDepth, pouOf(site), site.line,
-                          fmt::format("call nesting deeper than {} (calling {})", kMaxCallDepth, callee), site.file, site.col);
+    c.m->handler->onFault(rt::DiagCode::CallDepth, pouOf(at(c, site)), at(c, site).line,
+                          fmt::format("call nesting deeper than {} (calling {})", kMaxCallDepth, callee), at(c, site).file, at(c, site).col);
     c.aborting = true;
 }
 
 uint8_t* IndexPlace::outOfRange(Ctx& c, const Dim& d, int64_t value) {
-    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(site), site.line,
-                          fmt::format("subscript {} outside {}..{}", value, d.lo, d.lo + d.count - 1), site.file, site.col);
+    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(at(c, site)), at(c, site).line,
+                          fmt::format("subscript {} outside {}..{}", value, d.lo, d.lo + d.count - 1), at(c, site).file, at(c, site).col);
     return sink(c);
 }
 
 uint8_t* indexFault(Ctx& c, const Site& site, int64_t value, int64_t lo, int64_t count) {
-    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(site), site.line,
-                          fmt::format("subscript {} outside {}..{}", value, lo, lo + count - 1), site.file, site.col);
+    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(at(c, site)), at(c, site).line,
+                          fmt::format("subscript {} outside {}..{}", value, lo, lo + count - 1), at(c, site).file, at(c, site).col);
     return sink(c);
 }
 
 uint8_t* Index1Place::outOfRange(Ctx& c, int64_t value) {
-    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(site), site.line,
-                          fmt::format("subscript {} outside {}..{}", value, lo, lo + count - 1), site.file, site.col);
+    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(at(c, site)), at(c, site).line,
+                          fmt::format("subscript {} outside {}..{}", value, lo, lo + count - 1), at(c, site).file, at(c, site).col);
     return sink(c);
 }
 
 uint8_t* FlexIndexPlace::outOfRange(Ctx& c, int64_t value, int64_t lo, int64_t hi) {
-    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(site), site.line, fmt::format("subscript {} outside {}..{}", value, lo, hi), site.file, site.col);
+    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(at(c, site)), at(c, site).line, fmt::format("subscript {} outside {}..{}", value, lo, hi), at(c, site).file, at(c, site).col);
     return sink(c);
 }
 
 uint8_t* RefSlotPlace::nullTarget(Ctx& c) {
-    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line, "reference is not bound", site.file, site.col);
+    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(at(c, site)), at(c, site).line, "reference is not bound", at(c, site).file, at(c, site).col);
     return sink(c);
 }
 
 uint8_t* DerefPlace::badTarget(Ctx& c, const uint8_t* p) {
-    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line,
+    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(at(c, site)), at(c, site).line,
                           p ? "dereference of a pointer outside the project's memory" : "dereference of a null pointer",
-                          site.file, site.col);
+                          at(c, site).file, at(c, site).col);
     return sink(c);
 }
 
@@ -70,16 +77,16 @@ PouCode* CallPou::dispatch(Ctx& c, uint8_t* inst) {
     // The instance may come from a pointer or interface forged by arithmetic:
     // it must lie in project memory and start with a real class descriptor.
     if (inst && !(c.m->memory.contains(inst, sizeof(const ClassDesc*)) && c.m->memory.isObject(loadAs<const ClassDesc*>(inst)))) {
-        c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line,
-                              fmt::format("call of {} through a pointer that does not lead to an instance", callee->name), site.file, site.col);
+        c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(at(c, site)), at(c, site).line,
+                              fmt::format("call of {} through a pointer that does not lead to an instance", callee->name), at(c, site).file, at(c, site).col);
         return nullptr;
     }
     const ClassDesc* desc = inst ? loadAs<const ClassDesc*>(inst) : nullptr;
     PouCode* code = desc && static_cast<size_t>(virtualSlot) < desc->methods.size() ? desc->methods[static_cast<size_t>(virtualSlot)] : nullptr;
     if (!code) {
-        c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(site), site.line,
+        c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(at(c, site)), at(c, site).line,
                               inst ? fmt::format("method {} not implemented by the instance", callee->name)
-                                   : fmt::format("call of {} through an unbound interface or pointer", callee->name), site.file, site.col);
+                                   : fmt::format("call of {} through an unbound interface or pointer", callee->name), at(c, site).file, at(c, site).col);
     }
     return code;
 }

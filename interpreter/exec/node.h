@@ -35,6 +35,11 @@ struct Ctx {
     uint8_t* pending = nullptr;    // frame of the call whose arguments are being bound
     const struct Stmt* stmt = nullptr;           // statement being executed (for WATCHDOG positions)
     const std::string* pouName = nullptr;        // POU being executed
+    // While library code (the embedded ST standard library) runs: the user's
+    // statement that called into it, and its POU. Faults and watchdog
+    // positions are reported there, never inside strun's own sources.
+    const struct Stmt* userStmt = nullptr;
+    const std::string* userPou = nullptr;
     rt::Machine* m = nullptr;
     uint8_t* faultSink = nullptr;  // zeroed scratch that faulty accesses read from / write to
 };

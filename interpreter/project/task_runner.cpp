@@ -75,16 +75,20 @@ bool TaskRunner::runActivation() {
 }
 
 bool TaskRunner::currentPosition(std::string& pou, int& line) const {
-    if (!ctx_.pouName) return false;
-    pou = *ctx_.pouName;
-    line = ctx_.stmt ? ctx_.stmt->line : 0;
+    // Inside the library: the user's statement that called it (Ctx::userStmt).
+    const std::string* name = ctx_.userStmt ? ctx_.userPou : ctx_.pouName;
+    const exec::Stmt* stmt = ctx_.userStmt ? ctx_.userStmt : ctx_.stmt;
+    if (!name) return false;
+    pou = *name;
+    line = stmt ? stmt->line : 0;
     return true;
 }
 
 bool TaskRunner::currentFileAndColumn(int& file, int& col) const {
-    if (!ctx_.stmt) return false;
-    file = ctx_.stmt->file;
-    col = ctx_.stmt->col;
+    const exec::Stmt* stmt = ctx_.userStmt ? ctx_.userStmt : ctx_.stmt;
+    if (!stmt) return false;
+    file = stmt->file;
+    col = stmt->col;
     return true;
 }
 

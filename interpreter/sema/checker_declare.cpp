@@ -80,6 +80,7 @@ void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
     info->owner = owner;
     model_.codes.emplace_back();
     info->code = &model_.codes.back();
+    info->code->library = libraryFiles_.count(pou->loc.file) > 0;
     info->code->name = owner ? owner->name + "." + pou->name : pou->name;
     PouInfo* raw = info.get();
     std::string key = upper(pou->name);
