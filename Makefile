@@ -29,6 +29,7 @@ test: build
 bench: build
 	benchmarks/run.sh $(BUILD)/strun
 	benchmarks/vcd/run_vcd_bench.sh $(BUILD)/strun
+	benchmarks/startup.sh $(BUILD)/strun
 
 # A Debian package of strun and its documentation, in $(BUILD)/ (CPack).
 package: build
