@@ -8,8 +8,7 @@
 
 #include <pugixml.hpp>
 
-#include "interpreter/source/st_assembler.h"
-#include "interpreter/source/xml_inputs.h"
+#include "interpreter/source/xml_conversion.h"
 
 namespace strun::source {
 
@@ -64,22 +63,12 @@ std::string durationLiteral(std::string text) {
     return text;
 }
 
-struct Reader {
-    const std::string& xml;
-    TextPositions positions;
-    StAssembler out;
-    Converted result;
+struct Reader : XmlConversion {
+    using XmlConversion::XmlConversion;
 
-    explicit Reader(const std::string& x) : xml(x), positions(x) {}
-
-    std::pair<int, int> where(const pugi::xml_node& n) const { return positions.at(n.offset_debug()); }
     void written(const pugi::xml_node& n, const std::string& st) {
         auto [line, col] = where(n);
         out.written(st, line, col);
-    }
-    void error(const pugi::xml_node& n, std::string message) {
-        auto [line, col] = where(n);
-        result.errors.push_back({line, col, std::move(message)});
     }
 
     // <type><INT/></type>, <derived name="T"/>, <array>, <string length>, <pointer>, <enum>, <struct>, subranges.

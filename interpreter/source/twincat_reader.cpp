@@ -7,27 +7,14 @@
 
 #include <pugixml.hpp>
 
-#include "interpreter/source/st_assembler.h"
-#include "interpreter/source/xml_inputs.h"
+#include "interpreter/source/xml_conversion.h"
 
 namespace strun::source {
 
 namespace {
 
-struct Reader {
-    const std::string& xml;
-    TextPositions positions;
-    StAssembler out;
-    Converted result;
-
-    explicit Reader(const std::string& x) : xml(x), positions(x) {}
-
-    std::pair<int, int> where(const pugi::xml_node& n) const { return positions.at(n.offset_debug()); }
-
-    void error(const pugi::xml_node& n, std::string message) {
-        auto [line, col] = where(n);
-        result.errors.push_back({line, col, std::move(message)});
-    }
+struct Reader : XmlConversion {
+    using XmlConversion::XmlConversion;
 
     // The text of an element (its CDATA or plain text child), copied with its position.
     void copyText(const pugi::xml_node& element) {
