@@ -1,5 +1,6 @@
 #include "interpreter/project/compile.h"
 
+#include <algorithm>
 #include <exception>
 #include <set>
 
@@ -29,31 +30,38 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
                                                    const sema::CompileOptions& options, ParsedLibrary* library) {
     std::vector<ast::CompilationUnit> units;
     std::set<int> libraryFiles;
+    // Only the library files the project mentions (decision 0150), also when
+    // they come parsed from a lent library: checking unused library bodies
+    // was most of the cost of a small compile.
+    std::vector<std::string_view> userTexts;
+    for (int f : userFiles) userTexts.push_back(sources.file(f).text);
+    const std::vector<const stdlib::EmbeddedSource*> wanted = embeddedSourcesFor(userTexts);
+    std::vector<size_t> borrowed;  // indices into library->units, parallel to the first units
     if (library) {
-        units = std::move(library->units);
-        libraryFiles = library->files;
+        const auto& all = stdlib::embeddedSources();
+        for (size_t i = 0; i < all.size() && i < library->units.size(); ++i) {
+            if (std::find(wanted.begin(), wanted.end(), &all[i]) == wanted.end()) continue;
+            borrowed.push_back(i);
+            units.push_back(std::move(library->units[i]));
+            libraryFiles.insert(static_cast<int>(i));
+        }
     } else {
-        // Only the library files the project mentions (decision 0150).
-        std::vector<std::string_view> userTexts;
-        for (int f : userFiles) userTexts.push_back(sources.file(f).text);
-        for (const stdlib::EmbeddedSource* src : embeddedSourcesFor(userTexts)) {
+        for (const stdlib::EmbeddedSource* src : wanted) {
             int index = sources.add(std::string(src->path), std::string(src->text));
             libraryFiles.insert(index);
             units.push_back(ast::parseFile(sources, index, log));
         }
     }
-    const size_t libraryUnits = units.size();
     // Hands the lent library units back however this function ends.
     struct GiveBack {
         ParsedLibrary* library;
         std::vector<ast::CompilationUnit>& units;
-        size_t count;
+        const std::vector<size_t>& borrowed;
         ~GiveBack() {
             if (!library) return;
-            units.resize(count);
-            library->units = std::move(units);
+            for (size_t k = 0; k < borrowed.size() && k < units.size(); ++k) library->units[borrowed[k]] = std::move(units[k]);
         }
-    } giveBack{library, units, libraryUnits};
+    } giveBack{library, units, borrowed};
     for (int f : userFiles) units.push_back(ast::parseFile(sources, f, log));
     if (log.hasErrors()) return nullptr;
     auto model = std::make_unique<sema::ProgramModel>();
