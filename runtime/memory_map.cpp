@@ -9,6 +9,7 @@ void MemoryMap::add(const void* begin, size_t size) {
     auto b = reinterpret_cast<uintptr_t>(begin);
     regions_.push_back({b, b + size});
     sorted_ = false;
+    hot_ = {0, 0};
 }
 
 void MemoryMap::addObject(const void* object) {
@@ -23,14 +24,15 @@ void MemoryMap::sort() const {
     sorted_ = true;
 }
 
-bool MemoryMap::contains(const void* p, size_t size) const {
+bool MemoryMap::containsSlow(uintptr_t a, size_t size) const {
     if (!sorted_) sort();
-    auto a = reinterpret_cast<uintptr_t>(p);
     // The last region starting at or before `a`; regions do not overlap.
     auto it = std::upper_bound(regions_.begin(), regions_.end(), a, [](uintptr_t v, const Region& r) { return v < r.begin; });
     if (it == regions_.begin()) return false;
     --it;
-    return a < it->end && size <= it->end - a;
+    if (!(a < it->end && size <= it->end - a)) return false;
+    hot_ = *it;
+    return true;
 }
 
 bool MemoryMap::isObject(const void* p) const {

@@ -17,17 +17,25 @@ namespace strun::rt {
 class MemoryMap {
 public:
     void add(const void* begin, size_t size);
-    // True when [p, p + size) lies inside one registered region.
-    bool contains(const void* p, size_t size) const;
+    // True when [p, p + size) lies inside one registered region. The region
+    // of the last hit is tried first: accesses through one reference or
+    // pointer tend to stay in one block, so most checks are two compares.
+    bool contains(const void* p, size_t size) const {
+        auto a = reinterpret_cast<uintptr_t>(p);
+        if (a >= hot_.begin && a < hot_.end && size <= hot_.end - a) return true;
+        return containsSlow(a, size);
+    }
     // Objects that may be the target of a hidden pointer (class descriptors of FB instances).
     void addObject(const void* object);
     bool isObject(const void* p) const;
 
 private:
     void sort() const;
+    bool containsSlow(uintptr_t a, size_t size) const;
     struct Region {
         uintptr_t begin, end;
     };
+    mutable Region hot_{0, 0};
     mutable std::vector<Region> regions_;
     mutable std::vector<uintptr_t> objects_;
     mutable bool sorted_ = true;

@@ -61,8 +61,9 @@ uint8_t* FlexIndexPlace::outOfRange(Ctx& c, int64_t value, int64_t lo, int64_t h
     return sink(c);
 }
 
-uint8_t* RefSlotPlace::nullTarget(Ctx& c) {
-    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(at(c, site)), at(c, site).line, "reference is not bound", at(c, site).file, at(c, site).col);
+uint8_t* RefSlotPlace::badTarget(Ctx& c, const uint8_t* p) {
+    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(at(c, site)), at(c, site).line,
+                          p ? "reference leads outside the project's memory" : "reference is not bound", at(c, site).file, at(c, site).col);
     return sink(c);
 }
 

@@ -108,16 +108,19 @@ struct OffsetPlace final : Expr {
 };
 
 // VAR_IN_OUT, REFERENCE TO: the slot holds the address of the referenced storage.
+// A slot forged through a UNION, a pointer or a memory copy may hold any
+// address: like a pointer dereference, it must lead into project memory.
 struct RefSlotPlace final : Expr {
     Expr* slot;  // place of the 8-byte address
     Site site;
-    RefSlotPlace(Expr* s, Site st) : slot(s), site(st) {}
+    uint32_t targetSize;  // bytes of the referenced storage (1 for ARRAY[*])
+    RefSlotPlace(Expr* s, Site st, uint32_t size) : slot(s), site(st), targetSize(size) {}
     uint8_t* addr(Ctx& c) override {
         uint8_t* p = loadAs<uint8_t*>(slot->addr(c));
-        if (__builtin_expect(p == nullptr, 0)) return nullTarget(c);
+        if (__builtin_expect(p == nullptr || !c.m->memory.contains(p, targetSize), 0)) return badTarget(c, p);
         return p;
     }
-    uint8_t* nullTarget(Ctx& c);
+    uint8_t* badTarget(Ctx& c, const uint8_t* p);
 };
 
 // p^ : the pointer value (an address) as storage.

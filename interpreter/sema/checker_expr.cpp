@@ -330,10 +330,10 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
     if (v->byRef && v->type->flexible) {
         exec::Expr* slot = directNode(pool(), d, v->offset, v->abs, types().elementary(TK::Void));
         c.flexDesc = slot;
-        c.node = pool().make<exec::RefSlotPlace>(slot, site(loc));
+        c.node = pool().make<exec::RefSlotPlace>(slot, site(loc), 1u);
     } else if (v->byRef) {
         exec::Expr* slot = directNode(pool(), d, v->offset, v->abs, types().elementary(TK::Void));
-        exec::Expr* ref = pool().make<exec::RefSlotPlace>(slot, site(loc));
+        exec::Expr* ref = pool().make<exec::RefSlotPlace>(slot, site(loc), static_cast<uint32_t>(v->type->size));
         c.node = loadFrom(ref, v->type);
     } else if (v->bit >= 0) {
         exec::Expr* byte = directNode(pool(), Checked::Direct::Abs, 0, v->abs, types().elementary(TK::Void));
@@ -569,7 +569,7 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
         exec::Expr* slot = base.direct != Checked::Direct::None
                                ? directNode(pool(), base.direct, base.directOffset + f->offset, base.directAbs, types().voidType())
                                : pool().make<exec::OffsetPlace>(base.node, f->offset);
-        c.node = loadFrom(pool().make<exec::RefSlotPlace>(slot, site(loc)), ft);
+        c.node = loadFrom(pool().make<exec::RefSlotPlace>(slot, site(loc), static_cast<uint32_t>(ft->size)), ft);
     } else if (base.direct != Checked::Direct::None) {
         c.direct = base.direct;
         c.directOffset = base.directOffset + f->offset;
