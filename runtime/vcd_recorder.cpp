@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cstring>
 #include <map>
+#include <memory>
 
 namespace strun::rt {
 
@@ -19,20 +20,24 @@ std::string idCode(size_t n) {
 }
 
 // A scope tree, so signals of one scope are declared together whatever their order.
+// Children are held by pointer: a reference returned by child() stays valid
+// while further children are added (and Scope is complete where it is used).
 struct Scope {
-    std::vector<std::pair<std::string, Scope>> children;  // declaration order
-    std::vector<std::string> vars;                        // "$var ... $end" lines
-    Scope& child(const std::string& name) {
-        for (auto& [n, s] : children)
-            if (n == name) return s;
-        children.emplace_back(name, Scope{});
-        return children.back().second;
+    std::string name;
+    std::vector<std::unique_ptr<Scope>> children;  // declaration order
+    std::vector<std::string> vars;                 // "$var ... $end" lines
+    Scope& child(const std::string& childName) {
+        for (auto& c : children)
+            if (c->name == childName) return *c;
+        children.push_back(std::make_unique<Scope>());
+        children.back()->name = childName;
+        return *children.back();
     }
     void write(std::FILE* out) const {
         for (const std::string& v : vars) std::fputs(v.c_str(), out);
-        for (const auto& [name, scope] : children) {
-            std::fprintf(out, "$scope module %s $end\n", name.c_str());
-            scope.write(out);
+        for (const auto& c : children) {
+            std::fprintf(out, "$scope module %s $end\n", c->name.c_str());
+            c->write(out);
             std::fputs("$upscope $end\n", out);
         }
     }
