@@ -4,7 +4,7 @@
 
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
-#include "cli/suggest.h"
+#include "interpreter/source/closest_name.h"
 #include "interpreter/source/diagnostic_codes.h"
 
 namespace strun::cli {

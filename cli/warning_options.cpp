@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "cli/option_types.h"
-#include "cli/suggest.h"
+#include "interpreter/source/closest_name.h"
 #include "interpreter/source/diagnostic_codes.h"
 
 namespace strun::cli {

@@ -44,7 +44,7 @@ public:
     exec::NodePool& pool() { return model_.pool; }
     TypeTable& types() { return *model_.types; }
     CompileLog& log() { return log_; }
-    void error(const ast::Loc& loc, const std::string& message) { log_.error(loc, message); }
+    Diagnostic& error(const ast::Loc& loc, const std::string& message) { return log_.error(loc, message); }
     // A warning, unless `loc` is in strun's embedded library (its sources are never shown to users).
     void warning(const ast::Loc& loc, const std::string& message) {
         if (!libraryFiles_.count(loc.file)) log_.warning(loc, message);
@@ -193,6 +193,21 @@ private:
         return false;
     }
     void warnUnused();
+    // ---- suggestions and cascades of name errors (checker_suggest.cpp)
+    std::string closestDeclared(const std::string& typed, const std::vector<std::string>& declared) const;
+    // Adds "did you mean 'X'?" to `d` when a declared name is close to `typed`.
+    void suggest(Diagnostic& d, const std::string& typed, const std::vector<std::string>& declared) const;
+    std::vector<std::string> visibleVariableNames() const;
+    std::vector<std::string> typeNames() const;
+    std::vector<std::string> functionNames() const;
+    // Variables whose declaration failed (unknown type): their uses are not reported again.
+    void markUnresolved(const std::string& upperName);
+    bool isUnresolved(const std::string& upperName) const;
+    // "'X' is not a value of enumeration 'E'" with the values E has and the closest one.
+    void enumValueError(const ast::Loc& loc, const std::string& written, const Type* enumType);
+    // The instance name a suggestion declares for block type `typeName` (its first letter: t for TON).
+    static std::string instanceNameFor(const std::string& typeName);
+    std::set<std::pair<const PouInfo*, std::string>> unresolvedVars_;
     // ---- CODESYS FB_init (checker_fb_init.cpp)
     void buildFbInitCalls();
     void collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth);

@@ -66,6 +66,14 @@ public:
     bool hasErrors() const { return errors_ > 0; }
     size_t errorCount() const { return errors_; }
     const std::vector<Diagnostic>& messages() const { return messages_; }
+    // Removes the diagnostics `drop` selects (cascades of an earlier error).
+    template <class Pred>
+    void eraseIf(Pred drop) {
+        std::erase_if(messages_, drop);
+        errors_ = dropped_ > 0 ? errors_ : static_cast<size_t>(std::count_if(messages_.begin(), messages_.end(), [](const Diagnostic& d) {
+            return d.severity == Severity::Error;
+        }));
+    }
     size_t droppedCount() const { return dropped_; }
 
     // FILE:LINE:COL: error: MESSAGE, one per line, in the order reported.
