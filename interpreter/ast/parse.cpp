@@ -171,11 +171,20 @@ private:
     bool reportLexerErrors() {
         std::vector<antlr4::Token*> onChannel;
         for (antlr4::Token* token : tokens_.getTokens()) {
-            if (token->getChannel() == L::ERRORS)
+            if (token->getChannel() == L::ERRORS) {
                 reporter_.report(token->getLine(), token->getCharPositionInLine(), lexerErrorMessage(*token),
                                  token->getType() != L::ERROR_CHAR);
-            else if (token->getChannel() == antlr4::Token::DEFAULT_CHANNEL)
+                // The statement an unterminated string cut off ends on the next line: one error, not two.
+                if (token->getType() == L::UNTERMINATED_STRING || token->getType() == L::UNTERMINATED_WSTRING)
+                    reporter_.markLine(token->getLine() + 1);
+                // An unterminated comment or pragma swallowed the rest of the file: what the
+                // parser then misses (END_PROGRAM, ...) is its consequence, not news.
+                if (token->getType() == L::UNTERMINATED_BLOCK_COMMENT || token->getType() == L::UNTERMINATED_C_COMMENT ||
+                    token->getType() == L::UNTERMINATED_PRAGMA)
+                    reporter_.silence();
+            } else if (token->getChannel() == antlr4::Token::DEFAULT_CHANNEL) {
                 onChannel.push_back(token);
+            }
         }
         if (auto violation = findExcessiveNesting(onChannel)) {
             log_.error(Loc{fileIndex_, static_cast<int>(violation->token->getLine()),

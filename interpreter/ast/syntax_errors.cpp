@@ -191,6 +191,8 @@ bool FriendlyErrorStrategy::reportMissingSemicolon(antlr4::Parser* parser, antlr
         }
     }
     if (prev == nullptr || prev->getType() == antlr4::Token::EOF || found->getLine() <= prev->getLine()) return false;
+    // At the end of the file something larger is missing (or a comment swallowed the rest).
+    if (found->getType() == antlr4::Token::EOF) return false;
     if (prev->getText().find('\n') != std::string::npos) return false;
     // The statement or declaration the ';' ends, for the message.
     antlr4::Token* first = prev;
@@ -201,7 +203,9 @@ bool FriendlyErrorStrategy::reportMissingSemicolon(antlr4::Parser* parser, antlr
         }
     }
     const size_t column = prev->getCharPositionInLine() + codePoints(prev->getText());
-    reporter_->report(prev->getLine(), column, fmt::format("expected ';' after '{}'", excerpt(tokens, first, prev)));
+    Diagnostic& d = reporter_->report(prev->getLine(), column, fmt::format("expected ';' after '{}'", excerpt(tokens, first, prev)));
+    if (inDeclaration && P::isNameToken(found->getType()))
+        d.note(fmt::format("the declaration of '{}' on the next line is skipped until the ';' is there", found->getText()));
     return true;
 }
 
@@ -211,6 +215,12 @@ bool FriendlyErrorStrategy::reportUnclosedBlock(antlr4::Parser* parser, antlr4::
     const std::string foundName = found->getType() == antlr4::Token::EOF ? "" : parser->getVocabulary().getSymbolicName(found->getType());
     // Only when the text goes on with what closes an outer construct (or ends).
     if (found->getType() != antlr4::Token::EOF && foundName.rfind("END_", 0) != 0) return false;
+    // ... and only when that END_ closes a construct that is open further out:
+    // a stray END_FOR after a broken FOR header is not a missing END_PROGRAM.
+    bool closesOuter = found->getType() == antlr4::Token::EOF;
+    for (antlr4::ParserRuleContext* c = parser->getContext(); c != nullptr && !closesOuter; c = dynamic_cast<antlr4::ParserRuleContext*>(c->parent))
+        closesOuter = closingKeyword(c) == found->getType();
+    if (!closesOuter) return false;
     for (antlr4::ParserRuleContext* c = parser->getContext(); c != nullptr; c = dynamic_cast<antlr4::ParserRuleContext*>(c->parent)) {
         const size_t closer = closingKeyword(c);
         if (closer == 0) continue;
@@ -285,6 +295,7 @@ void SyntaxErrorReporter::syntaxError(antlr4::Recognizer*, antlr4::Token*, size_
 
 Diagnostic& SyntaxErrorReporter::report(size_t line, size_t charPositionInLine, const std::string& msg, bool always) {
     scratch_ = Diagnostic{};
+    if (silenced_ && !always) return scratch_;
     if (!linesWithError_.insert(line).second && !always) return scratch_;
     if (reported_ > kMaxErrorsPerFile) return scratch_;
     if (reported_++ == kMaxErrorsPerFile) {

@@ -69,9 +69,14 @@ public:
     // Returns the diagnostic for notes and help (a scratch one when the message is suppressed).
     Diagnostic& report(size_t line, size_t charPositionInLine, const std::string& msg, bool always = false);
     int fileIndex() const { return fileIndex_; }
+    // Counts `line` as having its error already (a cascade of one reported elsewhere).
+    void markLine(size_t line) { linesWithError_.insert(line); }
+    // From now on only `always` reports get through (the root cause is already reported).
+    void silence() { silenced_ = true; }
 
 private:
     Diagnostic scratch_;
+    bool silenced_ = false;
     CompileLog& log_;
     int fileIndex_;
     std::set<size_t> linesWithError_;

@@ -23,8 +23,15 @@ SyntaxDamage assessSyntaxErrors(const CompileLog& log) {
         if (!isSyntaxError(d) && d.code != "E0004" && d.code != "E0009") damage.checkable = false;
         if (isSyntaxError(d) && !isLocal(d.code)) damage.checkable = false;
         damage.lines.insert({d.loc.file, d.loc.line});
-        for (const DiagnosticNote& n : d.notes)
+        for (const DiagnosticNote& n : d.notes) {
             if (n.loc) damage.lines.insert({n.loc->file, n.loc->line});
+            // "the declaration of 'x' on the next line is skipped ...": x's uses are no news.
+            const std::string marker = "the declaration of '";
+            if (n.text.rfind(marker, 0) == 0) {
+                const size_t end = n.text.find('\'', marker.size());
+                if (end != std::string::npos) damage.skippedNames.insert(n.text.substr(marker.size(), end - marker.size()));
+            }
+        }
         damage.files.insert(d.loc.file);
         ++count;
     }
@@ -37,6 +44,8 @@ void dropSyntaxCascades(CompileLog& log, const SyntaxDamage& damage) {
         if (isSyntaxError(d) || d.code == "E0004" || d.code == "E0009") return false;
         if (!damage.files.count(d.loc.file)) return false;
         if (d.loc.line <= 0 || damage.lines.count({d.loc.file, d.loc.line})) return true;
+        for (const std::string& name : damage.skippedNames)
+            if (d.message == "undeclared identifier '" + name + "'") return true;
         return d.code == "W0003" || d.code == "W0004";
     });
 }

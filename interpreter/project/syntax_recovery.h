@@ -7,6 +7,7 @@
 #pragma once
 
 #include <set>
+#include <string>
 #include <utility>
 
 #include "interpreter/source/source_set.h"
@@ -17,6 +18,7 @@ struct SyntaxDamage {
     bool checkable = true;                 // false: some error is not local; do not check semantics
     std::set<std::pair<int, int>> lines;   // (file, line) of every syntax error
     std::set<int> files;                   // files with syntax errors
+    std::set<std::string> skippedNames;    // declarations the parser skipped (their uses are not reported)
 };
 
 SyntaxDamage assessSyntaxErrors(const CompileLog& log);

@@ -199,6 +199,7 @@ private:
     void suggest(Diagnostic& d, const std::string& typed, const std::vector<std::string>& declared) const;
     std::vector<std::string> visibleVariableNames() const;
     std::vector<std::string> typeNames() const;
+    std::vector<std::string> globalNames() const;
     std::vector<std::string> functionNames() const;
     // Variables whose declaration failed (unknown type): their uses are not reported again.
     void markUnresolved(const std::string& upperName);

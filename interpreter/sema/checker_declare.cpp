@@ -600,7 +600,8 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 if (isExternal) {
                     auto g = globals_.find(key);
                     if (g == globals_.end()) {
-                        error(loc, fmt::format("VAR_EXTERNAL '{}' names no global variable", name));
+                        suggest(error(loc, fmt::format("VAR_EXTERNAL '{}' names no global variable", name)), name, globalNames());
+                        unresolvedVars_.insert({pou, key});
                         continue;
                     }
                     if (t && !sameType(t, g->second->type))

@@ -47,6 +47,12 @@ std::vector<std::string> Checker::visibleVariableNames() const {
     return out;
 }
 
+std::vector<std::string> Checker::globalNames() const {
+    std::vector<std::string> out;
+    for (const auto& [key, v] : globals_) out.push_back(v->name);
+    return out;
+}
+
 std::vector<std::string> Checker::typeNames() const {
     std::vector<std::string> out(std::begin(kElementaryTypes), std::end(kElementaryTypes));
     for (const auto& [key, decl] : typeDecls_) out.push_back(decl->name);
