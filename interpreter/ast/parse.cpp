@@ -12,6 +12,7 @@
 #include "interpreter/ast/parse.h"
 
 #include <exception>
+#include <regex>
 
 #include <antlr4-runtime.h>
 
@@ -67,6 +68,7 @@ public:
         warnAboutInvalidUtf8();
         if (!lexWithinLimit()) return emptyUnit();
         reportForeignOperators();
+        reportMessagePragmas();
         if (!reportLexerErrors()) return emptyUnit();
         CompilationUnit unit = emptyUnit();
         runWithLargeStack([&] {
@@ -163,6 +165,24 @@ private:
             reporter_.report(a->getLine(), a->getCharPositionInLine(), "ST has no '" + op + "' operator").withHelp(help)
                 .spanTo(static_cast<int>(a->getLine()), static_cast<int>(a->getCharPositionInLine() + op.size()) + 1);
             if (pair && op.size() == 2) ++i;
+        }
+    }
+
+    // {warning 'text'} and {error 'text'} (CODESYS message pragmas): the text
+    // as a warning (W0010) or an error (E0010) at the pragma.
+    void reportMessagePragmas() {
+        static const std::regex kMessage(R"(^\{\s*(warning|error)\s+'([^']*)'\s*\}$)", std::regex::icase);
+        for (antlr4::Token* t : tokens_.getTokens()) {
+            if (t->getChannel() != L::PRAGMAS) continue;
+            const std::string text = t->getText();
+            if (text.size() > 4096) continue;
+            std::smatch m;
+            if (!std::regex_match(text, m, kMessage)) continue;
+            const Loc at{fileIndex_, static_cast<int>(t->getLine()), static_cast<int>(t->getCharPositionInLine()) + 1};
+            const bool isError = m[1].str().size() == 5;  // "error"
+            Diagnostic& d = isError ? log_.error(at, m[2].str()) : log_.warning(at, m[2].str());
+            d.withCode(isError ? "E0010" : "W0010");
+            if (text.find('\n') == std::string::npos) d.spanTo(at.line, at.col + static_cast<int>(text.size()));
         }
     }
 

@@ -46,8 +46,10 @@ public:
     CompileLog& log() { return log_; }
     Diagnostic& error(const ast::Loc& loc, const std::string& message) { return log_.error(loc, message); }
     // A warning, unless `loc` is in strun's embedded library (its sources are never shown to users).
-    void warning(const ast::Loc& loc, const std::string& message) {
-        if (!libraryFiles_.count(loc.file)) log_.warning(loc, message);
+    Diagnostic& warning(const ast::Loc& loc, const std::string& message) {
+        if (!libraryFiles_.count(loc.file)) return log_.warning(loc, message);
+        discarded_ = Diagnostic{};
+        return discarded_;
     }
     // What CODESYS accepts and IEC 61131-3 does not (implicit narrowing, a constant
     // expression that wraps): a warning by default, an error with --strict
@@ -181,6 +183,7 @@ private:
     Checked makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc);
     Checked makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& loc);
     Checked makeLogic(ast::Op op, Checked a, Checked b, const ast::Loc& loc);
+    void warnConstantComparison(ast::Op op, const Checked& a, const Checked& b, const ast::Loc& loc);
     Checked foldIfConst(Checked r, std::initializer_list<const Checked*> operands);
     exec::Stmt* assignChecked(Checked target, Checked value, const ast::Loc& loc);
     void markWritten(const Checked& target, const ast::Loc& loc);
@@ -247,6 +250,7 @@ private:
     bool assignedResult_ = false;
     std::vector<std::unique_ptr<ast::TypeDecl>> inlineEnumDecls_;
     std::set<int> libraryFiles_;
+    Diagnostic discarded_;  // what warning() hands back for the library's own lines (never printed)
     const rt::PlcProfile* profile_ = &rt::defaultProfile();
 
 public:

@@ -55,6 +55,10 @@ const std::vector<CodeInfo> kCatalogue = {
      "STRUCT outside TYPE, an ACTION before its POU, a body in an INTERFACE method, an access path outside "
      "VAR_ACCESS, an unknown assignment operator.",
      "VAR\n    x : INT;\nEND_VAR\nPROGRAM Main\nEND_PROGRAM", "PROGRAM Main\nVAR\n    x : INT;\nEND_VAR\nEND_PROGRAM"},
+    {"E0010", K::Error, "an {error} pragma",
+     "The source holds a CODESYS message pragma `{error 'text'}`: its author wants compilation to stop here with "
+     "that text (typically: something must be configured before the code can be used).",
+     "{error 'set the number of axes in GVL_Config first'}", ""},
     // ---- names (E01xx)
     {"E0101", K::Error, "undeclared identifier",
      "The name is not declared where it is used: not a variable of the POU, not a global (or VAR_EXTERNAL), not an "
@@ -248,6 +252,27 @@ const std::vector<CodeInfo> kCatalogue = {
     {"W0009", K::Warning, "a system variable strun does not maintain",
      "The target's system variable exists, but strun does not update it: it reads 0 unless the program writes it.",
      "", ""},
+    {"W0010", K::Warning, "a {warning} pragma",
+     "The source holds a CODESYS message pragma `{warning 'text'}`; strun shows its text as a warning at the pragma, "
+     "as CODESYS does.",
+     "{warning 'temporary test values below'}", ""},
+    {"W0011", K::Warning, "unreachable code",
+     "Statements follow a RETURN, EXIT, CONTINUE or JMP in the same statement list, so they never run. Remove them, "
+     "or put the RETURN inside an IF.",
+     "IF error THEN\n    RETURN;\n    alarm := TRUE;\nEND_IF", "IF error THEN\n    alarm := TRUE;\n    RETURN;\nEND_IF"},
+    {"W0012", K::Warning, "division by the constant 0",
+     "The divisor of an integer `/` or MOD is the constant 0. At run time strun records DIV_BY_ZERO and divides by 1 "
+     "(the outside interface's rule), which is rarely what was meant.",
+     "avg := sum / 0;", "avg := sum / count;"},
+    {"W0013", K::Warning, "a comparison that is always TRUE or always FALSE",
+     "An unsigned integer (USINT, UINT, UDINT, ULINT) is never negative: `u < 0` is always FALSE and `u >= 0` always "
+     "TRUE. Use a signed type if the value can go below zero, or compare with the value you meant.",
+     "VAR level : UINT; END_VAR\nIF level < 0 THEN", "VAR level : INT; END_VAR\nIF level < 0 THEN"},
+    {"W0014", K::Warning, "a function block instance is never used",
+     "A PROGRAM declares a function block instance (a timer, a counter, ...) that is never called and whose outputs "
+     "are never read: it does nothing. Call it, or remove it.",
+     "VAR\n    delay : TON;\nEND_VAR\nlamp := start;",
+     "VAR\n    delay : TON;\nEND_VAR\ndelay(IN := start, PT := T#2s);\nlamp := delay.Q;"},
     {"W0999", K::Warning, "other warning", "A warning without a more specific code. The message says what it is.",
      "", ""},
     // ---- runtime faults (the diagnostic buffer; names fixed by the outside interface)

@@ -58,7 +58,7 @@ const Rule kErrorRules[] = {
               "string length|EXTENDS in a TYPE"},
     {"E0401", "must be a constant|needs an initial value|initial value must be a constant|cannot be initialised with"},
     {"E0402", "initialiser for a variable|too many initial values"},
-    {"E0205", "^constant .* is outside the range"},
+    {"E0205", "is outside the range of"},
     {"E0203", "must be BOOL, not"},
     {"E0204", "subscript|dimension\\(s\\)|not an array"},
     {"E0207", "^bit |partial access|bit access"},
