@@ -115,6 +115,10 @@ void Checker::buildConfiguration() {
                 if (constTime(p.value.get(), t)) {
                     s.interval = t;
                     hasInterval = t > 0;
+                    if (t <= 0)
+                        warning(p.value->loc, fmt::format("the INTERVAL of task '{}' is {}: not a period, the task runs freewheeling "
+                                                          "(again and again without pause)", s.name, t == 0 ? "zero" : "negative"))
+                            .withCode("W0015");
                 }
                 s.intervalGiven = true;
             } else if (key == "PRIORITY") {

@@ -273,6 +273,11 @@ const std::vector<CodeInfo> kCatalogue = {
      "are never read: it does nothing. Call it, or remove it.",
      "VAR\n    delay : TON;\nEND_VAR\nlamp := start;",
      "VAR\n    delay : TON;\nEND_VAR\ndelay(IN := start, PT := T#2s);\nlamp := delay.Q;"},
+    {"W0015", K::Warning, "a task INTERVAL of zero or less",
+     "A cyclic task needs a positive INTERVAL. `INTERVAL := T#0ms` (or a negative duration) is no period: the task "
+     "runs freewheeling, again and again without pause, and takes all the time lower-priority tasks would get. "
+     "Write the period you meant, or declare the task without INTERVAL if freewheeling is meant.",
+     "TASK fast (INTERVAL := T#0ms, PRIORITY := 1);", "TASK fast (INTERVAL := T#10ms, PRIORITY := 1);"},
     {"W0999", K::Warning, "other warning", "A warning without a more specific code. The message says what it is.",
      "", ""},
     // ---- runtime faults (the diagnostic buffer; names fixed by the outside interface)
