@@ -2,7 +2,7 @@
 # One program of the diagnostics gallery (tests/diagnostics/README.md):
 #   gallery_check.sh STRUN GALLERY_DIR NAME [--update]
 # runs `strun check --color never [ARGS] NAME.st` in GALLERY_DIR (ARGS from
-# NAME.args when present), and compares its stderr plus a last line
+# NAME.args when present; `--color` there replaces `--color never`), and compares its stderr plus a last line
 # `[exit N]` with NAME.expected; --update writes NAME.expected instead.
 # Every location printed must be in a file of the gallery: never in strun's
 # embedded library sources.
@@ -12,8 +12,10 @@ args=""
 [ -f "$name.args" ] && args=$(cat "$name.args")
 actual=$(mktemp)
 trap 'rm -f "$actual"' EXIT
+color="--color never"
+case "$args" in *--color*) color="" ;; esac
 # shellcheck disable=SC2086
-"$strun" check --color never $args "$name.st" 2>"$actual" >/dev/null
+"$strun" check $color $args "$name.st" 2>"$actual" >/dev/null
 echo "[exit $?]" >>"$actual"
 if [ "$mode" = "--update" ]; then
     cp "$actual" "$name.expected"
