@@ -254,6 +254,20 @@ bool FriendlyErrorStrategy::reportUnclosedBlock(antlr4::Parser* parser, antlr4::
 void FriendlyErrorStrategy::reportAt(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected) {
     if (reporter_ != nullptr && (reportMissingSemicolon(parser, found, expected) || reportUnclosedBlock(parser, found, expected)))
         return;
+    // `IF x := 1 THEN`: the C habit of assigning in a condition, or '=' mistyped.
+    if (reporter_ != nullptr && found != nullptr && found->getType() == L::ASSIGN &&
+        (expected.contains(static_cast<size_t>(L::THEN)) || expected.contains(static_cast<size_t>(L::DO)))) {
+        reporter_->report(found->getLine(), found->getCharPositionInLine(), "':=' in a condition: a condition compares, it does not assign")
+            .withCode("E0004")
+            .withHelp("compare with '=': IF x = 1 THEN");
+        // Recovery drops the statement, so its END_IF / END_WHILE comes unexpected: the same mistake.
+        orphanCloser_ = expected.contains(static_cast<size_t>(L::THEN)) ? L::END_IF : L::END_WHILE;
+        return;
+    }
+    if (found != nullptr && orphanCloser_ != 0 && found->getType() == orphanCloser_) {
+        orphanCloser_ = 0;
+        return;
+    }
     parser->notifyErrorListeners(found, message(parser, found, expected), nullptr);
 }
 

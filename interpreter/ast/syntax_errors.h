@@ -49,6 +49,7 @@ private:
     bool reportMissingSemicolon(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected);
     bool reportUnclosedBlock(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected);
     SyntaxErrorReporter* reporter_;
+    size_t orphanCloser_ = 0;  // the END_ keyword of a statement recovery dropped (not reported again)
 };
 
 // Forwards parser errors into the CompileLog as "syntax error: ...".

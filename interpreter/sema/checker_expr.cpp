@@ -994,6 +994,10 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         e = settle(e);
         from = e.type;
     }
+    if (isStringType(from->kind) && from->kind == target->kind && e.isConst && from->maxLen > target->maxLen && target->maxLen > 0)
+        warning(e.loc.line ? e.loc : loc, fmt::format("the string has {} characters; {} keeps only the first {}", from->maxLen,
+                                                      typeName(target), target->maxLen))
+            .withCode("W0016");
     if (isCharType(target->kind) && isStringType(from->kind) && e.isConst) {
         // c : CHAR := 'A': a one-character string literal is that character.
         if (auto* bytes = dynamic_cast<exec::ConstBytes*>(e.node)) {

@@ -30,7 +30,7 @@ const std::vector<CodeInfo> kCatalogue = {
     {"E0004", K::Error, "an operator of C or Java that ST does not have",
      "Structured Text has no `++`, `--`, `+=`, `-=`, `==`, `!=`, `&&`, `||` or `!`. Write `x := x + 1`, "
      "`x := x + n`, `=` for comparison, `<>` for inequality, and `AND`, `OR`, `NOT` for logic. Assignment is `:=`; a "
-     "single `=` compares.",
+     "single `=` compares, and a condition (`IF x = 1 THEN`) can only compare: `IF x := 1 THEN` is an error.",
      "IF a == b && c != 0 THEN\n    n++;\nEND_IF", "IF a = b AND c <> 0 THEN\n    n := n + 1;\nEND_IF"},
     {"E0005", K::Error, "unterminated comment, string or pragma",
      "A comment `(* ... *)` or `/* ... */`, a pragma `{ ... }` or a string literal was opened and never closed. "
@@ -278,6 +278,10 @@ const std::vector<CodeInfo> kCatalogue = {
      "runs freewheeling, again and again without pause, and takes all the time lower-priority tasks would get. "
      "Write the period you meant, or declare the task without INTERVAL if freewheeling is meant.",
      "TASK fast (INTERVAL := T#0ms, PRIORITY := 1);", "TASK fast (INTERVAL := T#10ms, PRIORITY := 1);"},
+    {"W0016", K::Warning, "a string literal longer than its target",
+     "A constant string is assigned (or passed, or given as initial value) to a STRING[n] shorter than it: only the "
+     "first n characters are kept. Declare the variable longer, or shorten the text.",
+     "VAR msg : STRING[5]; END_VAR\nmsg := 'Motor started';", "VAR msg : STRING[20]; END_VAR\nmsg := 'Motor started';"},
     {"W0999", K::Warning, "other warning", "A warning without a more specific code. The message says what it is.",
      "", ""},
     // ---- runtime faults (the diagnostic buffer; names fixed by the outside interface)
