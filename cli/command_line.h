@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/diagnostic_options.h"
 #include "interpreter/sema/compile_options.h"
 
 namespace strun::cli {
@@ -14,6 +15,7 @@ namespace strun::cli {
 struct CommandLine {
     std::vector<std::string> files;
     sema::CompileOptions compile;  // --target, --strict (run, check)
+    DiagnosticOptions diagnostics;  // --color, --diagnostics-format, -W (run, check, test)
 
     // run
     bool virtualClock = false;

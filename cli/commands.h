@@ -14,7 +14,10 @@ CLI::App* addCheckCommand(CLI::App& app, CommandLine& line);
 void addCompileOptions(CLI::App& command, CommandLine& line);
 void addFileArguments(CLI::App& command, CommandLine& line);
 
+CLI::App* addExplainCommand(CLI::App& app, std::string& code);
+
 int runCommand(const CommandLine& line);    // strun run
 int checkCommand(const CommandLine& line);  // strun check
+int explainCommand(const std::string& code);  // strun explain [CODE]
 
 }  // namespace strun::cli

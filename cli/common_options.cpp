@@ -1,6 +1,7 @@
 // Options and arguments more than one subcommand takes.
 #include "cli/commands.h"
 #include "cli/option_types.h"
+#include "cli/warning_options.h"
 #include "runtime/plc_profile.h"
 
 namespace strun::cli {
@@ -43,6 +44,7 @@ void addCompileOptions(CLI::App& command, CommandLine& line) {
         ->type_name("NAME")
         ->default_str("generic");
     command.add_flag("--strict", line.compile.strict, "IEC 61131-3 typing: implicit conversions are errors, not warnings");
+    addDiagnosticOptions(command, line.diagnostics);
 }
 
 }  // namespace strun::cli

@@ -2,6 +2,7 @@
 
 #include <iostream>
 
+#include "cli/diagnostic_render.h"
 #include "cli/exit_codes.h"
 #include "interpreter/project/compile.h"
 #include "interpreter/source/project_inputs.h"
@@ -18,7 +19,9 @@ void compileCommandLine(const CommandLine& line, Compiled& out) {
         return;
     }
     out.model = project::compileProject(out.sources, files, log, line.compile);
-    log.print(std::cerr, out.sources);
+    // -Werror / -W CODE=error can turn a compiled project into one that does not compile.
+    const bool errors = printDiagnostics(log, out.sources, line.diagnostics, std::cerr, stderrWantsColor(line.diagnostics.color));
+    if (errors) out.model.reset();
     out.exitCode = out.model ? kExitOk : kExitCompile;
 }
 

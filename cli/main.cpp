@@ -2,6 +2,7 @@
 //   strun run   [options] FILE...   compile the FILEs as one project and run it
 //   strun check [options] FILE...   compile only; print diagnostics
 //   strun test  [options] FILE...|DIR   run the unit tests (TcUnit / CfUnit API)
+//   strun explain [CODE]            the page of a diagnostic code
 //   strun help [COMMAND], strun --version
 // Exit status: 0 ok, 1 does not compile, 2 bad command line, 3 PLC STOP/HALT.
 #include <cstdlib>
@@ -35,9 +36,11 @@ int runMain(int argc, char** argv) {
     CLI::App* check = addCheckCommand(app, line);
     TestCommandLine testLine;
     CLI::App* test = addTestCommand(app, line, testLine);
+    std::string explainCode;
+    CLI::App* explain = addExplainCommand(app, explainCode);
     CLI::App* help = app.add_subcommand("help", "show the commands, or the options of COMMAND");
     std::string helpTopic;
-    help->add_option("COMMAND", helpTopic, "run, check, test")->type_name("COMMAND");
+    help->add_option("COMMAND", helpTopic, "run, check, test, explain")->type_name("COMMAND");
 
     if (int status = checkSubcommandName(app, argc, argv); status >= 0) return status;
     try {
@@ -55,6 +58,7 @@ int runMain(int argc, char** argv) {
     if (run->parsed()) return runCommand(line);
     if (check->parsed()) return checkCommand(line);
     if (test->parsed()) return testCommand(line, testLine);
+    if (explain->parsed()) return explainCommand(explainCode);
     return kExitUsage;
 }
 

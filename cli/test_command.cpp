@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/diagnostic_render.h"
 #include "cli/exit_codes.h"
 #include "cli/option_types.h"
 #include "cli/stimulus_args.h"
@@ -74,7 +75,7 @@ int testCommand(const CommandLine& line, const TestCommandLine& test) {
     CompileLog log;
     if (!source::readProjectInputs(line.files, sources, indices, log, error)) return usage(error);
     auto model = testing::compileForTests(sources, indices, log, line.compile);
-    log.print(std::cerr, sources);
+    if (printDiagnostics(log, sources, line.diagnostics, std::cerr, stderrWantsColor(line.diagnostics.color))) return kExitCompile;
     if (!model) return kExitCompile;
     testing::TestRegistry& reg = *model->tests;
     reg.filter = test.filter;

@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "cli/exit_codes.h"
-#include "cli/suggest.h"
+#include "interpreter/source/closest_name.h"
 
 namespace strun::cli {
 

@@ -39,8 +39,8 @@ std::string AstBuilder::sourceText(antlr4::ParserRuleContext* c) {
     return out;
 }
 
-void AstBuilder::error(const Loc& at, const std::string& message) {
-    errors_.report(static_cast<size_t>(at.line), at.col > 0 ? static_cast<size_t>(at.col - 1) : 0, message);
+Diagnostic& AstBuilder::error(const Loc& at, const std::string& message) {
+    return errors_.report(static_cast<size_t>(at.line), at.col > 0 ? static_cast<size_t>(at.col - 1) : 0, message);
 }
 
 std::vector<Pragma> AstBuilder::pragmasBefore(const antlr4::Token* token) {

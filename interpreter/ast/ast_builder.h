@@ -78,7 +78,7 @@ private:
     static std::string text(antlr4::tree::ParseTree* node);  // "" for a missing node
     static std::string sourceText(antlr4::ParserRuleContext* c);  // as written, shortened for messages
     std::vector<Pragma> pragmasBefore(const antlr4::Token* token);
-    void error(const Loc& at, const std::string& message);
+    Diagnostic& error(const Loc& at, const std::string& message);
 
     antlr4::BufferedTokenStream& tokens_;
     SyntaxErrorReporter& errors_;

@@ -126,9 +126,10 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
         if (c->ASSIGN() || c->TRY_ASSIGN() || c->EQ()) return nullptr;  // right side missing: reported
         if (e->kind != ExprKind::Call) {
             const bool comparison = e->kind == ExprKind::Binary && e->op == Op::Eq;
-            error(at, fmt::format("'{}' is not a statement: expected ':=' or a call with '(...)'{}",
-                                  sourceText(operands[0]),
-                                  comparison ? " (for an assignment write ':=', not '=')" : ""));
+            Diagnostic& d = error(at, fmt::format("'{}' is not a statement: expected ':=' or a call with '(...)'{}",
+                                                  sourceText(operands[0]),
+                                                  comparison ? " (for an assignment write ':=', not '=')" : ""));
+            if (comparison) d.withCode("E0004").withHelp("'=' compares; assignment is ':=': x := 5;");
             return nullptr;
         }
         auto s = makeStmt(StmtKind::Call, at);

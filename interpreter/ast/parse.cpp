@@ -12,6 +12,7 @@
 #include "interpreter/ast/parse.h"
 
 #include <exception>
+#include <regex>
 
 #include <antlr4-runtime.h>
 
@@ -66,6 +67,8 @@ public:
     CompilationUnit run() {
         warnAboutInvalidUtf8();
         if (!lexWithinLimit()) return emptyUnit();
+        reportForeignOperators();
+        reportMessagePragmas();
         if (!reportLexerErrors()) return emptyUnit();
         CompilationUnit unit = emptyUnit();
         runWithLargeStack([&] {
@@ -124,16 +127,84 @@ private:
         return true;
     }
 
+    // The operators of C and Java that ST beginners type (`==`, `!=`, `&&`,
+    // `||`, `++`, `+=`, `!`): one message with the ST spelling, before the
+    // parser's less helpful one on the same line (one error per line).
+    void reportForeignOperators() {
+        std::vector<antlr4::Token*> seen;
+        for (antlr4::Token* t : tokens_.getTokens())
+            if (t->getChannel() == antlr4::Token::DEFAULT_CHANNEL || t->getChannel() == L::ERRORS) seen.push_back(t);
+        auto is = [](antlr4::Token* t, size_t type, const char* text = nullptr) {
+            return t->getType() == type && (text == nullptr || t->getText() == text);
+        };
+        for (size_t i = 0; i < seen.size(); ++i) {
+            antlr4::Token* a = seen[i];
+            antlr4::Token* b = i + 1 < seen.size() ? seen[i + 1] : nullptr;
+            const bool pair = b != nullptr && b->getStartIndex() == a->getStopIndex() + 1;
+            antlr4::Token* before = i > 0 ? seen[i - 1] : nullptr;
+            const std::string target = before != nullptr && P::isNameToken(before->getType()) ? before->getText() : "x";
+            std::string op, help;
+            if (pair && is(a, L::EQ) && is(b, L::EQ)) {
+                op = "==", help = "compare with a single '=': IF a = b THEN";
+            } else if (pair && is(a, L::ERROR_CHAR, "!") && is(b, L::EQ)) {
+                op = "!=", help = "'<>' means not equal: IF a <> b THEN";
+            } else if (is(a, L::ERROR_CHAR, "!")) {
+                op = "!", help = "write NOT: IF NOT done THEN";
+            } else if (pair && is(a, L::AMP) && is(b, L::AMP)) {
+                op = "&&", help = "write AND: IF a AND b THEN";
+            } else if (pair && is(a, L::ERROR_CHAR, "|") && is(b, L::ERROR_CHAR, "|")) {
+                op = "||", help = "write OR: IF a OR b THEN";
+            } else if (pair && (is(a, L::PLUS) || is(a, L::MINUS)) && b->getType() == a->getType()) {
+                const std::string sign = a->getText();
+                op = sign + sign, help = "write '" + target + " := " + target + " " + sign + " 1;'";
+            } else if (pair && (is(a, L::PLUS) || is(a, L::MINUS) || is(a, L::STAR) || is(a, L::SLASH)) && is(b, L::EQ)) {
+                op = a->getText() + "=", help = "write '" + target + " := " + target + " " + a->getText() + " ...;'";
+            } else {
+                continue;
+            }
+            reporter_.report(a->getLine(), a->getCharPositionInLine(), "ST has no '" + op + "' operator").withHelp(help)
+                .spanTo(static_cast<int>(a->getLine()), static_cast<int>(a->getCharPositionInLine() + op.size()) + 1);
+            if (pair && op.size() == 2) ++i;
+        }
+    }
+
+    // {warning 'text'} and {error 'text'} (CODESYS message pragmas): the text
+    // as a warning (W0010) or an error (E0010) at the pragma.
+    void reportMessagePragmas() {
+        static const std::regex kMessage(R"(^\{\s*(warning|error)\s+'([^']*)'\s*\}$)", std::regex::icase);
+        for (antlr4::Token* t : tokens_.getTokens()) {
+            if (t->getChannel() != L::PRAGMAS) continue;
+            const std::string text = t->getText();
+            if (text.size() > 4096) continue;
+            std::smatch m;
+            if (!std::regex_match(text, m, kMessage)) continue;
+            const Loc at{fileIndex_, static_cast<int>(t->getLine()), static_cast<int>(t->getCharPositionInLine()) + 1};
+            const bool isError = m[1].str().size() == 5;  // "error"
+            Diagnostic& d = isError ? log_.error(at, m[2].str()) : log_.warning(at, m[2].str());
+            d.withCode(isError ? "E0010" : "W0010");
+            if (text.find('\n') == std::string::npos) d.spanTo(at.line, at.col + static_cast<int>(text.size()));
+        }
+    }
+
     // Reports error tokens and runs the nesting guard; false if parsing must
     // not go ahead.
     bool reportLexerErrors() {
         std::vector<antlr4::Token*> onChannel;
         for (antlr4::Token* token : tokens_.getTokens()) {
-            if (token->getChannel() == L::ERRORS)
+            if (token->getChannel() == L::ERRORS) {
                 reporter_.report(token->getLine(), token->getCharPositionInLine(), lexerErrorMessage(*token),
                                  token->getType() != L::ERROR_CHAR);
-            else if (token->getChannel() == antlr4::Token::DEFAULT_CHANNEL)
+                // The statement an unterminated string cut off ends on the next line: one error, not two.
+                if (token->getType() == L::UNTERMINATED_STRING || token->getType() == L::UNTERMINATED_WSTRING)
+                    reporter_.markLine(token->getLine() + 1);
+                // An unterminated comment or pragma swallowed the rest of the file: what the
+                // parser then misses (END_PROGRAM, ...) is its consequence, not news.
+                if (token->getType() == L::UNTERMINATED_BLOCK_COMMENT || token->getType() == L::UNTERMINATED_C_COMMENT ||
+                    token->getType() == L::UNTERMINATED_PRAGMA)
+                    reporter_.silence();
+            } else if (token->getChannel() == antlr4::Token::DEFAULT_CHANNEL) {
                 onChannel.push_back(token);
+            }
         }
         if (auto violation = findExcessiveNesting(onChannel)) {
             log_.error(Loc{fileIndex_, static_cast<int>(violation->token->getLine()),
@@ -157,7 +228,7 @@ private:
         tokens_.seek(0);
         parser_.reset();
         simulator->setPredictionMode(antlr4::atn::PredictionMode::LL);
-        parser_.setErrorHandler(std::make_shared<FriendlyErrorStrategy>());
+        parser_.setErrorHandler(std::make_shared<FriendlyErrorStrategy>(&reporter_));
         parser_.addErrorListener(&reporter_);
         return parser_.compilationUnit();
     }

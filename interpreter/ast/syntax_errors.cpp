@@ -125,14 +125,158 @@ std::string FriendlyErrorStrategy::message(antlr4::Parser* parser, antlr4::Token
     return text + ", expected " + joinAlternatives(hint);
 }
 
+namespace {
+
+// Columns are code points, as the lexer counts them.
+size_t codePoints(const std::string& text) {
+    size_t n = 0;
+    for (unsigned char c : text)
+        if ((c & 0xC0) != 0x80) ++n;
+    return n;
+}
+
+// The source text of tokens [from, to] with runs of blanks as one space, shortened.
+std::string excerpt(antlr4::TokenStream* tokens, antlr4::Token* from, antlr4::Token* to) {
+    antlr4::CharStream* chars = from->getInputStream();
+    if (chars == nullptr || to->getStopIndex() < from->getStartIndex()) return from->getText();
+    std::string raw = chars->getText(antlr4::misc::Interval(from->getStartIndex(), to->getStopIndex()));
+    std::string out;
+    for (char c : raw) {
+        const bool blank = c == ' ' || c == '\t' || c == '\n' || c == '\r';
+        if (blank) {
+            if (!out.empty() && out.back() != ' ') out += ' ';
+        } else {
+            out += c;
+        }
+    }
+    while (!out.empty() && out.back() == ' ') out.pop_back();
+    if (codePoints(out) > 40) {
+        // Keep the end: it is what the ';' follows.
+        size_t cut = out.size() - 37;
+        while (cut < out.size() && (static_cast<unsigned char>(out[cut]) & 0xC0) == 0x80) ++cut;
+        out = "..." + out.substr(cut);
+    }
+    return out;
+}
+
+// The END_ keyword that closes the construct a context stands for, or 0.
+size_t closingKeyword(antlr4::ParserRuleContext* c) {
+    if (dynamic_cast<P::IfStmtContext*>(c)) return L::END_IF;
+    if (dynamic_cast<P::CaseStmtContext*>(c)) return L::END_CASE;
+    if (dynamic_cast<P::ForStmtContext*>(c)) return L::END_FOR;
+    if (dynamic_cast<P::WhileStmtContext*>(c)) return L::END_WHILE;
+    if (dynamic_cast<P::RepeatStmtContext*>(c)) return L::END_REPEAT;
+    if (dynamic_cast<P::VarBlockContext*>(c)) return L::END_VAR;
+    if (dynamic_cast<P::ProgramDeclContext*>(c)) return L::END_PROGRAM;
+    if (dynamic_cast<P::FunctionDeclContext*>(c)) return L::END_FUNCTION;
+    return 0;
+}
+
+}  // namespace
+
+bool FriendlyErrorStrategy::reportMissingSemicolon(antlr4::Parser* parser, antlr4::Token* found,
+                                                   const antlr4::misc::IntervalSet& expected) {
+    // In a declaration the parser may not list ';' (it was still deciding
+    // between a type and an access path), but a new line there means the same.
+    const bool inDeclaration = dynamic_cast<P::VarDeclContext*>(parser->getContext()) != nullptr;
+    if ((!expected.contains(static_cast<size_t>(L::SEMI)) && !inDeclaration) || found == nullptr) return false;
+    antlr4::TokenStream* tokens = parser->getTokenStream();
+    // The last token before `found` (not LT(-1): a failed prediction has not consumed it yet).
+    antlr4::Token* prev = nullptr;
+    for (size_t i = found->getTokenIndex(); i-- > 0;) {
+        antlr4::Token* t = tokens->get(i);
+        if (t->getChannel() == antlr4::Token::DEFAULT_CHANNEL) {
+            prev = t;
+            break;
+        }
+    }
+    if (prev == nullptr || prev->getType() == antlr4::Token::EOF || found->getLine() <= prev->getLine()) return false;
+    // At the end of the file something larger is missing (or a comment swallowed the rest).
+    if (found->getType() == antlr4::Token::EOF) return false;
+    if (prev->getText().find('\n') != std::string::npos) return false;
+    // The statement or declaration the ';' ends, for the message.
+    antlr4::Token* first = prev;
+    for (antlr4::ParserRuleContext* c = parser->getContext(); c != nullptr; c = dynamic_cast<antlr4::ParserRuleContext*>(c->parent)) {
+        if (dynamic_cast<P::StatementContext*>(c) || dynamic_cast<P::VarDeclContext*>(c)) {
+            if (c->getStart() != nullptr && c->getStart()->getTokenIndex() <= prev->getTokenIndex()) first = c->getStart();
+            break;
+        }
+    }
+    const size_t column = prev->getCharPositionInLine() + codePoints(prev->getText());
+    Diagnostic& d = reporter_->report(prev->getLine(), column, fmt::format("expected ';' after '{}'", excerpt(tokens, first, prev)));
+    if (inDeclaration && P::isNameToken(found->getType()))
+        d.note(fmt::format("the declaration of '{}' on the next line is skipped until the ';' is there", found->getText()));
+    return true;
+}
+
+bool FriendlyErrorStrategy::reportUnclosedBlock(antlr4::Parser* parser, antlr4::Token* found,
+                                                const antlr4::misc::IntervalSet& expected) {
+    if (found == nullptr) return false;
+    const std::string foundName = found->getType() == antlr4::Token::EOF ? "" : parser->getVocabulary().getSymbolicName(found->getType());
+    // Only when the text goes on with what closes an outer construct (or ends).
+    if (found->getType() != antlr4::Token::EOF && foundName.rfind("END_", 0) != 0) return false;
+    // ... and only when that END_ closes a construct that is open further out:
+    // a stray END_FOR after a broken FOR header is not a missing END_PROGRAM.
+    bool closesOuter = found->getType() == antlr4::Token::EOF;
+    for (antlr4::ParserRuleContext* c = parser->getContext(); c != nullptr && !closesOuter; c = dynamic_cast<antlr4::ParserRuleContext*>(c->parent))
+        closesOuter = closingKeyword(c) == found->getType();
+    if (!closesOuter) return false;
+    for (antlr4::ParserRuleContext* c = parser->getContext(); c != nullptr; c = dynamic_cast<antlr4::ParserRuleContext*>(c->parent)) {
+        const size_t closer = closingKeyword(c);
+        if (closer == 0) continue;
+        if (!expected.contains(closer) || closer == found->getType()) return false;
+        antlr4::Token* opener = c->getStart();
+        if (opener == nullptr) return false;
+        const std::string closerName = parser->getVocabulary().getSymbolicName(closer);
+        Diagnostic& d = reporter_->report(opener->getLine(), opener->getCharPositionInLine(),
+                                          fmt::format("'{}' has no matching '{}'", opener->getText(), closerName));
+        d.note(Loc{reporter_->fileIndex(), static_cast<int>(found->getLine()), static_cast<int>(found->getCharPositionInLine()) + 1},
+               fmt::format("'{}' expected before {}", closerName, describeFoundToken(found)));
+        if (closer == L::END_IF) {
+            // `ELSE IF` opens an IF of its own inside the ELSE branch.
+            antlr4::TokenStream* tokens = parser->getTokenStream();
+            antlr4::Token* before = nullptr;
+            for (size_t i = opener->getTokenIndex(); i < found->getTokenIndex(); ++i) {
+                antlr4::Token* t = tokens->get(i);
+                if (t->getChannel() != antlr4::Token::DEFAULT_CHANNEL) continue;
+                if (before && before->getType() == L::ELSE && t->getType() == L::IF) {
+                    d.withHelp("'ELSE IF' starts a new IF that needs its own END_IF; write 'ELSIF' instead");
+                    break;
+                }
+                before = t;
+            }
+        }
+        return true;
+    }
+    return false;
+}
+
+void FriendlyErrorStrategy::reportAt(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected) {
+    if (reporter_ != nullptr && (reportMissingSemicolon(parser, found, expected) || reportUnclosedBlock(parser, found, expected)))
+        return;
+    // `IF x := 1 THEN`: the C habit of assigning in a condition, or '=' mistyped.
+    if (reporter_ != nullptr && found != nullptr && found->getType() == L::ASSIGN &&
+        (expected.contains(static_cast<size_t>(L::THEN)) || expected.contains(static_cast<size_t>(L::DO)))) {
+        reporter_->report(found->getLine(), found->getCharPositionInLine(), "':=' in a condition: a condition compares, it does not assign")
+            .withCode("E0004")
+            .withHelp("compare with '=': IF x = 1 THEN");
+        // Recovery drops the statement, so its END_IF / END_WHILE comes unexpected: the same mistake.
+        orphanCloser_ = expected.contains(static_cast<size_t>(L::THEN)) ? L::END_IF : L::END_WHILE;
+        return;
+    }
+    if (found != nullptr && orphanCloser_ != 0 && found->getType() == orphanCloser_) {
+        orphanCloser_ = 0;
+        return;
+    }
+    parser->notifyErrorListeners(found, message(parser, found, expected), nullptr);
+}
+
 void FriendlyErrorStrategy::reportNoViableAlternative(antlr4::Parser* parser, const antlr4::NoViableAltException& e) {
-    parser->notifyErrorListeners(e.getOffendingToken(), message(parser, e.getOffendingToken(), e.getExpectedTokens()),
-                                 std::make_exception_ptr(e));
+    reportAt(parser, e.getOffendingToken(), e.getExpectedTokens());
 }
 
 void FriendlyErrorStrategy::reportInputMismatch(antlr4::Parser* parser, const antlr4::InputMismatchException& e) {
-    parser->notifyErrorListeners(e.getOffendingToken(), message(parser, e.getOffendingToken(), e.getExpectedTokens()),
-                                 std::make_exception_ptr(e));
+    reportAt(parser, e.getOffendingToken(), e.getExpectedTokens());
 }
 
 void FriendlyErrorStrategy::reportFailedPredicate(antlr4::Parser* parser, const antlr4::FailedPredicateException& e) {
@@ -143,15 +287,13 @@ void FriendlyErrorStrategy::reportFailedPredicate(antlr4::Parser* parser, const 
 void FriendlyErrorStrategy::reportUnwantedToken(antlr4::Parser* parser) {
     if (inErrorRecoveryMode(parser)) return;
     beginErrorCondition(parser);
-    antlr4::Token* found = parser->getCurrentToken();
-    parser->notifyErrorListeners(found, message(parser, found, getExpectedTokens(parser)), nullptr);
+    reportAt(parser, parser->getCurrentToken(), getExpectedTokens(parser));
 }
 
 void FriendlyErrorStrategy::reportMissingToken(antlr4::Parser* parser) {
     if (inErrorRecoveryMode(parser)) return;
     beginErrorCondition(parser);
-    antlr4::Token* found = parser->getCurrentToken();
-    parser->notifyErrorListeners(found, message(parser, found, getExpectedTokens(parser)), nullptr);
+    reportAt(parser, parser->getCurrentToken(), getExpectedTokens(parser));
 }
 
 antlr4::Token* FriendlyErrorStrategy::singleTokenDeletion(antlr4::Parser* parser) {
@@ -165,16 +307,18 @@ void SyntaxErrorReporter::syntaxError(antlr4::Recognizer*, antlr4::Token*, size_
     report(line, charPositionInLine, msg);
 }
 
-void SyntaxErrorReporter::report(size_t line, size_t charPositionInLine, const std::string& msg, bool always) {
-    if (!linesWithError_.insert(line).second && !always) return;
-    if (reported_ > kMaxErrorsPerFile) return;
+Diagnostic& SyntaxErrorReporter::report(size_t line, size_t charPositionInLine, const std::string& msg, bool always) {
+    scratch_ = Diagnostic{};
+    if (silenced_ && !always) return scratch_;
+    if (!linesWithError_.insert(line).second && !always) return scratch_;
+    if (reported_ > kMaxErrorsPerFile) return scratch_;
     if (reported_++ == kMaxErrorsPerFile) {
         log_.error(Loc{fileIndex_, static_cast<int>(line), static_cast<int>(charPositionInLine) + 1},
                    "syntax error: too many errors in this file, the rest are not reported");
-        return;
+        return scratch_;
     }
-    log_.error(Loc{fileIndex_, static_cast<int>(line), static_cast<int>(charPositionInLine) + 1},
-               "syntax error: " + msg);
+    return log_.error(Loc{fileIndex_, static_cast<int>(line), static_cast<int>(charPositionInLine) + 1},
+                      "syntax error: " + msg);
 }
 
 }  // namespace strun::ast

@@ -3,7 +3,9 @@
 // or, when many tokens would fit, "unexpected 'x', expected an expression".
 // Recovery is ANTLR's default (single-token insertion/deletion, resync); the
 // reporter keeps at most one message per source line so that one mistake does
-// not produce a cascade.
+// not produce a cascade. A missing ';' is reported after the token it should
+// follow, a missing END_IF (END_FOR, ...) at the IF it should close, with a
+// note where it was expected.
 #pragma once
 
 #include <set>
@@ -20,7 +22,12 @@ std::string describeTokenType(size_t type, const antlr4::dfa::Vocabulary& vocabu
 // The offending token as found in the text: 'END_IF', 'foo', end of file.
 std::string describeFoundToken(const antlr4::Token* token);
 
+class SyntaxErrorReporter;
+
 class FriendlyErrorStrategy : public antlr4::DefaultErrorStrategy {
+public:
+    explicit FriendlyErrorStrategy(SyntaxErrorReporter* reporter = nullptr) : reporter_(reporter) {}
+
 protected:
     void reportNoViableAlternative(antlr4::Parser* parser, const antlr4::NoViableAltException& e) override;
     void reportInputMismatch(antlr4::Parser* parser, const antlr4::InputMismatchException& e) override;
@@ -36,6 +43,13 @@ protected:
 private:
     // "unexpected X, expected Y" for `found` with the given expected set.
     std::string message(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected);
+    // Reports the error at `found`, or the better-placed error it stands for:
+    // a missing ';' after the previous token, a block whose END_ keyword is missing.
+    void reportAt(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected);
+    bool reportMissingSemicolon(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected);
+    bool reportUnclosedBlock(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected);
+    SyntaxErrorReporter* reporter_;
+    size_t orphanCloser_ = 0;  // the END_ keyword of a statement recovery dropped (not reported again)
 };
 
 // Forwards parser errors into the CompileLog as "syntax error: ...".
@@ -53,9 +67,17 @@ public:
     // builder): same format and the same one-per-line rule, unless `always`
     // (an unterminated comment or string must be reported even on a line
     // that already has an error: it explains everything after it).
-    void report(size_t line, size_t charPositionInLine, const std::string& msg, bool always = false);
+    // Returns the diagnostic for notes and help (a scratch one when the message is suppressed).
+    Diagnostic& report(size_t line, size_t charPositionInLine, const std::string& msg, bool always = false);
+    int fileIndex() const { return fileIndex_; }
+    // Counts `line` as having its error already (a cascade of one reported elsewhere).
+    void markLine(size_t line) { linesWithError_.insert(line); }
+    // From now on only `always` reports get through (the root cause is already reported).
+    void silence() { silenced_ = true; }
 
 private:
+    Diagnostic scratch_;
+    bool silenced_ = false;
     CompileLog& log_;
     int fileIndex_;
     std::set<size_t> linesWithError_;

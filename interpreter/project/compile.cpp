@@ -7,6 +7,7 @@
 #include "interpreter/ast/large_stack.h"
 #include "interpreter/ast/parse.h"
 #include "interpreter/project/library_selection.h"
+#include "interpreter/project/syntax_recovery.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/builtins/register_builtins.h"
 #include "interpreter/testing/register_tcunit.h"
@@ -63,7 +64,10 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
         }
     } giveBack{library, units, borrowed};
     for (int f : userFiles) units.push_back(ast::parseFile(sources, f, log));
-    if (log.hasErrors()) return nullptr;
+    // After local syntax errors the recovered tree is still checked, so that
+    // the later mistakes of the file are reported too (decision 0161).
+    const SyntaxDamage damage = assessSyntaxErrors(log);
+    if (log.hasErrors() && !damage.checkable) return nullptr;
     auto model = std::make_unique<sema::ProgramModel>();
     sema::Checker checker(*model, log);
     checker.setLibraryFiles(libraryFiles);
@@ -84,6 +88,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
         }
     });
     if (failure) std::rethrow_exception(failure);
+    if (!damage.lines.empty()) dropSyntaxCascades(log, damage);
     if (log.hasErrors()) return nullptr;
     testing::recordProject(*model, *model->tests);
     // The AST is referenced by nothing at run time: all names are resolved.

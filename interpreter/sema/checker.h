@@ -44,10 +44,12 @@ public:
     exec::NodePool& pool() { return model_.pool; }
     TypeTable& types() { return *model_.types; }
     CompileLog& log() { return log_; }
-    void error(const ast::Loc& loc, const std::string& message) { log_.error(loc, message); }
+    Diagnostic& error(const ast::Loc& loc, const std::string& message) { return log_.error(loc, message); }
     // A warning, unless `loc` is in strun's embedded library (its sources are never shown to users).
-    void warning(const ast::Loc& loc, const std::string& message) {
-        if (!libraryFiles_.count(loc.file)) log_.warning(loc, message);
+    Diagnostic& warning(const ast::Loc& loc, const std::string& message) {
+        if (!libraryFiles_.count(loc.file)) return log_.warning(loc, message);
+        discarded_ = Diagnostic{};
+        return discarded_;
     }
     // What CODESYS accepts and IEC 61131-3 does not (implicit narrowing, a constant
     // expression that wraps): a warning by default, an error with --strict
@@ -181,6 +183,7 @@ private:
     Checked makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc);
     Checked makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& loc);
     Checked makeLogic(ast::Op op, Checked a, Checked b, const ast::Loc& loc);
+    void warnConstantComparison(ast::Op op, const Checked& a, const Checked& b, const ast::Loc& loc);
     Checked foldIfConst(Checked r, std::initializer_list<const Checked*> operands);
     exec::Stmt* assignChecked(Checked target, Checked value, const ast::Loc& loc);
     void markWritten(const Checked& target, const ast::Loc& loc);
@@ -193,6 +196,22 @@ private:
         return false;
     }
     void warnUnused();
+    // ---- suggestions and cascades of name errors (checker_suggest.cpp)
+    std::string closestDeclared(const std::string& typed, const std::vector<std::string>& declared) const;
+    // Adds "did you mean 'X'?" to `d` when a declared name is close to `typed`.
+    void suggest(Diagnostic& d, const std::string& typed, const std::vector<std::string>& declared) const;
+    std::vector<std::string> visibleVariableNames() const;
+    std::vector<std::string> typeNames() const;
+    std::vector<std::string> globalNames() const;
+    std::vector<std::string> functionNames() const;
+    // Variables whose declaration failed (unknown type): their uses are not reported again.
+    void markUnresolved(const std::string& upperName);
+    bool isUnresolved(const std::string& upperName) const;
+    // "'X' is not a value of enumeration 'E'" with the values E has and the closest one.
+    void enumValueError(const ast::Loc& loc, const std::string& written, const Type* enumType);
+    // The instance name a suggestion declares for block type `typeName` (its first letter: t for TON).
+    static std::string instanceNameFor(const std::string& typeName);
+    std::set<std::pair<const PouInfo*, std::string>> unresolvedVars_;
     // ---- CODESYS FB_init (checker_fb_init.cpp)
     void buildFbInitCalls();
     void collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth);
@@ -231,6 +250,7 @@ private:
     bool assignedResult_ = false;
     std::vector<std::unique_ptr<ast::TypeDecl>> inlineEnumDecls_;
     std::set<int> libraryFiles_;
+    Diagnostic discarded_;  // what warning() hands back for the library's own lines (never printed)
     const rt::PlcProfile* profile_ = &rt::defaultProfile();
 
 public:

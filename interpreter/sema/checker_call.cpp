@@ -350,11 +350,15 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         }
         if (it != pous_.end()) {
             if (it->second->kind == ast::PouKind::Function) return callUserFunction(it->second, e, nullptr);
-            error(callee.loc, fmt::format("'{}' is a {} and cannot be called here", callee.name,
-                                          it->second->kind == ast::PouKind::Program ? "PROGRAM" : "type"));
+            Diagnostic& d = error(callee.loc, fmt::format("'{}' is a {} and cannot be called here", callee.name,
+                                                          it->second->kind == ast::PouKind::Program ? "PROGRAM" : "type"));
+            if (it->second->kind == ast::PouKind::FunctionBlock)
+                d.withHelp(fmt::format("a function block is called through an instance: declare one in VAR ({} : {};) and call it ({}(...);)",
+                                       instanceNameFor(callee.name), callee.name, instanceNameFor(callee.name)));
             return bad(e.loc);
         }
-        error(callee.loc, fmt::format("undeclared function '{}'", callee.name));
+        if (isUnresolved(key)) return bad(e.loc);
+        suggest(error(callee.loc, fmt::format("undeclared function '{}'", callee.name)), callee.name, functionNames());
         return bad(e.loc);
     }
     if (callee.kind == ast::ExprKind::Member) {

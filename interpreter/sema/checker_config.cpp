@@ -115,6 +115,10 @@ void Checker::buildConfiguration() {
                 if (constTime(p.value.get(), t)) {
                     s.interval = t;
                     hasInterval = t > 0;
+                    if (t <= 0)
+                        warning(p.value->loc, fmt::format("the INTERVAL of task '{}' is {}: not a period, the task runs freewheeling "
+                                                          "(again and again without pause)", s.name, t == 0 ? "zero" : "negative"))
+                            .withCode("W0015");
                 }
                 s.intervalGiven = true;
             } else if (key == "PRIORITY") {
@@ -310,7 +314,13 @@ void Checker::warnUnused() {
             for (auto& v : pou->ownedVars) {
                 if (v->used || v.get() == pou->result) continue;
                 if (v->section == ast::VarSection::Var || v->section == ast::VarSection::Temp) {
-                    if (pou->kind == ast::PouKind::Program) continue;  // program variables are visible in --dump
+                    // Program variables are visible in --dump, but a block instance nobody calls does nothing.
+                    if (pou->kind == ast::PouKind::Program) {
+                        if (v->type && v->type->kind == TK::FunctionBlock)
+                            log_.warning(v->loc, fmt::format("function block instance '{}' is never called or used", v->name))
+                                .withCode("W0014");
+                        continue;
+                    }
                     log_.warning(v->loc, fmt::format("variable '{}' is never used", v->name));
                 }
             }

@@ -159,7 +159,7 @@ const Type* Checker::resolveNamedType(const std::string& name, const ast::Loc& l
         error(loc, fmt::format("'{}' is a function, not a type", name));
         return nullptr;
     }
-    error(loc, fmt::format("unknown type '{}'", name));
+    suggest(error(loc, fmt::format("unknown type '{}'", name)), name, typeNames());
     return nullptr;
 }
 
@@ -573,7 +573,10 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
             const Type* t = nullptr;
             bool isExternal = block.section == ast::VarSection::External;
             if (decl.type) t = resolveTypeSpec(decl.type.get(), pou->name);
-            if (!t && !isExternal) continue;
+            if (!t && !isExternal) {
+                for (const std::string& name : decl.names) unresolvedVars_.insert({pou, upper(name)});
+                continue;
+            }
             if (t && block.section != ast::VarSection::InOut && rejectByValueCycle(t, decl.type ? decl.type->loc : decl.loc)) continue;
             for (size_t n = 0; n < decl.names.size(); ++n) {
                 const std::string& name = decl.names[n];
@@ -597,7 +600,8 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 if (isExternal) {
                     auto g = globals_.find(key);
                     if (g == globals_.end()) {
-                        error(loc, fmt::format("VAR_EXTERNAL '{}' names no global variable", name));
+                        suggest(error(loc, fmt::format("VAR_EXTERNAL '{}' names no global variable", name)), name, globalNames());
+                        unresolvedVars_.insert({pou, key});
                         continue;
                     }
                     if (t && !sameType(t, g->second->type))
@@ -686,7 +690,10 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
         return nullptr;
     }
     const Type* t = resolveTypeSpec(decl.type.get(), name);
-    if (!t) return nullptr;
+    if (!t) {
+        unresolvedVars_.insert({nullptr, upper(name)});
+        return nullptr;
+    }
     auto v = std::make_unique<VarSym>();
     v->name = name;
     v->loc = loc;

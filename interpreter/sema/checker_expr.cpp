@@ -190,7 +190,8 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
                         Checked c = constInt(en.value, t, e.loc);
                         return c;
                     }
-                return fail(fmt::format("'{}' is not a value of enumeration '{}'", v, t->name));
+                enumValueError(e.loc, v, t);
+                return bad(e.loc);
             }
             if (t->kind == TK::Bool) {
                 std::string uv = upper(v);
@@ -415,7 +416,9 @@ Checked Checker::checkName(const ast::Expr& e) {
         return bad(e.loc);
     }
     if (Checked later = laterConstant(key, e.loc); later.ok) return later;
-    error(e.loc, fmt::format("undeclared identifier '{}'", e.name));
+    // A variable declared with an unknown type: that error is the root cause.
+    if (isUnresolved(key)) return bad(e.loc);
+    suggest(error(e.loc, fmt::format("undeclared identifier '{}'", e.name)), e.name, visibleVariableNames());
     return bad(e.loc);
 }
 
@@ -524,7 +527,9 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
         if (found) return p;
     }
     if (!f) {
-        error(loc, fmt::format("'{}' has no member '{}'", typeName(t), member));
+        std::vector<std::string> members;
+        for (const Field& field : t->fields) members.push_back(field.name);
+        suggest(error(loc, fmt::format("'{}' has no member '{}'", typeName(t), member)), member, members);
         return bad(loc);
     }
     Checked c;
@@ -645,7 +650,7 @@ Checked Checker::checkMember(const ast::Expr& e) {
                 if (t && t->kind == TK::Enum) {
                     for (const auto& en : t->enumerators)
                         if (upper(en.name) == upper(e.name)) return constInt(en.value, t, e.loc);
-                    error(e.nameLoc.line ? e.nameLoc : e.loc, fmt::format("'{}' is not a value of enumeration '{}'", e.name, t->name));
+                    enumValueError(e.nameLoc.line ? e.nameLoc : e.loc, e.name, t);
                     return bad(e.loc);
                 }
             }
@@ -989,6 +994,10 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         e = settle(e);
         from = e.type;
     }
+    if (isStringType(from->kind) && from->kind == target->kind && e.isConst && from->maxLen > target->maxLen && target->maxLen > 0)
+        warning(e.loc.line ? e.loc : loc, fmt::format("the string has {} characters; {} keeps only the first {}", from->maxLen,
+                                                      typeName(target), target->maxLen))
+            .withCode("W0016");
     if (isCharType(target->kind) && isStringType(from->kind) && e.isConst) {
         // c : CHAR := 'A': a one-character string literal is that character.
         if (auto* bytes = dynamic_cast<exec::ConstBytes*>(e.node)) {

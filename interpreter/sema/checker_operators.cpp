@@ -169,6 +169,11 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
     r.loc = loc;
     r.hasCall = a.hasCall || b.hasCall;
     TK ka = a.type->kind, kb = b.type->kind;
+    if ((op == ast::Op::Div || op == ast::Op::Mod) && b.isConst && (b.untypedInt || isInteger(kb) || isBitString(kb)) &&
+        b.constInt == 0)
+        warning(b.loc.line ? b.loc : loc, fmt::format("division by the constant 0: at run time {} records DIV_BY_ZERO and divides by 1",
+                                                       op == ast::Op::Div ? "'/'" : "MOD"))
+            .withCode("W0012");
     bool aNum = a.untypedInt || a.untypedReal || isNumeric(ka);
     bool bNum = b.untypedInt || b.untypedReal || isNumeric(kb);
     // ---- durations and dates (IEC table of time operations)
@@ -366,6 +371,7 @@ Checked Checker::makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& l
     r.hasCall = a.hasCall || b.hasCall;
     r.type = types().elementary(TK::Bool);
     // c = 'y' with c : CHAR compares characters.
+    warnConstantComparison(op, a, b, loc);
     if (isCharType(a.type->kind) && isStringType(b.type->kind) && b.isConst) b = coerce(b, a.type, b.loc, "operand");
     else if (isCharType(b.type->kind) && isStringType(a.type->kind) && a.isConst) a = coerce(a, b.type, a.loc, "operand");
     if (!a.ok || !b.ok) return bad(loc);
@@ -454,6 +460,28 @@ Checked Checker::makeLogic(ast::Op op, Checked a, Checked b, const ast::Loc& loc
     }
     r.node->type = t;
     return foldIfConst(r, {&x, &y});
+}
+
+}  // namespace strun::sema
+
+namespace strun::sema {
+
+// `u < 0` and `u >= 0` on an unsigned integer: always FALSE / always TRUE.
+void Checker::warnConstantComparison(ast::Op op, const Checked& a, const Checked& b, const ast::Loc& loc) {
+    if (!a.ok || !b.ok || !a.type || !b.type) return;
+    auto zero = [](const Checked& c) { return c.isConst && (c.untypedInt || isInteger(c.type->kind)) && c.constInt == 0; };
+    bool alwaysTrue = false, alwaysFalse = false;
+    if (isUnsignedInt(a.type->kind) && !a.isConst && zero(b)) {
+        alwaysFalse = op == ast::Op::Lt;
+        alwaysTrue = op == ast::Op::Ge;
+    } else if (isUnsignedInt(b.type->kind) && !b.isConst && zero(a)) {
+        alwaysFalse = op == ast::Op::Gt;
+        alwaysTrue = op == ast::Op::Le;
+    }
+    if (!alwaysTrue && !alwaysFalse) return;
+    const Type* unsignedType = isUnsignedInt(a.type->kind) ? a.type : b.type;
+    warning(loc, fmt::format("this comparison is always {}: a {} is never negative", alwaysTrue ? "TRUE" : "FALSE", typeName(unsignedType)))
+        .withCode("W0013");
 }
 
 }  // namespace strun::sema

@@ -120,8 +120,21 @@ int Checker::labelId(const std::string& key) {
 
 exec::Block* Checker::checkBlock(const ast::StmtList& list) {
     auto* block = pool().make<exec::Block>();
+    const ast::Stmt* leaving = nullptr;  // the RETURN / EXIT / CONTINUE / JMP the list already left by
     for (const auto& s : list) {
         if (!s) continue;
+        if (leaving && s->kind != ast::StmtKind::Label && s->kind != ast::StmtKind::Empty) {
+            const char* how = leaving->kind == ast::StmtKind::Return ? "RETURN" : leaving->kind == ast::StmtKind::Exit ? "EXIT"
+                              : leaving->kind == ast::StmtKind::Continue ? "CONTINUE" : "JMP";
+            warning(s->loc, fmt::format("unreachable code: it follows {}", how))
+                .withCode("W0011")
+                .note(leaving->loc, fmt::format("the statements after this {} never run", how));
+            leaving = nullptr;  // one warning per unreachable stretch
+        }
+        if (s->kind == ast::StmtKind::Return || s->kind == ast::StmtKind::Exit || s->kind == ast::StmtKind::Continue ||
+            s->kind == ast::StmtKind::Jmp)
+            leaving = s.get();
+        if (s->kind == ast::StmtKind::Label) leaving = nullptr;
         if (s->kind == ast::StmtKind::Label) {
             std::string key = upper(s->name);
             if (definedLabels_.count(key)) error(s->loc, fmt::format("duplicate label '{}'", s->name));

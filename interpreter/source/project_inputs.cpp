@@ -40,7 +40,7 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
         converted = readTwinCat(text);
     } else if (ext == ".xml") {
         if (!isPlcOpenProject(text)) {
-            int raw = sources.add(path, "");
+            int raw = sources.add(path, "", {}, text);
             log.error(ast::Loc{raw, 1, 1}, "not a PLCopen TC6 XML project (the root must be <project> in namespace http://www.plcopen.org/xml/tc6_0201)");
             return;
         }
@@ -51,10 +51,11 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
     }
     if (!converted.errors.empty()) {
         // Positions of these messages are in the XML itself: a view of the file without conversion.
-        int raw = sources.add(path, "");
+        int raw = sources.add(path, "", {}, text);
         for (const auto& e : converted.errors) log.error(ast::Loc{raw, e.line, e.col}, e.message);
     }
-    userFiles.push_back(sources.add(path, std::move(converted.text), std::move(converted.origins)));
+    // The XML stays beside the ST made from it: diagnostics quote the file the user has.
+    userFiles.push_back(sources.add(path, std::move(converted.text), std::move(converted.origins), std::move(text)));
 }
 
 }  // namespace

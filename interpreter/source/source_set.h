@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "interpreter/ast/ast.h"
+#include "interpreter/source/diagnostic.h"
+#include "interpreter/source/diagnostic_codes.h"
 
 namespace strun {
 
@@ -26,6 +28,10 @@ struct SourceFile {
     std::string path;  // as given on the command line
     std::string text;  // ST text (for XML inputs: the ST assembled from them)
     std::vector<LineOrigin> origins;  // empty for ST files; else one per line of `text`
+    std::string userText;  // for XML inputs: the XML itself, which diagnostics quote
+
+    // The text the user has, which diagnostics quote: the XML for converted sources.
+    const std::string& shownText() const { return userText.empty() ? text : userText; }
 
     // The position in the file the user has (the XML line and column) of a position in `text`.
     std::pair<int, int> original(int line, int col) const {
@@ -37,8 +43,8 @@ struct SourceFile {
 
 class SourceSet {
 public:
-    int add(std::string path, std::string text, std::vector<LineOrigin> origins = {}) {
-        files_.push_back({std::move(path), std::move(text), std::move(origins)});
+    int add(std::string path, std::string text, std::vector<LineOrigin> origins = {}, std::string userText = {}) {
+        files_.push_back({std::move(path), std::move(text), std::move(origins), std::move(userText)});
         return static_cast<int>(files_.size()) - 1;
     }
     const SourceFile& file(int index) const { return files_.at(static_cast<size_t>(index)); }
@@ -48,24 +54,27 @@ private:
     std::vector<SourceFile> files_;
 };
 
-enum class Severity { Error, Warning };
-
-struct CompileMessage {
-    Severity severity = Severity::Error;
-    ast::Loc loc;
-    std::string message;
-};
-
 class CompileLog {
 public:
     // A cap so that a pathological file cannot flood stderr or memory.
     static constexpr size_t kMaxMessages = 500;
 
-    void error(const ast::Loc& loc, std::string message) { add(Severity::Error, loc, std::move(message)); }
-    void warning(const ast::Loc& loc, std::string message) { add(Severity::Warning, loc, std::move(message)); }
+    // The returned diagnostic takes notes and help lines (and a code, when the
+    // catalogue's classification of the message is not the right one).
+    Diagnostic& error(const ast::Loc& loc, std::string message) { return add(Severity::Error, loc, std::move(message)); }
+    Diagnostic& warning(const ast::Loc& loc, std::string message) { return add(Severity::Warning, loc, std::move(message)); }
     bool hasErrors() const { return errors_ > 0; }
     size_t errorCount() const { return errors_; }
-    const std::vector<CompileMessage>& messages() const { return messages_; }
+    const std::vector<Diagnostic>& messages() const { return messages_; }
+    // Removes the diagnostics `drop` selects (cascades of an earlier error).
+    template <class Pred>
+    void eraseIf(Pred drop) {
+        std::erase_if(messages_, drop);
+        errors_ = dropped_ > 0 ? errors_ : static_cast<size_t>(std::count_if(messages_.begin(), messages_.end(), [](const Diagnostic& d) {
+            return d.severity == Severity::Error;
+        }));
+    }
+    size_t droppedCount() const { return dropped_; }
 
     // FILE:LINE:COL: error: MESSAGE, one per line, in the order reported.
     void print(std::ostream& out, const SourceSet& sources) const {
@@ -80,12 +89,23 @@ public:
     }
 
 private:
-    void add(Severity s, const ast::Loc& loc, std::string message) {
+    Diagnostic& add(Severity s, const ast::Loc& loc, std::string message) {
         if (s == Severity::Error) ++errors_;
-        if (messages_.size() >= kMaxMessages) { ++dropped_; return; }
-        messages_.push_back({s, loc, std::move(message)});
+        if (messages_.size() >= kMaxMessages) {
+            ++dropped_;
+            overflow_ = Diagnostic{};
+            return overflow_;
+        }
+        Diagnostic d;
+        d.severity = s;
+        d.loc = loc;
+        d.code = diagnostics::classify(s, message);
+        d.message = std::move(message);
+        messages_.push_back(std::move(d));
+        return messages_.back();
     }
-    std::vector<CompileMessage> messages_;
+    std::vector<Diagnostic> messages_;
+    Diagnostic overflow_;  // what a reporter past the cap decorates, never printed
     size_t errors_ = 0;
     size_t dropped_ = 0;
 };

@@ -8,14 +8,20 @@ using namespace strun::ast;
 using strun::ast::test::parse;
 
 TEST_CASE("syntax errors: what was found and what was expected", "[errors]") {
+    // A missing ';' is reported right after the token it should follow (issue 13).
     CHECK(parse("PROGRAM P\nIF a THEN\n  x := 1\nEND_IF\nEND_PROGRAM")->errors() ==
-          "4:1: syntax error: unexpected 'END_IF', expected ';'\n");
+          "3:9: syntax error: expected ';' after 'x := 1'\n");
     CHECK(parse("PROGRAM P\nx := ;\nEND_PROGRAM")->errors() ==
           "2:6: syntax error: unexpected ';', expected an expression\n");
     CHECK(parse("PROGRAM P\nWHILE x DO\n  x := 1;\nEND_FOR\nEND_PROGRAM")->errors() ==
           "4:1: syntax error: unexpected 'END_FOR', expected 'END_WHILE'\n");
-    CHECK(parse("PROGRAM P\nx := 1;\n")->errors() ==
-          "3:1: syntax error: unexpected end of file, expected 'END_PROGRAM', 'METHOD', 'ACTION' or 'PROPERTY'\n");
+    // A missing END_ is reported at what it should close, with a note where it was expected (issue 13).
+    auto unclosed = parse("PROGRAM P\nx := 1;\n");
+    CHECK(unclosed->errors() == "1:1: syntax error: 'PROGRAM' has no matching 'END_PROGRAM'\n");
+    REQUIRE(unclosed->log.messages().size() == 1);
+    REQUIRE(unclosed->log.messages()[0].notes.size() == 1);
+    CHECK(unclosed->log.messages()[0].notes[0].text == "'END_PROGRAM' expected before end of file");
+    CHECK(unclosed->log.messages()[0].notes[0].loc->line == 3);
     CHECK(parse("TYPE X : ; END_TYPE")->errors() == "1:10: syntax error: unexpected ';', expected a type\n");
     CHECK(parse("VAR_GLOBAL a INT; END_VAR")->errors() ==
           "1:14: syntax error: unexpected 'INT', expected 'AT', ',' or ':'\n");
@@ -76,8 +82,7 @@ TEST_CASE("syntax errors: at most one per line, and a cap per file", "[errors]")
 
 TEST_CASE("syntax errors: lexical errors at their opening location", "[errors]") {
     CHECK(parse("PROGRAM P\nx := 1;\n  (* open (* nested *) never closed\nEND_PROGRAM\n")->errors() ==
-          "3:3: syntax error: unterminated comment: '(*' has no matching '*)'\n"
-          "5:1: syntax error: unexpected end of file, expected 'END_PROGRAM', 'METHOD', 'ACTION' or 'PROPERTY'\n");
+          "3:3: syntax error: unterminated comment: '(*' has no matching '*)'\n");  // and nothing it swallowed (issue 13)
     CHECK(parse("PROGRAM P\n/* open\nEND_PROGRAM\n")->errors().rfind(
               "2:1: syntax error: unterminated comment: '/*' has no matching '*/'\n", 0) == 0);
     CHECK(parse("{attribute 'x'\nPROGRAM P END_PROGRAM")->errors().rfind(

@@ -1,22 +1,23 @@
-#include "cli/suggest.h"
+#include "interpreter/source/closest_name.h"
 
 #include <algorithm>
 
-namespace strun::cli {
+namespace strun {
 
 namespace {
 
+// Edit distance with adjacent transpositions ("Rnu" is one step from "Run").
 size_t editDistance(std::string_view a, std::string_view b) {
-    std::vector<size_t> row(b.size() + 1);
+    std::vector<size_t> before(b.size() + 1), row(b.size() + 1), next(b.size() + 1);
     for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
     for (size_t i = 1; i <= a.size(); ++i) {
-        size_t diagonal = row[0];
-        row[0] = i;
+        next[0] = i;
         for (size_t j = 1; j <= b.size(); ++j) {
-            size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diagonal = above;
+            next[j] = std::min({row[j] + 1, next[j - 1] + 1, row[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) next[j] = std::min(next[j], before[j - 2] + 1);
         }
+        std::swap(before, row);
+        std::swap(row, next);
     }
     return row[b.size()];
 }
@@ -38,4 +39,4 @@ std::string closestName(std::string_view typed, const std::vector<std::string>& 
     return best;
 }
 
-}  // namespace strun::cli
+}  // namespace strun

@@ -1,0 +1,68 @@
+// The diagnostic catalogue: unique codes, lookup, classification of messages
+// into codes, the pages; and the one edit distance behind every did-you-mean.
+#include <set>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "interpreter/source/closest_name.h"
+#include "interpreter/source/diagnostic_codes.h"
+#include "interpreter/source/source_set.h"
+
+using namespace strun;
+using namespace strun::diagnostics;
+
+TEST_CASE("diagnostic catalogue: every code once, with a title and an explanation", "[diagnostics]") {
+    std::set<std::string> seen;
+    for (const CodeInfo& info : catalogue()) {
+        CHECK(seen.insert(std::string(info.code)).second);
+        CHECK(!info.title.empty());
+        CHECK(!info.explanation.empty());
+        const std::string page = textPage(info);
+        CHECK(page.rfind(std::string(info.code) + ": ", 0) == 0);
+        CHECK(markdownPage(info).find("# " + std::string(info.code)) == 0);
+    }
+    CHECK(find("e0101") == find("E0101"));
+    REQUIRE(find("DIV_BY_ZERO") != nullptr);
+    CHECK(find("DIV_BY_ZERO")->kind == Kind::Runtime);
+    CHECK(find("E9999") == nullptr);
+}
+
+TEST_CASE("diagnostic catalogue: messages get the code of their kind of mistake", "[diagnostics]") {
+    CHECK(classify(Severity::Error, "undeclared identifier 'x'") == "E0101");
+    CHECK(classify(Severity::Error, "unknown type 'TIM'") == "E0102");
+    CHECK(classify(Severity::Error, "syntax error: expected ';' after 'x := 1'") == "E0002");
+    CHECK(classify(Severity::Error, "syntax error: unexpected 'b', expected ';'") == "E0002");
+    CHECK(classify(Severity::Error, "syntax error: 'IF' has no matching 'END_IF'") == "E0003");
+    CHECK(classify(Severity::Error, "syntax error: ST has no '++' operator") == "E0004");
+    CHECK(classify(Severity::Error, "syntax error: unexpected ')', expected an expression") == "E0001");
+    CHECK(classify(Severity::Error, "assignment: cannot convert STRING to INT implicitly") == "E0201");
+    CHECK(classify(Severity::Error, "'Q' is an output of 'TON'; connect it with '=>'") == "E0303");
+    CHECK(classify(Severity::Error, "EXIT outside a loop") == "E0501");
+    // A --strict error keeps the code of the warning it replaces.
+    CHECK(classify(Severity::Error, "implicit conversion from REAL to INT: possible loss of data; use REAL_TO_INT") == "W0001");
+    CHECK(classify(Severity::Warning, "variable 'x' is never used") == "W0003");
+    CHECK(classify(Severity::Error, "something nobody words like this") == "E0999");
+    CHECK(classify(Severity::Warning, "something nobody words like this") == "W0999");
+}
+
+TEST_CASE("diagnostics: the log codes every message and keeps notes and help", "[diagnostics]") {
+    CompileLog log;
+    log.error(ast::Loc{0, 3, 1}, "undeclared identifier 'bButon'").withHelp("did you mean 'bButton'?").note("a note");
+    log.warning(ast::Loc{0, 2, 1}, "variable 'x' is never used");
+    REQUIRE(log.messages().size() == 2);
+    CHECK(log.messages()[0].code == "E0101");
+    CHECK(log.messages()[0].help.size() == 1);
+    CHECK(log.messages()[0].notes.size() == 1);
+    CHECK(log.messages()[1].code == "W0003");
+    log.eraseIf([](const Diagnostic& d) { return d.severity == Severity::Error; });
+    CHECK(!log.hasErrors());
+    CHECK(log.messages().size() == 1);
+}
+
+TEST_CASE("closest name: typos, transpositions and prefixes; nothing far off", "[diagnostics]") {
+    CHECK(closestName("BBUTON", {"BBUTTON", "BLAMP"}) == "BBUTTON");
+    CHECK(closestName("RNU", {"IDLE", "RUN", "STOP"}) == "RUN");  // one transposition
+    CHECK(closestName("--virt", {"--virtual", "--cycles"}) == "--virtual");
+    CHECK(closestName("SPEED", {"TEMPERATURE", "PRESSURE"}).empty());
+}
