@@ -144,6 +144,7 @@ private:
 
     // ---- configuration (checker_config.cpp)
     void buildConfiguration();
+    void addTestProgram(const std::string& name);
     void buildDefaultConfiguration();
     void instantiateProgram(const std::string& name, PouInfo* pou, const ast::Loc& loc);
 

@@ -243,9 +243,37 @@ void Checker::buildConfiguration() {
         currentPouName_ = nullptr;
         task->calls.push_back({&inst, inst.pou->code, inst.memory, inst.name});
     }
+    if (!options_.testProgram.empty()) addTestProgram(options_.testProgram);
     for (const auto& t : model_.tasks)
         if (std::string problem = rt::programCountProblem(profile(), t.spec, int(t.calls.size())); !problem.empty())
             error(t.spec.loc, problem);
+}
+
+// The test runner's PROGRAM in a project with a CONFIGURATION (decision 0141):
+// one instance, called last by the first cyclic or freewheeling task declared,
+// or else by the target's task for programs without one.
+void Checker::addTestProgram(const std::string& name) {
+    auto it = pous_.find(upper(name));
+    if (it == pous_.end() || it->second->kind != ast::PouKind::Program) return;
+    ConfiguredTask* host = nullptr;
+    for (auto& t : model_.tasks)
+        if (t.spec.kind == rt::TaskKind::Cyclic || t.spec.kind == rt::TaskKind::Freewheeling) {
+            host = &t;
+            break;
+        }
+    if (!host) {
+        ConfiguredTask dt;
+        dt.spec.name = std::string(profile().unassignedTaskName);
+        dt.spec.loc = it->second->ast->loc;
+        dt.spec.kind = rt::TaskKind::Freewheeling;
+        dt.spec.priority = profile().unassignedTaskPriority;
+        dt.spec.isScanProgram = true;
+        model_.tasks.push_back(std::move(dt));
+        host = &model_.tasks.back();
+    }
+    instantiateProgram(name, it->second, it->second->ast->loc);
+    ProgramInstance& inst = model_.programs.back();
+    host->calls.push_back({&inst, inst.pou->code, inst.memory, inst.name});
 }
 
 // EXTERNAL := FI0 (a target's input alias) or %IX0.0 (a bit of the physical inputs).

@@ -39,7 +39,9 @@ std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const st
     log = before;
     std::vector<int> files = userFiles;
     files.push_back(sources.add("<strun test program>", syntheticTestProgram(model->tests->suiteBlocks)));
-    model = project::compileProject(sources, files, log, options);
+    sema::CompileOptions withProgram = options;
+    withProgram.testProgram = kSyntheticProgramName;
+    model = project::compileProject(sources, files, log, withProgram);
     if (model) collectSuites(*model, *model->tests);
     return model;
 }
