@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <iostream>
 
 #include <fmt/format.h>
 
@@ -88,7 +89,13 @@ bool TestRegistry::beginTest(std::string_view rawName, bool ordered, rt::PlcTime
         s.tests.push_back(std::move(t));
         index = static_cast<int>(s.tests.size()) - 1;
     } else if (s.tests[static_cast<size_t>(index)].lastCycle == s.cycles && s.cycles != 0) {
-        // The same name twice in one cycle: TcUnit ignores the second one.
+        // The same name twice in one cycle: TcUnit ignores the second one and
+        // logs an error, once (its text, with the suite's instance path).
+        TestCase& dup = s.tests[static_cast<size_t>(index)];
+        if (!dup.duplicateReported) {
+            dup.duplicateReported = true;
+            std::cerr << "Test with name '" << dup.name << "' already exists in test suite '" << s.path << "'\n";
+        }
         return false;
     }
     TestCase& t = s.tests[static_cast<size_t>(index)];
@@ -96,6 +103,16 @@ bool TestRegistry::beginTest(std::string_view rawName, bool ordered, rt::PlcTime
     currentTest = index;
     if (hint) *hint = index;
     if (t.skipped || t.finished) return false;
+    if (testTimeout > 0 && now - t.startedAt > testTimeout) {
+        // TIMEOUT_FOR_EACH_TEST: TcUnit stops the PLC; strun fails this test
+        // and lets the others go on (decision 0142).
+        Failure f;
+        f.fault = fmt::format("timeout: not finished {} after it started (TIMEOUT_FOR_EACH_TEST)", stdlib::formatDuration(testTimeout));
+        t.failures.push_back(std::move(f));
+        t.finished = true;
+        t.finishedAt = now;
+        return false;
+    }
     if (t.order > 0) {
         // TEST_ORDERED: its turn once every ordered test before it finished.
         for (const auto& other : s.tests)
@@ -136,6 +153,20 @@ bool TestRegistry::isFinished(std::string_view name) const {
     for (const auto& t : suites[static_cast<size_t>(currentSuite)].tests)
         if (t.name == name) return t.finished;
     return false;
+}
+
+void TestRegistry::awaitAssertions(rt::PlcTime awaitTime, rt::PlcTime now) {
+    if (!assertionsActive()) return;
+    TestCase& t = suites[static_cast<size_t>(currentSuite)].tests[static_cast<size_t>(currentTest)];
+    if (t.awaitStart < 0) t.awaitStart = now;
+    // Held: the rest of this cycle's assertions and TEST_FINISHED count for nothing.
+    if (now - t.awaitStart < awaitTime) ignoreCurrent = true;
+}
+
+const Suite* TestRegistry::suiteAt(const uint8_t* instance) const {
+    for (const auto& s : suites)
+        if (s.instance == instance) return &s;
+    return nullptr;
 }
 
 void TestRegistry::recordFailure(Failure f) {
