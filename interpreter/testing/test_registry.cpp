@@ -137,12 +137,20 @@ bool TestRegistry::finishNamed(std::string_view name, rt::PlcTime now) {
     if (currentSuite < 0) return false;
     name = trim(name);
     for (auto& t : suites[static_cast<size_t>(currentSuite)].tests) {
-        if (t.name != name || t.skipped) continue;
-        if (!t.finished) {
+        if (t.name != name) continue;
+        if (!t.finished && !t.skipped) {
             t.finished = true;
             t.finishedAt = now;
         }
         return true;
+    }
+    // TcUnit's messages (three, then one that suppresses the rest) and its abort.
+    if (failedLookups < 3) std::cerr << "Failed to find test '" << name << "'\n";
+    else if (failedLookups == 3) std::cerr << "Excess failed attempts to mark test finished, failed. Further warnings will be suppressed\n";
+    ++failedLookups;
+    if (!aborted) {
+        aborted = true;
+        abortReason = fmt::format("aborted: TEST_FINISHED_NAMED could not find test '{}'", name);
     }
     return false;
 }

@@ -121,6 +121,12 @@ public:
     void runSuites(exec::Ctx& c, bool inSequence);
 
     bool allFinished() const;
+    // TEST_FINISHED_NAMED with a name the suite does not have: TcUnit logs
+    // "Failed to find test 'X'" (three times at most, then one last warning)
+    // and aborts the run; the tests still running then fail with `abortReason`.
+    bool aborted = false;
+    std::string abortReason;
+    int failedLookups = 0;
     // After the run: unfinished tests fail with `why` ("timeout").
     void failUnfinished(const std::string& why);
 

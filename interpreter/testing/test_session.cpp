@@ -15,7 +15,7 @@ public:
     StopWhenFinished(rt::TaskBody& inner, const TestRegistry& reg) : inner_(inner), reg_(reg) {}
     bool runActivation() override {
         bool completed = inner_.runActivation();
-        if (reg_.allFinished()) rt::Scheduler::requestStop();
+        if (reg_.allFinished() || reg_.aborted) rt::Scheduler::requestStop();
         return completed;
     }
     bool currentPosition(std::string& pou, int& line) const override { return inner_.currentPosition(pou, line); }
@@ -81,7 +81,7 @@ TestRunResult runTests(sema::ProgramModel& model, rt::RunOptions options, const 
             }
         reg.failUnfinished(why);
     } else {
-        reg.failUnfinished("timeout");
+        reg.failUnfinished(reg.aborted ? reg.abortReason : "timeout");
     }
     return result;
 }
