@@ -331,6 +331,16 @@ void Checker::run(std::vector<ast::CompilationUnit>& units) {
     warnUnused();
 }
 
+// A TcUnit suite instance (a block extending FB_TestSuite, or an array of
+// them) is used by RUN(), which names no variable.
+static bool isTestSuiteInstance(const Type* t) {
+    while (t && t->kind == TK::Array) t = t->elem;
+    if (!t || t->kind != TK::FunctionBlock || !t->pou) return false;
+    for (const PouInfo* p = t->pou->parent; p; p = p->parent)
+        if (upper(p->name) == "FB_TESTSUITE") return true;
+    return false;
+}
+
 void Checker::warnUnused() {
     for (PouInfo* p : pouOrder_) {
         if (libraryFiles_.count(p->ast->loc.file)) continue;
@@ -339,6 +349,7 @@ void Checker::warnUnused() {
                 if (v->used || v.get() == pou->result) continue;
                 if (v->section == ast::VarSection::Var || v->section == ast::VarSection::Temp) {
                     if (pou->kind == ast::PouKind::Program) continue;  // program variables are visible in --dump
+                    if (isTestSuiteInstance(v->type)) continue;           // RUN() of strun test calls it
                     log_.warning(v->loc, fmt::format("variable '{}' is never used", v->name));
                 }
             }
