@@ -53,7 +53,15 @@ TestRunResult runTests(sema::ProgramModel& model, rt::RunOptions options, const 
     for (const auto& t : model.tasks) specs.push_back(t.spec);
     // The watchdog applies to each suite call (a test that loops fails alone);
     // the task itself runs without one, bounded by the timeout.
+    // That is the watchdog of the task calling the program that holds the first suite.
     reg.watchdog = specs.empty() ? 0 : specs.front().watchdog;
+    if (!reg.suites.empty()) {
+        const std::string& path = reg.suites.front().path;
+        const std::string program = path.substr(0, path.find_first_of(".["));
+        for (const auto& t : model.tasks)
+            for (const auto& call : t.calls)
+                if (call.program && call.name == program) reg.watchdog = t.spec.watchdog;
+    }
     for (auto& s : specs) s.watchdog = 0;
     options.virtualClock = true;
     options.cycles.reset();
