@@ -126,6 +126,9 @@ void Checker::buildConfiguration() {
                 s.watchdogGiven = true;
             } else if (key == "EXTERNAL") {
                 if (externalInput(*p.value, s)) s.kind = rt::TaskKind::External;
+            } else if (key == "INPUT_DELAY") {
+                constTime(p.value.get(), s.inputDelay);
+                s.inputDelayGiven = true;
             } else if (key == "EDGE") {
                 std::string v = p.value->kind == ast::ExprKind::Name ? upper(p.value->name) : "";
                 if (v == "RISING") s.edges = rt::kEdgeRising;

@@ -717,7 +717,9 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     if (block.constant && decl.init) foldConstant(*v, decl);
     VarSym* raw = v.get();
     globals_[key] = raw;
-    model_.globals.push_back(raw);
+    // The library's own lists (GVL_Param_TcUnit) are not the project's state:
+    // they stay out of --dump, --vcd and the names --set can write.
+    if (!libraryFiles_.count(loc.file)) model_.globals.push_back(raw);
     model_.globalStore.push_back(std::move(v));
     return raw;
 }
