@@ -231,11 +231,23 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
     for (bool inSequence : {false, true}) {
         ck.addBuiltin(inSequence ? "RUN_IN_SEQUENCE" : "RUN", [&reg, inSequence](Checker& ck, CallArgs& call) -> Checked {
             std::vector<Checked> a;
-            if (!bindArgs(ck, call, {}, a)) return ck.bad(call.loc);
+            // RUN_IN_SEQUENCE(TimeBetweenTestSuitesExecution) in TcUnit 1.1 and CfUnit.
+            bool ok = inSequence ? bindArgs(ck, call, {{"TimeBetweenTestSuitesExecution", false}}, a) : bindArgs(ck, call, {}, a);
+            if (!ok) return ck.bad(call.loc);
             ++reg.runCalls;
             auto* n = ck.pool().make<RunSuitesNode>();
             n->reg = &reg;
             n->inSequence = inSequence;
+            if (inSequence && a[0].ok) {
+                Checked d = ck.settle(a[0]);
+                if (!d.ok) return ck.bad(call.loc);
+                if (!d.type || (d.type->kind != TK::Time && d.type->kind != TK::LTime)) {
+                    ck.error(d.loc, fmt::format("{}: expected a TIME, not {}", written(call), sema::typeName(d.type)));
+                    return ck.bad(call.loc);
+                }
+                n->pause = d.node;
+                n->scale = d.type->kind == TK::Time ? 1000000 : 1;
+            }
             return result(ck, n, TK::Void, call);
         });
     }

@@ -62,8 +62,10 @@ struct IsTestFinishedNode final : Expr {
 struct RunSuitesNode final : Expr {
     TestRegistry* reg = nullptr;
     bool inSequence = false;
+    Expr* pause = nullptr;  // RUN_IN_SEQUENCE(TimeBetweenTestSuitesExecution); null: none
+    int64_t scale = 1;      // to nanoseconds
     int64_t i(Ctx& c) override {
-        reg->runSuites(c, inSequence);
+        reg->runSuites(c, inSequence, pause ? pause->i(c) * scale : 0);
         return 0;
     }
 };

@@ -188,13 +188,14 @@ void TestRegistry::recordFailure(Failure f) {
     t.failures.push_back(std::move(f));
 }
 
-void TestRegistry::runSuites(exec::Ctx& c, bool inSequence) {
+void TestRegistry::runSuites(exec::Ctx& c, bool inSequence, rt::PlcTime pause) {
     exec::Site site{&kRunPou, 0};
     capture.machine = c.m;
     capture.ctx = &c;
     for (size_t k = 0; k < suites.size(); ++k) {
         Suite& s = suites[k];
         if (s.finished()) continue;
+        if (inSequence && s.cycles == 0 && c.m->now < nextSuiteAt) break;  // the pause between two suites
         currentSuite = static_cast<int>(k);
         currentTest = -1;
         ignoreCurrent = true;
@@ -219,6 +220,10 @@ void TestRegistry::runSuites(exec::Ctx& c, bool inSequence) {
             c.aborting = false;                  // a test's fault: the other suites go on
         }
         if (inSequence && !s.finished()) break;
+        if (inSequence) {
+            nextSuiteAt = c.m->now + pause;
+            if (pause > 0) break;
+        }
     }
 }
 

@@ -118,7 +118,10 @@ public:
     bool assertionsActive() const { return currentSuite >= 0 && currentTest >= 0 && !ignoreCurrent; }
     void recordFailure(Failure f);  // into the current test (duplicates of an earlier one are dropped)
     // RUN(): calls the suites (all, or in sequence) on the task's context.
-    void runSuites(exec::Ctx& c, bool inSequence);
+    // RUN_IN_SEQUENCE waits `pause` of PLC time between one suite finishing
+    // and the next one starting (TcUnit's TimeBetweenTestSuitesExecution).
+    void runSuites(exec::Ctx& c, bool inSequence, rt::PlcTime pause = 0);
+    rt::PlcTime nextSuiteAt = 0;  // RUN_IN_SEQUENCE: the next suite starts no sooner
 
     bool allFinished() const;
     // TEST_FINISHED_NAMED with a name the suite does not have: TcUnit logs
