@@ -89,7 +89,7 @@ int testCommand(const CommandLine& line, const TestCommandLine& test) {
     if (!stimulus.empty()) run.stimulus = &stimulus;
     if (reg.suites.empty())
         std::cerr << "strun: warning: no test suite runs: declare instances of FUNCTION_BLOCKs that EXTEND FB_TestSuite "
-                     "in a PROGRAM that calls RUN() (or have no RUN() and no CONFIGURATION)\n";
+                     "in a PROGRAM that calls RUN(), or leave RUN() out and strun adds one\n";
     testing::TestRunResult result = testing::runTests(*model, run, test.filter);
     testing::TestCounts counts = testing::printResults(reg, sources, std::cout);
     std::cout.flush();

@@ -114,7 +114,7 @@ typeSpec
     | LPAREN enumValue (COMMA enumValue)* RPAREN qualifiedName?              # enumType
     | qualifiedName LPAREN expression DOTDOT expression RPAREN               # subrangeType
     | qualifiedName LPAREN enumValue (COMMA enumValue)* RPAREN               # typedEnumType
-    | qualifiedName LPAREN argList RPAREN                                    # instanceArgsType   // CODESYS `fb : FB(1, x)`: FB_init arguments
+    | qualifiedName LPAREN argList? RPAREN                                   # instanceArgsType   // CODESYS `fb : FB(1, x)`, `t : R_TRIG()`: FB_init arguments
     | qualifiedName                                                          # namedType
     ;
 

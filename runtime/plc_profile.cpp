@@ -114,8 +114,12 @@ constexpr PlcProfile makeM340() {
 // Seed 003: CODESYS-based; cyclic (>= 4 ms, a multiple of 4 ms; a too short
 // period restarts the task right after its outputs), freewheeling (a short
 // system-processing gap between scans), event (rising edge) and external
-// event tasks on the fast inputs FI0/FI1 (1.5 ms minimum between triggers).
-constexpr InputAlias kM241Inputs[] = {{"FI0", 0, 0}, {"FI1", 0, 1}};
+// event tasks on the fast inputs FI0/FI1 and the HSC thresholds (1.5 ms
+// minimum between triggers, 15 ms for a task that switches the fast outputs
+// FQ0/FQ1). HSC0_THn is the bit "HSC0's value >= threshold n", driven by the
+// stimulus: it rises when the counter passes the threshold counting up and
+// falls when it passes it counting down (decision 0119).
+constexpr InputAlias kM241Inputs[] = {{"FI0", 0, 0}, {"FI1", 0, 1}, {"HSC0_TH0", 10, 0}, {"HSC0_TH1", 10, 1}};
 
 constexpr PlcProfile makeM241() {
     PlcProfile p = makeGeneric();
@@ -131,6 +135,8 @@ constexpr PlcProfile makeM241() {
     p.overrun = OverrunPolicy::RestartAtEnd;
     p.freewheelingGap = 1 * kMillisecond;
     p.externalMinSpacing = 1500 * kMicrosecond;
+    p.fastOutputMask = 0x03;  // FQ0 %QX0.0, FQ1 %QX0.1
+    p.externalMinSpacingFastOutputs = 15 * kMillisecond;
     p.inputAliases = kM241Inputs;
     p.taskCycleFunctions = true;
     return p;
@@ -162,6 +168,7 @@ constexpr PlcProfile makeXgi() {
     p.triggerSampling = TriggerSampling::EndOfScan;
     p.externalEdges = kEdgeRising;
     p.externalDetectionDelay = 1 * kMillisecond;
+    p.maxExternalInputDelay = 2 * kMillisecond;
     return p;
 }
 

@@ -123,6 +123,11 @@ struct PlcProfile {
     uint8_t externalEdges = kEdgeBoth;  // the EDGE values allowed
     PlcTime externalDetectionDelay = 0;
     PlcTime externalMinSpacing = 0;
+    // M241: an EXTERNAL task that has switched a fast output (bits of
+    // %QB0 in fastOutputMask) keeps this longer minimum between triggers.
+    uint8_t fastOutputMask = 0;
+    PlcTime externalMinSpacingFastOutputs = 0;
+    PlcTime maxExternalInputDelay = kNever;  // INPUT_DELAY range 0..this (XGI: 2 ms, the seed's 3 ms in all)
     std::span<const InputAlias> inputAliases;
     SystemVariables systemVariables = SystemVariables::None;
     bool taskCycleFunctions = false;  // M241: GetCurrentTaskCycle / SetCurrentTaskCycle

@@ -482,6 +482,10 @@ void Scheduler::finishActivation(TaskRun& task, bool completed) {
     } else if (completed) {
         int slot = task.spec.systemSlot;
         ProcessImage& image = machine_.image;
+        // M241: an external task that switches a fast output needs 15 ms between triggers.
+        if (profile_.fastOutputMask && task.spec.kind == TaskKind::External &&
+            ((image.physicalOutputs[0] ^ image.outputs[0]) & profile_.fastOutputMask))
+            task.drivesFastOutputs = true;
         // An inhibited M340 task still writes its outputs (seed 002).
         if (!system_ || !system_->outputsInhibited(slot))
             std::memcpy(image.physicalOutputs.data(), image.outputs.data(), std::min(image.outputExtent, ProcessImage::kSize));
@@ -500,9 +504,11 @@ void Scheduler::finishActivation(TaskRun& task, bool completed) {
     if (ending_) return;
     if (&task == startup_ && !regularStarted_) startRegularTasks();
     if (&task == master_) onMasterEnd();
-    if (system_)
+    if (system_) {
+        if (master_) switchMasterMode(*master_, system_->requestedMasterPeriod(master_->period));
         for (TaskRun& other : tasks_)
             if (other.spec.kind == TaskKind::Cyclic) setPeriod(other, system_->requestedPeriod(other.spec.systemSlot, other.period));
+    }
     if (task.restartPending) {
         task.restartPending = false;
         release(task, task.restartNominal, false);
@@ -535,6 +541,33 @@ bool Scheduler::setCurrentTaskInterval(PlcTime period) {
     return true;
 }
 
+// M340: %SW0 = 0 makes MAST cyclic (freewheeling: released again at each
+// end), 1..255 periodic with that period, at run time (decision 0117). A
+// cyclic MAST excludes AUX tasks, so with AUX tasks configured 0 is ignored.
+void Scheduler::switchMasterMode(TaskRun& mast, PlcTime period) {
+    const bool cyclicNow = mast.spec.kind == TaskKind::Freewheeling;
+    if (period == 0 && !cyclicNow) {
+        for (const TaskRun& t : tasks_)
+            if (t.spec.systemSlot >= 0 && size_t(t.spec.systemSlot) < profile_.fixedTasks.size() &&
+                profile_.fixedTasks[size_t(t.spec.systemSlot)].needsPeriodicMaster)
+                return;
+        mast.spec.kind = TaskKind::Freewheeling;
+        mast.period = 0;
+        mast.nextRelease = kNever;
+        trace(&mast, "mode", "cyclic");
+        // Idle until its next grid point: it runs again at once instead.
+        if (mast.phase == Phase::Idle && &mast != (stack_.empty() ? nullptr : stack_.back())) release(mast, machine_.now, false);
+        recomputeEarliestRelease();
+    } else if (period > 0 && cyclicNow) {
+        mast.spec.kind = TaskKind::Cyclic;
+        mast.period = period;
+        // The grid starts from the release of its current (or last) scan.
+        mast.nextRelease = std::max(mast.releasedAt + period, machine_.now);
+        trace(&mast, "mode", "periodic");
+        recomputeEarliestRelease();
+    }
+}
+
 // The grid restarts from the current (or last) activation's release.
 void Scheduler::setPeriod(TaskRun& task, PlcTime period) {
     if (period == task.period || period <= 0) return;
@@ -560,8 +593,9 @@ void Scheduler::physicalInputsChanged(PlcTime now) {
                        " while its previous trigger still waits for its release; the trigger is dropped");
             continue;
         }
-        PlcTime at = now + profile_.externalDetectionDelay;
-        if (task.hasExternalRelease) at = std::max(at, task.lastExternalRelease + profile_.externalMinSpacing);
+        PlcTime at = now + profile_.externalDetectionDelay + task.spec.inputDelay;
+        const PlcTime spacing = task.drivesFastOutputs ? profile_.externalMinSpacingFastOutputs : profile_.externalMinSpacing;
+        if (task.hasExternalRelease) at = std::max(at, task.lastExternalRelease + spacing);
         task.nextRelease = at;
         task.lastExternalRelease = at;
         task.hasExternalRelease = true;

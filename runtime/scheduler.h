@@ -118,6 +118,7 @@ private:
         PlcTime restartNominal = 0;
         PlcTime lastExternalRelease = 0;  // EXTERNAL: the latest planned release (minimum spacing)
         bool hasExternalRelease = false;
+        bool drivesFastOutputs = false;   // M241: it has switched FQ0/FQ1 (the 15 ms spacing applies)
         Phase phase = Phase::Idle;
         bool abortRequested = false;  // its watchdog tripped; abort at its next statement boundary
         bool lastTrigger = false;     // event tasks: the BOOL at the previous sample
@@ -139,6 +140,7 @@ private:
     void startTask(TaskRun& task, PlcTime now);
     void onMasterEnd();
     void setPeriod(TaskRun& task, PlcTime period);
+    void switchMasterMode(TaskRun& mast, PlcTime period);
     bool sampleOnTicks() const { return hasTriggers_ && !scanSampling_; }
     void processDue();
     void recomputeEarliestRelease();

@@ -62,6 +62,12 @@ PlcTime SystemArea::requestedPeriod(int slot, PlcTime current) const {
     return period;
 }
 
+PlcTime SystemArea::requestedMasterPeriod(PlcTime current) const {
+    if (profile_.fixedTasks.empty() || !profile_.fixedTasks[0].freewheelingAllowed) return current;
+    if (word(0) == 0) return 0;
+    return requestedPeriod(0, current);
+}
+
 void SystemArea::setBit(int n, bool value) {
     uint8_t& byte = image_.systemBits[size_t(n) / 8];
     byte = uint8_t(value ? byte | (1u << (n % 8)) : byte & ~(1u << (n % 8)));

@@ -41,6 +41,9 @@ public:
     // The period %SW<slot> asks for, in ns; `current` when the word holds a
     // value outside the task's range (such a write is not taken into account).
     PlcTime requestedPeriod(int slot, PlcTime current) const;
+    // The mode %SW0 asks of the master task: 0 cyclic (freewheeling), else its
+    // period in ns; `current` when the word holds a value outside 0..255 ms.
+    PlcTime requestedMasterPeriod(PlcTime current) const;
 
 private:
     bool bit(int n) const { return (image_.systemBits[size_t(n) / 8] >> (n % 8)) & 1; }

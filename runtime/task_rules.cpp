@@ -143,6 +143,14 @@ private:
     }
 
     void checkExternal(const TaskSpec& task) {
+        if (task.inputDelayGiven && task.kind != TaskKind::External)
+            report(task, "INPUT_DELAY is only for EXTERNAL tasks (task '" + task.name + "')");
+        if (task.kind == TaskKind::External && task.inputDelay < 0)
+            report(task, "input delay of task '" + task.name + "' must not be negative");
+        else if (task.kind == TaskKind::External && task.inputDelay > profile_.maxExternalInputDelay)
+            report(task, "input delay " + formatDuration(task.inputDelay) + " of task '" + task.name + "' is outside T#0s.." +
+                             formatDuration(profile_.maxExternalInputDelay) + " on " + std::string(profile_.description) +
+                             " (detection within " + formatDuration(profile_.externalDetectionDelay + profile_.maxExternalInputDelay) + ")");
         if (task.kind != TaskKind::External || (task.edges & ~profile_.externalEdges) == 0) return;
         report(task, "external task '" + task.name + "': only EDGE := RISING is available on " +
                          std::string(profile_.description));

@@ -56,6 +56,10 @@ struct TaskSpec {
     uint32_t inputByte = 0;
     int inputBit = 0;
     uint8_t edges = kEdgeRising;
+    // INPUT_DELAY: the input module's filter time, added to the target's
+    // detection delay (XGI: "1 ms + input module delay", decision 0118).
+    PlcTime inputDelay = 0;
+    bool inputDelayGiven = false;
     // The system-variable slot of the task on a target that has one
     // (M340: 0 MAST, 1 FAST, 2..5 AUX0..AUX3); -1: none.
     int systemSlot = -1;

@@ -105,7 +105,7 @@ private:
     const Type* resolveTypeDecl(const std::string& upperName, const ast::Loc& loc);
     void layoutPou(PouInfo* pou);
     void declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks, uint32_t& instOff, uint32_t& frameOff,
-                     std::vector<Field>* instanceFields);
+                     std::vector<Field>* instanceFields, bool instOnly = false);
     void declareGlobals();
     void foldConstant(VarSym& v, const ast::VarDecl& decl);
     VarSym* addGlobal(const ast::VarDecl& decl, size_t nameIndex, const ast::VarBlock& block, uint32_t& listSize);
@@ -146,6 +146,8 @@ private:
 
     // ---- configuration (checker_config.cpp)
     void buildConfiguration();
+    void addTestProgram(const std::string& name);
+    void declareMethodInstanceVars(PouInfo* fb, uint32_t& instOff, std::vector<Field>& fields);
     void buildDefaultConfiguration();
     void instantiateProgram(const std::string& name, PouInfo* pou, const ast::Loc& loc);
 

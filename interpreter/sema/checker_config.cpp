@@ -130,6 +130,9 @@ void Checker::buildConfiguration() {
                 s.watchdogGiven = true;
             } else if (key == "EXTERNAL") {
                 if (externalInput(*p.value, s)) s.kind = rt::TaskKind::External;
+            } else if (key == "INPUT_DELAY") {
+                constTime(p.value.get(), s.inputDelay);
+                s.inputDelayGiven = true;
             } else if (key == "EDGE") {
                 std::string v = p.value->kind == ast::ExprKind::Name ? upper(p.value->name) : "";
                 if (v == "RISING") s.edges = rt::kEdgeRising;
@@ -247,9 +250,37 @@ void Checker::buildConfiguration() {
         currentPouName_ = nullptr;
         task->calls.push_back({&inst, inst.pou->code, inst.memory, inst.name});
     }
+    if (!options_.testProgram.empty()) addTestProgram(options_.testProgram);
     for (const auto& t : model_.tasks)
         if (std::string problem = rt::programCountProblem(profile(), t.spec, int(t.calls.size())); !problem.empty())
             error(t.spec.loc, problem);
+}
+
+// The test runner's PROGRAM in a project with a CONFIGURATION (decision 0141):
+// one instance, called last by the first cyclic or freewheeling task declared,
+// or else by the target's task for programs without one.
+void Checker::addTestProgram(const std::string& name) {
+    auto it = pous_.find(upper(name));
+    if (it == pous_.end() || it->second->kind != ast::PouKind::Program) return;
+    ConfiguredTask* host = nullptr;
+    for (auto& t : model_.tasks)
+        if (t.spec.kind == rt::TaskKind::Cyclic || t.spec.kind == rt::TaskKind::Freewheeling) {
+            host = &t;
+            break;
+        }
+    if (!host) {
+        ConfiguredTask dt;
+        dt.spec.name = std::string(profile().unassignedTaskName);
+        dt.spec.loc = it->second->ast->loc;
+        dt.spec.kind = rt::TaskKind::Freewheeling;
+        dt.spec.priority = profile().unassignedTaskPriority;
+        dt.spec.isScanProgram = true;
+        model_.tasks.push_back(std::move(dt));
+        host = &model_.tasks.back();
+    }
+    instantiateProgram(name, it->second, it->second->ast->loc);
+    ProgramInstance& inst = model_.programs.back();
+    host->calls.push_back({&inst, inst.pou->code, inst.memory, inst.name});
 }
 
 // EXTERNAL := FI0 (a target's input alias) or %IX0.0 (a bit of the physical inputs).
@@ -307,6 +338,16 @@ void Checker::run(std::vector<ast::CompilationUnit>& units) {
     warnUnused();
 }
 
+// A TcUnit suite instance (a block extending FB_TestSuite, or an array of
+// them) is used by RUN(), which names no variable.
+static bool isTestSuiteInstance(const Type* t) {
+    while (t && t->kind == TK::Array) t = t->elem;
+    if (!t || t->kind != TK::FunctionBlock || !t->pou) return false;
+    for (const PouInfo* p = t->pou->parent; p; p = p->parent)
+        if (upper(p->name) == "FB_TESTSUITE") return true;
+    return false;
+}
+
 void Checker::warnUnused() {
     for (PouInfo* p : pouOrder_) {
         if (libraryFiles_.count(p->ast->loc.file)) continue;
@@ -314,6 +355,7 @@ void Checker::warnUnused() {
             for (auto& v : pou->ownedVars) {
                 if (v->used || v.get() == pou->result) continue;
                 if (v->section == ast::VarSection::Var || v->section == ast::VarSection::Temp) {
+                    if (isTestSuiteInstance(v->type)) continue;  // RUN() of strun test calls it
                     // Program variables are visible in --dump, but a block instance nobody calls does nothing.
                     if (pou->kind == ast::PouKind::Program) {
                         if (v->type && v->type->kind == TK::FunctionBlock)

@@ -519,6 +519,7 @@ void Checker::layoutPou(PouInfo* pou) {
         }
     }
     declareVars(pou, pou->ast->vars, instOff, frameOff, hasInstance ? &fields : nullptr);
+    if (inst && pou->kind == ast::PouKind::FunctionBlock) declareMethodInstanceVars(pou, instOff, fields);
     if (inst) {
         uint32_t align = 8;
         inst->fields = std::move(fields);
@@ -529,12 +530,17 @@ void Checker::layoutPou(PouInfo* pou) {
         std::vector<uint8_t> image(inst->size, 0);
         if (pou->parent && pou->parent->instanceType)
             std::memcpy(image.data(), pou->parent->instanceInit.data(), pou->parent->instanceInit.size());
-        for (auto& v : pou->ownedVars) {
-            if (v->storage != Storage::Self || v->byRef) continue;
-            writeDefault(image.data() + v->offset, v->type);
-            if (isAddressInit(v.get())) { pou->addressInits.push_back(v.get()); continue; }
-            if (v->decl && v->decl->init) writeInitial(image.data() + v->offset, v->type, v->decl->init.get(), v->decl->loc);
-        }
+        auto initialise = [&](PouInfo* owner) {
+            for (auto& v : owner->ownedVars) {
+                if (v->storage != Storage::Self || v->byRef) continue;
+                writeDefault(image.data() + v->offset, v->type);
+                if (isAddressInit(v.get())) { pou->addressInits.push_back(v.get()); continue; }
+                if (v->decl && v->decl->init) writeInitial(image.data() + v->offset, v->type, v->decl->init.get(), v->decl->loc);
+            }
+        };
+        initialise(pou);
+        if (pou->kind == ast::PouKind::FunctionBlock)
+            for (auto& [name, m] : pou->methods) initialise(m);  // the methods' VAR_INST
         if (pou->kind == ast::PouKind::FunctionBlock) {
             // Every FB instance starts with its class (methods dispatch through it).
             if (!pou->classDesc) {
@@ -565,10 +571,33 @@ void Checker::layoutPou(PouInfo* pou) {
     for (auto& [name, m] : pou->methods) layoutPou(m);
 }
 
+// CODESYS VAR_INST of a method: kept between calls, in the instance of the
+// block that owns the method (laid out with it, before the method itself).
+// Their fields are named `Method.var`, which no member access can spell.
+void Checker::declareMethodInstanceVars(PouInfo* fb, uint32_t& instOff, std::vector<Field>& fields) {
+    for (auto& [key, m] : fb->methods) {
+        if (!m->ast) continue;
+        bool any = false;
+        for (const auto& block : m->ast->vars) any = any || block.section == ast::VarSection::Inst;
+        if (!any) continue;
+        const size_t first = fields.size();
+        uint32_t unusedFrame = 0;
+        PouInfo* saved = pou_;
+        pou_ = m;
+        declareVars(m, m->ast->vars, instOff, unusedFrame, &fields, true);
+        pou_ = saved;
+        for (size_t k = first; k < fields.size(); ++k) fields[k].name = m->name + "." + fields[k].name;
+        m->instanceVarsDeclared = true;
+    }
+}
+
 void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks, uint32_t& instOff, uint32_t& frameOff,
-                          std::vector<Field>* instanceFields) {
+                          std::vector<Field>* instanceFields, bool instOnly) {
     const bool hasInstance = instanceFields != nullptr;
     for (const auto& block : blocks) {
+        if (instOnly && block.section != ast::VarSection::Inst) continue;
+        // A method's VAR_INST was declared with its block's instance (declareMethodInstanceVars).
+        if (block.section == ast::VarSection::Inst && !instOnly && pou->instanceVarsDeclared) continue;
         for (const auto& decl : block.vars) {
             const Type* t = nullptr;
             bool isExternal = block.section == ast::VarSection::External;
@@ -724,7 +753,9 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     if (block.constant && decl.init) foldConstant(*v, decl);
     VarSym* raw = v.get();
     globals_[key] = raw;
-    model_.globals.push_back(raw);
+    // The library's own lists (GVL_Param_TcUnit) are not the project's state:
+    // they stay out of --dump, --vcd and the names --set can write.
+    if (!libraryFiles_.count(loc.file)) model_.globals.push_back(raw);
     model_.globalStore.push_back(std::move(v));
     return raw;
 }

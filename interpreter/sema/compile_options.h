@@ -14,6 +14,11 @@ struct CompileOptions {
     // --strict: IEC 61131-3 typing; implicit conversions the default accepts
     // with a warning are errors.
     bool strict = false;
+    // `strun test` on a project that never calls RUN(): the PROGRAM the test
+    // runner added. Under a CONFIGURATION (which only runs the programs it
+    // names) it runs in the project's first cyclic or freewheeling task, or
+    // else in the target's task for programs without a task (decision 0141).
+    std::string testProgram;
 };
 
 }  // namespace strun::sema

@@ -61,6 +61,7 @@ struct PouInfo {
     const Type* resultType = nullptr;
     Type* instanceType = nullptr;             // PROGRAM / FB: the instance layout as a struct-like type
     std::map<std::string, PouInfo*> methods;  // upper-case name -> method
+    bool instanceVarsDeclared = false;         // a method whose VAR_INST live in its block's instance
     exec::PouCode* code = nullptr;
     bool laidOut = false;
     bool layingOut = false;

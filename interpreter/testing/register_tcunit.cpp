@@ -231,12 +231,79 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
     for (bool inSequence : {false, true}) {
         ck.addBuiltin(inSequence ? "RUN_IN_SEQUENCE" : "RUN", [&reg, inSequence](Checker& ck, CallArgs& call) -> Checked {
             std::vector<Checked> a;
-            if (!bindArgs(ck, call, {}, a)) return ck.bad(call.loc);
+            // RUN_IN_SEQUENCE(TimeBetweenTestSuitesExecution) in TcUnit 1.1 and CfUnit.
+            bool ok = inSequence ? bindArgs(ck, call, {{"TimeBetweenTestSuitesExecution", false}}, a) : bindArgs(ck, call, {}, a);
+            if (!ok) return ck.bad(call.loc);
             ++reg.runCalls;
             auto* n = ck.pool().make<RunSuitesNode>();
             n->reg = &reg;
             n->inSequence = inSequence;
+            if (inSequence && a[0].ok) {
+                Checked d = ck.settle(a[0]);
+                if (!d.ok) return ck.bad(call.loc);
+                if (!d.type || (d.type->kind != TK::Time && d.type->kind != TK::LTime)) {
+                    ck.error(d.loc, fmt::format("{}: expected a TIME, not {}", written(call), sema::typeName(d.type)));
+                    return ck.bad(call.loc);
+                }
+                n->pause = d.node;
+                n->scale = d.type->kind == TK::Time ? 1000000 : 1;
+            }
             return result(ck, n, TK::Void, call);
+        });
+    }
+    // AWAIT_ASSERTIONS(AwaitTime) / TIMEOUT_FOR_EACH_TEST(Timeout): a duration.
+    for (bool await : {true, false}) {
+        ck.addBuiltin(await ? "AWAIT_ASSERTIONS" : "TIMEOUT_FOR_EACH_TEST", [&reg, await](Checker& ck, CallArgs& call) -> Checked {
+            std::vector<Checked> a;
+            if (!bindArgs(ck, call, {{await ? "AwaitTime" : "Timeout", true}}, a)) return ck.bad(call.loc);
+            Checked d = ck.settle(a[0]);
+            if (!d.ok) return ck.bad(call.loc);
+            if (!d.type || (d.type->kind != TK::Time && d.type->kind != TK::LTime)) {
+                ck.error(d.loc, fmt::format("{}: expected a TIME, not {}", written(call), sema::typeName(d.type)));
+                return ck.bad(call.loc);
+            }
+            const int64_t scale = d.type->kind == TK::Time ? 1000000 : 1;
+            if (await) {
+                auto* n = ck.pool().make<AwaitAssertionsNode>();
+                n->reg = &reg;
+                n->duration = d.node;
+                n->scale = scale;
+                return result(ck, n, TK::Void, call);
+            }
+            auto* n = ck.pool().make<TestTimeoutNode>();
+            n->reg = &reg;
+            n->duration = d.node;
+            n->scale = scale;
+            return result(ck, n, TK::Void, call);
+        });
+    }
+    // The natives behind FB_TestSuite's query methods (stdlib/st/tcunit.st).
+    static const std::pair<const char*, SuiteQueryNode::What> queries[] = {
+        {"__TCUNIT_NUMBER_OF_TESTS", SuiteQueryNode::What::Tests},
+        {"__TCUNIT_NUMBER_OF_FAILED_TESTS", SuiteQueryNode::What::Failed},
+        {"__TCUNIT_NUMBER_OF_SKIPPED_TESTS", SuiteQueryNode::What::Skipped},
+        {"__TCUNIT_NUMBER_OF_SUCCESSFUL_TESTS", SuiteQueryNode::What::Successful},
+        {"__TCUNIT_ALL_TESTS_FINISHED", SuiteQueryNode::What::AllFinished},
+        {"__TCUNIT_TEST_FINISHED", SuiteQueryNode::What::TestFinished},
+    };
+    for (const auto& [name, what] : queries) {
+        const SuiteQueryNode::What w = what;
+        ck.addBuiltin(name, [&reg, w](Checker& ck, CallArgs& call) -> Checked {
+            std::vector<Checked> a;
+            const bool named = w == SuiteQueryNode::What::TestFinished;
+            bool ok = named ? bindArgs(ck, call, {{"Suite", true}, {"TestName", true}}, a) : bindArgs(ck, call, {{"Suite", true}}, a);
+            if (!ok) return ck.bad(call.loc);
+            if (!a[0].type || a[0].type->kind != TK::Pointer) {
+                ck.error(a[0].loc, fmt::format("{}: expected THIS", written(call)));
+                return ck.bad(call.loc);
+            }
+            auto* n = ck.pool().make<SuiteQueryNode>();
+            n->reg = &reg;
+            n->self = a[0].node;
+            n->what = w;
+            if (named && !stringInput(ck, a[1], call, "TestName", n->name, n->nameType)) return ck.bad(call.loc);
+            const bool boolean = w == SuiteQueryNode::What::AllFinished || named;
+            return result(ck, n, boolean ? TK::Bool : TK::UInt, call);
         });
     }
     ck.addBuiltin("TCUNIT_ADSLOGSTR", [](Checker& ck, CallArgs& call) -> Checked {

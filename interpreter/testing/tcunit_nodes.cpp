@@ -28,6 +28,33 @@ int64_t AdsLogNode::i(Ctx& c) {
     return 0;
 }
 
+int64_t SuiteQueryNode::i(Ctx& c) {
+    const Suite* s = reg->suiteAt(reinterpret_cast<const uint8_t*>(self->i(c)));
+    if (!s) return 0;
+    int64_t failed = 0, skipped = 0;
+    for (const auto& t : s->tests) {
+        if (t.skipped) ++skipped;
+        else if (!t.failures.empty()) ++failed;
+    }
+    const int64_t total = static_cast<int64_t>(s->tests.size());
+    switch (what) {
+        case What::Tests: return total;
+        case What::Failed: return failed;
+        case What::Skipped: return skipped;
+        case What::Successful: return total - failed - skipped;  // TcUnit counts unfinished tests here too
+        case What::AllFinished: return s->finished();
+        case What::TestFinished: {
+            std::string_view n = stringArg(name, nameType, c, scratch);
+            while (!n.empty() && n.front() == ' ') n.remove_prefix(1);
+            while (!n.empty() && n.back() == ' ') n.remove_suffix(1);
+            for (const auto& t : s->tests)
+                if (t.name == n) return t.finished;
+            return 0;
+        }
+    }
+    return 0;
+}
+
 void AssertBase::fail(Ctx& c, std::string expected, std::string actual, const char* messageSuffix) {
     Failure f;
     f.file = file;

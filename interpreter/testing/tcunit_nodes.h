@@ -62,10 +62,49 @@ struct IsTestFinishedNode final : Expr {
 struct RunSuitesNode final : Expr {
     TestRegistry* reg = nullptr;
     bool inSequence = false;
+    Expr* pause = nullptr;  // RUN_IN_SEQUENCE(TimeBetweenTestSuitesExecution); null: none
+    int64_t scale = 1;      // to nanoseconds
     int64_t i(Ctx& c) override {
-        reg->runSuites(c, inSequence);
+        reg->runSuites(c, inSequence, pause ? pause->i(c) * scale : 0);
         return 0;
     }
+};
+
+// AWAIT_ASSERTIONS(AwaitTime) and TIMEOUT_FOR_EACH_TEST(Timeout): a TIME
+// (milliseconds) or LTIME (nanoseconds) operand.
+struct AwaitAssertionsNode final : Expr {
+    TestRegistry* reg = nullptr;
+    Expr* duration = nullptr;
+    int64_t scale = 1;  // to nanoseconds
+    int64_t i(Ctx& c) override {
+        reg->awaitAssertions(duration->i(c) * scale, c.m->now);
+        return 0;
+    }
+};
+
+struct TestTimeoutNode final : Expr {
+    TestRegistry* reg = nullptr;
+    Expr* duration = nullptr;
+    int64_t scale = 1;
+    int64_t i(Ctx& c) override {
+        int64_t t = duration->i(c) * scale;
+        reg->setTestTimeout(t > 0 ? t : 0);
+        return 0;
+    }
+};
+
+// FB_TestSuite's query methods (stdlib/st/tcunit.st) ask about the suite at
+// THIS: how many tests it has, failed, skipped, successful; whether all (or
+// one named) finished.
+struct SuiteQueryNode final : Expr {
+    enum class What { Tests, Failed, Skipped, Successful, AllFinished, TestFinished };
+    TestRegistry* reg = nullptr;
+    Expr* self = nullptr;  // POINTER TO the suite instance
+    What what = What::Tests;
+    Expr* name = nullptr;  // TestFinished
+    const sema::Type* nameType = nullptr;
+    std::string scratch;
+    int64_t i(Ctx& c) override;
 };
 
 // TCUNIT_ADSLOGSTR(msgCtrlMask, msgFmtStr, strArg): the message, %s replaced by strArg, on stderr.

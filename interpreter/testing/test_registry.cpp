@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <iostream>
 
 #include <fmt/format.h>
 
@@ -88,7 +89,13 @@ bool TestRegistry::beginTest(std::string_view rawName, bool ordered, rt::PlcTime
         s.tests.push_back(std::move(t));
         index = static_cast<int>(s.tests.size()) - 1;
     } else if (s.tests[static_cast<size_t>(index)].lastCycle == s.cycles && s.cycles != 0) {
-        // The same name twice in one cycle: TcUnit ignores the second one.
+        // The same name twice in one cycle: TcUnit ignores the second one and
+        // logs an error, once (its text, with the suite's instance path).
+        TestCase& dup = s.tests[static_cast<size_t>(index)];
+        if (!dup.duplicateReported) {
+            dup.duplicateReported = true;
+            std::cerr << "Test with name '" << dup.name << "' already exists in test suite '" << s.path << "'\n";
+        }
         return false;
     }
     TestCase& t = s.tests[static_cast<size_t>(index)];
@@ -96,6 +103,16 @@ bool TestRegistry::beginTest(std::string_view rawName, bool ordered, rt::PlcTime
     currentTest = index;
     if (hint) *hint = index;
     if (t.skipped || t.finished) return false;
+    if (testTimeout > 0 && now - t.startedAt > testTimeout) {
+        // TIMEOUT_FOR_EACH_TEST: TcUnit stops the PLC; strun fails this test
+        // and lets the others go on (decision 0142).
+        Failure f;
+        f.fault = fmt::format("timeout: not finished {} after it started (TIMEOUT_FOR_EACH_TEST)", stdlib::formatDuration(testTimeout));
+        t.failures.push_back(std::move(f));
+        t.finished = true;
+        t.finishedAt = now;
+        return false;
+    }
     if (t.order > 0) {
         // TEST_ORDERED: its turn once every ordered test before it finished.
         for (const auto& other : s.tests)
@@ -120,12 +137,20 @@ bool TestRegistry::finishNamed(std::string_view name, rt::PlcTime now) {
     if (currentSuite < 0) return false;
     name = trim(name);
     for (auto& t : suites[static_cast<size_t>(currentSuite)].tests) {
-        if (t.name != name || t.skipped) continue;
-        if (!t.finished) {
+        if (t.name != name) continue;
+        if (!t.finished && !t.skipped) {
             t.finished = true;
             t.finishedAt = now;
         }
         return true;
+    }
+    // TcUnit's messages (three, then one that suppresses the rest) and its abort.
+    if (failedLookups < 3) std::cerr << "Failed to find test '" << name << "'\n";
+    else if (failedLookups == 3) std::cerr << "Excess failed attempts to mark test finished, failed. Further warnings will be suppressed\n";
+    ++failedLookups;
+    if (!aborted) {
+        aborted = true;
+        abortReason = fmt::format("aborted: TEST_FINISHED_NAMED could not find test '{}'", name);
     }
     return false;
 }
@@ -136,6 +161,20 @@ bool TestRegistry::isFinished(std::string_view name) const {
     for (const auto& t : suites[static_cast<size_t>(currentSuite)].tests)
         if (t.name == name) return t.finished;
     return false;
+}
+
+void TestRegistry::awaitAssertions(rt::PlcTime awaitTime, rt::PlcTime now) {
+    if (!assertionsActive()) return;
+    TestCase& t = suites[static_cast<size_t>(currentSuite)].tests[static_cast<size_t>(currentTest)];
+    if (t.awaitStart < 0) t.awaitStart = now;
+    // Held: the rest of this cycle's assertions and TEST_FINISHED count for nothing.
+    if (now - t.awaitStart < awaitTime) ignoreCurrent = true;
+}
+
+const Suite* TestRegistry::suiteAt(const uint8_t* instance) const {
+    for (const auto& s : suites)
+        if (s.instance == instance) return &s;
+    return nullptr;
 }
 
 void TestRegistry::recordFailure(Failure f) {
@@ -149,13 +188,14 @@ void TestRegistry::recordFailure(Failure f) {
     t.failures.push_back(std::move(f));
 }
 
-void TestRegistry::runSuites(exec::Ctx& c, bool inSequence) {
+void TestRegistry::runSuites(exec::Ctx& c, bool inSequence, rt::PlcTime pause) {
     exec::Site site{&kRunPou, 0};
     capture.machine = c.m;
     capture.ctx = &c;
     for (size_t k = 0; k < suites.size(); ++k) {
         Suite& s = suites[k];
         if (s.finished()) continue;
+        if (inSequence && s.cycles == 0 && c.m->now < nextSuiteAt) break;  // the pause between two suites
         currentSuite = static_cast<int>(k);
         currentTest = -1;
         ignoreCurrent = true;
@@ -180,6 +220,10 @@ void TestRegistry::runSuites(exec::Ctx& c, bool inSequence) {
             c.aborting = false;                  // a test's fault: the other suites go on
         }
         if (inSequence && !s.finished()) break;
+        if (inSequence) {
+            nextSuiteAt = c.m->now + pause;
+            if (pause > 0) break;
+        }
     }
 }
 

@@ -32,6 +32,8 @@ struct TestCase {
     int order = 0;            // TEST_ORDERED: 1, 2, ... in the order first seen; 0 = unordered
     rt::PlcTime startedAt = 0, finishedAt = 0;
     uint64_t lastCycle = 0;   // the suite cycle that last called TEST() for it (duplicate check)
+    bool duplicateReported = false;  // TcUnit reports a duplicate name once
+    rt::PlcTime awaitStart = -1;     // AWAIT_ASSERTIONS: when the test first awaited; -1 never
     std::vector<Failure> failures;
 };
 
@@ -93,6 +95,7 @@ public:
     std::vector<Suite> suites;
     std::string filter;               // --filter: glob over "Suite.Test"; empty = all
     rt::PlcTime watchdog = 0;         // budget of one suite call (the task's watchdog); 0 = none
+    rt::PlcTime testTimeout = 0;      // TIMEOUT_FOR_EACH_TEST; 0 = none
 
     // ---- the API (called by the nodes)
     // TEST / TEST_ORDERED: makes `name` the current test; for TEST_ORDERED
@@ -102,13 +105,31 @@ public:
     bool finishCurrent(rt::PlcTime now);
     bool finishNamed(std::string_view name, rt::PlcTime now);
     bool isFinished(std::string_view name) const;
+    // AWAIT_ASSERTIONS(AwaitTime): until AwaitTime has passed since the
+    // current test first called it, its assertions and TEST_FINISHED are held.
+    void awaitAssertions(rt::PlcTime awaitTime, rt::PlcTime now);
+    // TIMEOUT_FOR_EACH_TEST(Timeout): a test still running Timeout after it
+    // started fails with a timeout and is finished (0: no limit).
+    void setTestTimeout(rt::PlcTime timeout) { testTimeout = timeout; }
+    // FB_TestSuite's query methods: the suite whose instance is at `instance`
+    // (null when it is not one RUN() calls).
+    const Suite* suiteAt(const uint8_t* instance) const;
     // Whether an assertion now counts (a test is current, running, not skipped).
     bool assertionsActive() const { return currentSuite >= 0 && currentTest >= 0 && !ignoreCurrent; }
     void recordFailure(Failure f);  // into the current test (duplicates of an earlier one are dropped)
     // RUN(): calls the suites (all, or in sequence) on the task's context.
-    void runSuites(exec::Ctx& c, bool inSequence);
+    // RUN_IN_SEQUENCE waits `pause` of PLC time between one suite finishing
+    // and the next one starting (TcUnit's TimeBetweenTestSuitesExecution).
+    void runSuites(exec::Ctx& c, bool inSequence, rt::PlcTime pause = 0);
+    rt::PlcTime nextSuiteAt = 0;  // RUN_IN_SEQUENCE: the next suite starts no sooner
 
     bool allFinished() const;
+    // TEST_FINISHED_NAMED with a name the suite does not have: TcUnit logs
+    // "Failed to find test 'X'" (three times at most, then one last warning)
+    // and aborts the run; the tests still running then fail with `abortReason`.
+    bool aborted = false;
+    std::string abortReason;
+    int failedLookups = 0;
     // After the run: unfinished tests fail with `why` ("timeout").
     void failUnfinished(const std::string& why);
 

@@ -15,7 +15,7 @@ public:
     StopWhenFinished(rt::TaskBody& inner, const TestRegistry& reg) : inner_(inner), reg_(reg) {}
     bool runActivation() override {
         bool completed = inner_.runActivation();
-        if (reg_.allFinished()) rt::Scheduler::requestStop();
+        if (reg_.allFinished() || reg_.aborted) rt::Scheduler::requestStop();
         return completed;
     }
     bool currentPosition(std::string& pou, int& line) const override { return inner_.currentPosition(pou, line); }
@@ -39,7 +39,9 @@ std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const st
     log = before;
     std::vector<int> files = userFiles;
     files.push_back(sources.add("<strun test program>", syntheticTestProgram(model->tests->suiteBlocks)));
-    model = project::compileProject(sources, files, log, options);
+    sema::CompileOptions withProgram = options;
+    withProgram.testProgram = kSyntheticProgramName;
+    model = project::compileProject(sources, files, log, withProgram);
     if (model) collectSuites(*model, *model->tests);
     return model;
 }
@@ -51,7 +53,15 @@ TestRunResult runTests(sema::ProgramModel& model, rt::RunOptions options, const 
     for (const auto& t : model.tasks) specs.push_back(t.spec);
     // The watchdog applies to each suite call (a test that loops fails alone);
     // the task itself runs without one, bounded by the timeout.
+    // That is the watchdog of the task calling the program that holds the first suite.
     reg.watchdog = specs.empty() ? 0 : specs.front().watchdog;
+    if (!reg.suites.empty()) {
+        const std::string& path = reg.suites.front().path;
+        const std::string program = path.substr(0, path.find_first_of(".["));
+        for (const auto& t : model.tasks)
+            for (const auto& call : t.calls)
+                if (call.program && call.name == program) reg.watchdog = t.spec.watchdog;
+    }
     for (auto& s : specs) s.watchdog = 0;
     options.virtualClock = true;
     options.cycles.reset();
@@ -79,7 +89,7 @@ TestRunResult runTests(sema::ProgramModel& model, rt::RunOptions options, const 
             }
         reg.failUnfinished(why);
     } else {
-        reg.failUnfinished("timeout");
+        reg.failUnfinished(reg.aborted ? reg.abortReason : "timeout");
     }
     return result;
 }

@@ -341,3 +341,25 @@ TEST_CASE("a stop requested before run() still stops it", "[scheduler]") {
     next.run(virtualFor(1 * ms));
     CHECK(next.scheduler->endTime() == 1 * ms);
 }
+
+TEST_CASE("M340 %SW9.i inhibits the output writing of task i: the field keeps what it last received", "[scheduler][targets]") {
+    Scenario s;
+    Machine& m = s.machine;
+    std::vector<int> fieldAtStart;
+    TaskSpec mast = cyclic("MAST", 1, 10 * ms, 250 * ms);
+    mast.systemSlot = 0;
+    s.add(mast, 3).onStatement = [&](int activation, int statement) {
+        if (statement != 0) return;
+        fieldAtStart.push_back(m.image.physicalOutputs[0]);
+        m.image.outputs[0] = uint8_t(activation + 1);
+        // %SW9.0 (word 9, bit 0): set in the second scan, cleared in the third.
+        if (activation == 1) m.image.systemWords[9 * 2] |= 1;
+        if (activation == 2) m.image.systemWords[9 * 2] &= uint8_t(~1);
+    };
+    RunOptions options = virtualFor(35 * ms);
+    options.profile = findProfile("m340");
+    s.run(options);
+    // Scan 1 wrote 1; scan 2's 2 was not written out; scan 3 wrote 3.
+    CHECK(fieldAtStart == std::vector<int>{0, 1, 1, 3});
+    CHECK(m.image.physicalOutputs[0] == 4);
+}
