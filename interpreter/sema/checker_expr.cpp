@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/fuse.h"
 #include "interpreter/sema/node_factory.h"
 #include "stdlib/literals.h"
 #include "stdlib/time_literals.h"
@@ -927,7 +928,8 @@ Checked Checker::convert(Checked e, const Type* target, const ast::Loc& loc, boo
             return bad(loc);
         }
         IntInfo ii = intInfo(t);
-        n = pool().make<exec::ConvRealInt>(e.node, ii.bits, ii.isSigned, truncate);
+        n = fuseRealToInt(pool(), e.node, ii.bits, ii.isSigned, truncate);
+        if (!n) n = pool().make<exec::ConvRealInt>(e.node, ii.bits, ii.isSigned, truncate);
     } else if (fTimeDate && tTimeDate) {
         if ((f == TK::Dt || f == TK::LDt) && (t == TK::Tod || t == TK::LTod)) {
             // The time of day in the source's unit, then rescaled (LDT ns -> TOD ms divides).

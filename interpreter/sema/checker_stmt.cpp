@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/fuse.h"
 #include "interpreter/sema/node_factory.h"
 
 namespace strun::sema {
@@ -103,6 +104,8 @@ exec::Stmt* Checker::assignChecked(Checked target, Checked value, const ast::Loc
     Checked v = coerce(value, t, value.loc, "assignment");
     if (!v.ok) return nullptr;
     if (target.var && pou_ && target.var == pou_->result) assignedResult_ = true;
+    if ((target.direct == Checked::Direct::Self || target.direct == Checked::Direct::Frame) && !isAggregate(t) && target.node->bitIndex() < 0)
+        if (exec::Stmt* n = fuseAddConstLocal(pool(), repOf(t), target.direct == Checked::Direct::Frame, target.directOffset, v.node)) return n;
     if (target.direct == Checked::Direct::Self && !isAggregate(t))
         return assignLocal<false>(pool(), repOf(t), target.directOffset, v.node);
     if (target.direct == Checked::Direct::Frame && !isAggregate(t))
@@ -392,6 +395,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                 n->blocks.push_back(b);
             }
             if (s.elseBlock) n->elseBlock = checkBlock(*s.elseBlock);
+            if (n->conds.size() == 1) return pool().make<exec::If1Stmt>(n->conds[0], n->blocks[0], n->elseBlock);
             return n;
         }
         case ast::StmtKind::Case: return checkCase(s);
