@@ -104,6 +104,45 @@ struct AddConstLocal final : Stmt {
     }
 };
 
+// place := constant (flags, counters reset, `a[j] := TRUE`): the stored
+// pattern is computed once by the checker, as Assign<T> would convert it.
+template <class T>
+struct AssignConst final : Stmt {
+    Expr* place;
+    T k;
+    AssignConst(Expr* p, T v) : place(p), k(v) {}
+    Flow exec(Ctx& c) override {
+        storeAs<T>(place->addr(c), k);
+        return Flow::Next;
+    }
+};
+template <class T, BaseKind B>
+struct AssignConstLocal final : Stmt {
+    uint32_t off;
+    T k;
+    AssignConstLocal(uint32_t o, T v) : off(o), k(v) {}
+    Flow exec(Ctx& c) override {
+        storeAs<T>(baseOf<B>(c, nullptr) + off, k);
+        return Flow::Next;
+    }
+};
+
+// An argument bound into the frame of the call being set up (Ctx::pending):
+// a direct typed store, as AssignLocal does for the instance and frame.
+template <class T>
+struct AssignPending final : Stmt {
+    uint32_t off;
+    Expr* value;
+    AssignPending(uint32_t o, Expr* v) : off(o), value(v) {}
+    Flow exec(Ctx& c) override {
+        uint8_t* p = c.pending + off;
+        if constexpr (std::is_floating_point_v<T>) storeAs<T>(p, static_cast<T>(value->f(c)));
+        else if constexpr (std::is_same_v<T, bool>) storeAs<uint8_t>(p, value->i(c) != 0);
+        else storeAs<T>(p, static_cast<T>(value->i(c)));
+        return Flow::Next;
+    }
+};
+
 // IF c THEN ... [ELSE ...] END_IF: no vector walk for the one-condition form.
 struct If1Stmt final : Stmt {
     Expr* cond;

@@ -769,6 +769,9 @@ Checked Checker::checkIndex(const ast::Expr& e) {
         f->count = dims[0].count;
         f->stride = dims[0].stride;
         f->site = site(e.loc);
+        const exec::BaseKind kind = base.direct == Checked::Direct::Self ? exec::BaseKind::Self
+                                    : base.direct == Checked::Direct::Frame ? exec::BaseKind::Frame : exec::BaseKind::Abs;
+        if (exec::Expr* fused = fuseIndex1(pool(), rep, kind, *f)) n = fused;
         c.node = n;
     } else if (dims.size() == 1) {
         auto* n = pool().make<exec::Index1Place>();

@@ -133,7 +133,153 @@ exec::Expr* realToInt(exec::NodePool& pool, exec::Expr* value, int bits, bool is
     return pool.make<exec::ConvRealIntT<T, false>>(value, bits, isSigned);
 }
 
+// The index variable (and added constant) of a subscript expression.
+struct IndexLeaf {
+    exec::IndexFrom from = exec::IndexFrom::Node;
+    uint32_t off = 0;
+    int32_t add = 0;
+};
+
+template <class S, exec::IndexFrom SELF, exec::IndexFrom FRAME>
+bool indexVar(exec::Expr* e, IndexLeaf& out) {
+    if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Self>*>(e)) { out.from = SELF; out.off = v->off; return true; }
+    if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Frame>*>(e)) { out.from = FRAME; out.off = v->off; return true; }
+    return false;
+}
+
+bool anyIndexVar(exec::Expr* e, IndexLeaf& out) {
+    return indexVar<int32_t, exec::IndexFrom::Self32, exec::IndexFrom::Frame32>(e, out) ||
+           indexVar<int16_t, exec::IndexFrom::Self16, exec::IndexFrom::Frame16>(e, out);
+}
+
+IndexLeaf indexLeafOf(exec::Expr* e) {
+    IndexLeaf leaf;
+    if (anyIndexVar(e, leaf)) return leaf;
+    // v + k, v - k in DINT (INT variables are promoted to DINT).
+    using K = exec::OpConst<int32_t>;
+    auto fusedAdd = [&](auto* n, bool negate) {
+        leaf.from = std::is_same_v<std::remove_pointer_t<decltype(n)>, exec::FusedBin<int32_t, BinOp::Add, exec::OpVar<int32_t, BaseKind::Self>, K>> ||
+                            std::is_same_v<std::remove_pointer_t<decltype(n)>, exec::FusedBin<int32_t, BinOp::Sub, exec::OpVar<int32_t, BaseKind::Self>, K>>
+                        ? exec::IndexFrom::Self32
+                        : exec::IndexFrom::Frame32;
+        leaf.off = n->l.off;
+        leaf.add = static_cast<int32_t>(negate ? 0u - static_cast<uint32_t>(n->r.k) : static_cast<uint32_t>(n->r.k));
+    };
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, exec::OpVar<int32_t, BaseKind::Self>, K>*>(e)) { fusedAdd(n, false); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, exec::OpVar<int32_t, BaseKind::Self>, K>*>(e)) { fusedAdd(n, true); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, exec::OpVar<int32_t, BaseKind::Frame>, K>*>(e)) { fusedAdd(n, false); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, exec::OpVar<int32_t, BaseKind::Frame>, K>*>(e)) { fusedAdd(n, true); return leaf; }
+    IndexLeaf inner;
+    if (auto* n = dynamic_cast<exec::AddIK<int32_t>*>(e); n && anyIndexVar(n->l, inner)) {
+        inner.add = n->b;
+        return inner;
+    }
+    if (auto* n = dynamic_cast<exec::SubIK<int32_t>*>(e); n && anyIndexVar(n->l, inner)) {
+        inner.add = static_cast<int32_t>(0u - static_cast<uint32_t>(n->b));
+        return inner;
+    }
+    return {};
+}
+
+template <BaseKind B, exec::IndexFrom IX>
+struct IndexBind {
+    template <class T>
+    using N = exec::Index1Var<T, B, IX>;
+};
+
+template <BaseKind B>
+exec::Expr* index1From(exec::NodePool& pool, Rep rep, exec::IndexFrom from) {
+    switch (from) {
+        case exec::IndexFrom::Self32: return makeByRep<IndexBind<B, exec::IndexFrom::Self32>::template N>(pool, rep);
+        case exec::IndexFrom::Frame32: return makeByRep<IndexBind<B, exec::IndexFrom::Frame32>::template N>(pool, rep);
+        case exec::IndexFrom::Self16: return makeByRep<IndexBind<B, exec::IndexFrom::Self16>::template N>(pool, rep);
+        case exec::IndexFrom::Frame16: return makeByRep<IndexBind<B, exec::IndexFrom::Frame16>::template N>(pool, rep);
+        default: return nullptr;
+    }
+}
+
+template <class T>
+exec::Stmt* assignConstTyped(exec::NodePool& pool, T k, exec::Expr* place, BaseKind base, uint32_t off) {
+    if (place) return pool.make<exec::AssignConst<T>>(place, k);
+    switch (base) {
+        case BaseKind::Frame: return pool.make<exec::AssignConstLocal<T, BaseKind::Frame>>(off, k);
+        case BaseKind::Pending: return pool.make<exec::AssignConstLocal<T, BaseKind::Pending>>(off, k);
+        default: return pool.make<exec::AssignConstLocal<T, BaseKind::Self>>(off, k);
+    }
+}
+
 }  // namespace
+
+exec::Stmt* fuseAssignConst(exec::NodePool& pool, Rep rep, exec::Expr* value, exec::Expr* place, BaseKind base, uint32_t off) {
+    if (!dynamic_cast<exec::ConstInt*>(value) && !dynamic_cast<exec::ConstReal*>(value)) return nullptr;
+    exec::Ctx none;  // constants read nothing from the context
+    switch (rep) {
+        case Rep::I8: return assignConstTyped<int8_t>(pool, static_cast<int8_t>(value->i(none)), place, base, off);
+        case Rep::I16: return assignConstTyped<int16_t>(pool, static_cast<int16_t>(value->i(none)), place, base, off);
+        case Rep::I32: return assignConstTyped<int32_t>(pool, static_cast<int32_t>(value->i(none)), place, base, off);
+        case Rep::I64: return assignConstTyped<int64_t>(pool, value->i(none), place, base, off);
+        case Rep::U8: return assignConstTyped<uint8_t>(pool, static_cast<uint8_t>(value->i(none)), place, base, off);
+        case Rep::Bool: return assignConstTyped<uint8_t>(pool, static_cast<uint8_t>(value->i(none) != 0), place, base, off);
+        case Rep::U16: return assignConstTyped<uint16_t>(pool, static_cast<uint16_t>(value->i(none)), place, base, off);
+        case Rep::U32: return assignConstTyped<uint32_t>(pool, static_cast<uint32_t>(value->i(none)), place, base, off);
+        case Rep::U64: return assignConstTyped<uint64_t>(pool, static_cast<uint64_t>(value->i(none)), place, base, off);
+        case Rep::F32: return assignConstTyped<float>(pool, static_cast<float>(value->f(none)), place, base, off);
+        case Rep::F64: return assignConstTyped<double>(pool, value->f(none), place, base, off);
+        default: return nullptr;
+    }
+}
+
+namespace {
+template <class T, class S = T>
+exec::Stmt* storePending(exec::NodePool& pool, Rep rep, exec::Expr* place, exec::Expr* value) {
+    BaseKind base;
+    uint32_t off;
+    if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Pending>*>(place)) base = BaseKind::Pending, off = v->off;
+    else if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Self>*>(place)) base = BaseKind::Self, off = v->off;
+    else if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Frame>*>(place)) base = BaseKind::Frame, off = v->off;
+    else return nullptr;
+    if (exec::Stmt* k = fuseAssignConst(pool, rep, value, nullptr, base, off)) return k;
+    switch (base) {
+        case BaseKind::Pending: return pool.make<exec::AssignPending<T>>(off, value);
+        case BaseKind::Frame: return pool.make<exec::AssignLocal<T, true>>(off, value);
+        default: return pool.make<exec::AssignLocal<T, false>>(off, value);
+    }
+}
+}  // namespace
+
+exec::Stmt* fuseStorePending(exec::NodePool& pool, Rep rep, exec::Expr* place, exec::Expr* value) {
+    switch (rep) {
+        case Rep::I8: return storePending<int8_t>(pool, rep, place, value);
+        case Rep::I16: return storePending<int16_t>(pool, rep, place, value);
+        case Rep::I32: return storePending<int32_t>(pool, rep, place, value);
+        case Rep::I64: return storePending<int64_t>(pool, rep, place, value);
+        case Rep::U8: return storePending<uint8_t>(pool, rep, place, value);
+        case Rep::Bool: return storePending<bool, uint8_t>(pool, rep, place, value);
+        case Rep::U16: return storePending<uint16_t>(pool, rep, place, value);
+        case Rep::U32: return storePending<uint32_t>(pool, rep, place, value);
+        case Rep::U64: return storePending<uint64_t>(pool, rep, place, value);
+        case Rep::F32: return storePending<float>(pool, rep, place, value);
+        case Rep::F64: return storePending<double>(pool, rep, place, value);
+        default: return nullptr;
+    }
+}
+
+exec::Expr* fuseIndex1(exec::NodePool& pool, Rep rep, BaseKind base, const exec::Index1Fields& fields) {
+    IndexLeaf leaf = indexLeafOf(fields.index);
+    if (leaf.from == exec::IndexFrom::Node) return nullptr;
+    exec::Expr* n = nullptr;
+    switch (base) {
+        case BaseKind::Self: n = index1From<BaseKind::Self>(pool, rep, leaf.from); break;
+        case BaseKind::Frame: n = index1From<BaseKind::Frame>(pool, rep, leaf.from); break;
+        case BaseKind::Abs: n = index1From<BaseKind::Abs>(pool, rep, leaf.from); break;
+        default: return nullptr;
+    }
+    auto* f = dynamic_cast<exec::Index1Fields*>(n);
+    *f = fields;
+    f->indexOff = leaf.off;
+    f->indexAdd = leaf.add;
+    return n;
+}
 
 exec::Expr* fuseBinary(exec::NodePool& pool, BinOp op, Rep rep, exec::Expr* a, exec::Expr* b, int64_t kInt, double kReal) {
     switch (rep) {

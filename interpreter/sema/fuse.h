@@ -20,6 +20,20 @@ exec::Expr* fuseBinary(exec::NodePool& pool, exec::BinOp op, Rep rep, exec::Expr
 // frame, given the assigned value node.
 exec::Stmt* fuseAddConstLocal(exec::NodePool& pool, Rep rep, bool frame, uint32_t off, exec::Expr* value);
 
+// a[i] / a[i + k] on an array variable: the Index1Var with the subscript read
+// inside it, when `fields.index` is a DINT or INT variable of the instance or
+// frame (plus a constant); the fields are copied. nullptr otherwise.
+exec::Expr* fuseIndex1(exec::NodePool& pool, Rep rep, exec::BaseKind base, const exec::Index1Fields& fields);
+
+// place := constant, for a scalar of representation `rep`: into `place`, or,
+// when place is null, at `off` in the instance, frame or pending frame (`base`).
+exec::Stmt* fuseAssignConst(exec::NodePool& pool, Rep rep, exec::Expr* value, exec::Expr* place, exec::BaseKind base, uint32_t off);
+
+// place := value where place is a scalar variable of the instance, the frame
+// or the frame being bound (a call argument; an FB input member): a direct
+// typed store, or its constant form.
+exec::Stmt* fuseStorePending(exec::NodePool& pool, Rep rep, exec::Expr* place, exec::Expr* value);
+
 // REAL/LREAL -> integer with the typed fast path; nullptr for widths it does not cover.
 exec::Expr* fuseRealToInt(exec::NodePool& pool, exec::Expr* value, int bits, bool isSigned, bool truncate);
 
