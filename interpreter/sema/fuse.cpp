@@ -1,6 +1,8 @@
 // Recognises the operands a fused node can read itself (decision 0151).
 #include "interpreter/sema/fuse.h"
 
+#include <optional>
+
 namespace strun::sema {
 
 using exec::BaseKind;
@@ -53,6 +55,22 @@ exec::Expr* fuseTyped(exec::NodePool& pool, exec::Expr* a, exec::Expr* b, T k) {
         case LeafKind::Self: return withRight<T, OP>(pool, exec::OpVar<T, BaseKind::Self>{la.off}, rb, b);
         case LeafKind::Frame: return withRight<T, OP>(pool, exec::OpVar<T, BaseKind::Frame>{la.off}, rb, b);
         default: break;
+    }
+    // k OP x with a commutative OP (3 * x, 0 = x): x OP k, the constant inline.
+    constexpr bool commutes = OP == BinOp::Add || OP == BinOp::Mul || OP == BinOp::And || OP == BinOp::Or || OP == BinOp::Xor ||
+                              OP == BinOp::Eq || OP == BinOp::Ne;
+    if constexpr (commutes) {
+        if (rb.kind == LeafKind::Self || rb.kind == LeafKind::Frame) {
+            exec::Ctx none;  // constants read nothing from the context
+            std::optional<T> ka;
+            if (auto* ci = dynamic_cast<exec::ConstInt*>(a)) ka = std::is_floating_point_v<T> ? static_cast<T>(ci->f(none)) : static_cast<T>(ci->i(none));
+            else if (auto* cr = dynamic_cast<exec::ConstReal*>(a); cr && std::is_floating_point_v<T>) ka = static_cast<T>(cr->f(none));
+            if (ka) {
+                exec::OpConst<T> kk{*ka};
+                if (rb.kind == LeafKind::Self) return make<T, OP>(pool, exec::OpVar<T, BaseKind::Self>{rb.off}, kk);
+                return make<T, OP>(pool, exec::OpVar<T, BaseKind::Frame>{rb.off}, kk);
+            }
+        }
     }
     // A general left operand: worth fusing only when the right one is a variable
     // (node op constant already has its own nodes).
