@@ -17,7 +17,6 @@ namespace strun::exec {
 template <class T>
 struct OpNode {
     Expr* e;
-    uint8_t effects() const { return e->effects(); }
     T get(Ctx& c) const {
         if constexpr (std::is_floating_point_v<T>) return static_cast<T>(e->f(c));
         else return static_cast<T>(e->i(c));
@@ -27,13 +26,11 @@ struct OpNode {
 template <class T, BaseKind B>
 struct OpVar {
     uint32_t off;
-    uint8_t effects() const { return kPure; }
     T get(Ctx& c) const { return loadAs<T>(baseOf<B>(c, nullptr) + off); }
 };
 template <class T>
 struct OpConst {
     T k;
-    uint8_t effects() const { return kPure; }
     T get(Ctx&) const { return k; }
 };
 
@@ -80,7 +77,6 @@ struct FusedBin final : Expr {
     L l;
     R r;
     FusedBin(L a, R b) : l(a), r(b) {}
-    uint8_t effects() const override { return effectsOf(l.effects(), r.effects()); }  // Div/Mod: constant divisor
     int64_t i(Ctx& c) override {
         if constexpr (isCompare(OP) || !std::is_floating_point_v<T>) return applyBin<T, OP>(l.get(c), r.get(c));
         else return 0;
@@ -101,7 +97,6 @@ struct AddConstLocal final : Stmt {
     uint32_t off;
     U<T> k;
     AddConstLocal(uint32_t o, int64_t add) : off(o), k(static_cast<U<T>>(add)) {}
-    uint8_t effects() const override { return kPure; }
     Flow exec(Ctx& c) override {
         uint8_t* p = baseOf<B>(c, nullptr) + off;
         storeAs<T>(p, static_cast<T>(static_cast<U<T>>(static_cast<U<T>>(loadAs<T>(p)) + k)));
@@ -116,7 +111,6 @@ struct AssignConst final : Stmt {
     Expr* place;
     T k;
     AssignConst(Expr* p, T v) : place(p), k(v) {}
-    uint8_t effects() const override { return place->effects(); }
     Flow exec(Ctx& c) override {
         storeAs<T>(place->addr(c), k);
         return Flow::Next;
@@ -127,7 +121,6 @@ struct AssignConstLocal final : Stmt {
     uint32_t off;
     T k;
     AssignConstLocal(uint32_t o, T v) : off(o), k(v) {}
-    uint8_t effects() const override { return kPure; }
     Flow exec(Ctx& c) override {
         storeAs<T>(baseOf<B>(c, nullptr) + off, k);
         return Flow::Next;
@@ -172,7 +165,6 @@ struct ConvRealIntT final : Expr {
     int bits;
     bool isSigned;
     ConvRealIntT(Expr* x, int b, bool s) : a(x), bits(b), isSigned(s) {}
-    uint8_t effects() const override { return a->effects(); }
     int64_t i(Ctx& c) override {
         double v = a->f(c);
         constexpr double kTwoPow52 = 4503599627370496.0;

@@ -52,18 +52,9 @@ struct Site {
     int col = 0;
 };
 
-// What running a node may do besides computing its value. Block::plan
-// charges the statement cost of a straight run of statements at once when
-// none of them can call, observe the clock or fault (only the last may
-// fault), so the per-statement clock check is hoisted (decision 0152).
-// Unknown nodes (built-ins, calls, clock reads) keep the default kOther.
-enum Effects : uint8_t { kPure = 0, kMayFault = 1, kOther = 2 };
-inline uint8_t effectsOf(uint8_t a, uint8_t b) { return a > b ? a : b; }
-
 struct Expr {
     const Type* type = nullptr;
     virtual ~Expr() = default;
-    virtual uint8_t effects() const { return kOther; }
     // Integer-represented values (BOOL, integers, bit strings, TIME/DATE, chars, enums):
     // sign- or zero-extended to 64 bits according to the type.
     virtual int64_t i(Ctx&) { return 0; }
@@ -83,7 +74,6 @@ struct Stmt {
     int col = 0;
     virtual ~Stmt() = default;
     virtual Flow exec(Ctx&) = 0;
-    virtual uint8_t effects() const { return kOther; }
 };
 
 // Owns every node of a loaded project.

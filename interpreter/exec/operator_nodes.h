@@ -27,7 +27,6 @@ using W = std::common_type_t<U<T>, unsigned>;
     struct NAME final : Expr {                                                                \
         Expr *l, *r;                                                                          \
         NAME(Expr* a, Expr* b) : l(a), r(b) {}                                                \
-        uint8_t effects() const override { return effectsOf(l->effects(), r->effects()); }   \
         int64_t i(Ctx& c) override {                                                          \
             T a = static_cast<T>(l->i(c));                                                    \
             T b = static_cast<T>(r->i(c));                                                    \
@@ -52,7 +51,6 @@ STRUN_INT_BINOP(XorI, a ^ b)
         Expr* l;                                                                              \
         T b;                                                                                  \
         NAME(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}                              \
-        uint8_t effects() const override { return l->effects(); }                            \
         int64_t i(Ctx& c) override {                                                          \
             T a = static_cast<T>(l->i(c));                                                    \
             return wrapI(static_cast<T>(EXPR));                                               \
@@ -101,7 +99,6 @@ struct DivI final : Expr {
     Expr *l, *r;
     Site site;
     DivI(Expr* a, Expr* b, Site s) : l(a), r(b), site(s) {}
-    uint8_t effects() const override { return effectsOf(kMayFault, effectsOf(l->effects(), r->effects())); }
     int64_t i(Ctx& c) override {
         T a = static_cast<T>(l->i(c));
         T b = static_cast<T>(r->i(c));
@@ -118,7 +115,6 @@ struct ModI final : Expr {
     Expr *l, *r;
     Site site;
     ModI(Expr* a, Expr* b, Site s) : l(a), r(b), site(s) {}
-    uint8_t effects() const override { return effectsOf(kMayFault, effectsOf(l->effects(), r->effects())); }
     int64_t i(Ctx& c) override {
         T a = static_cast<T>(l->i(c));
         T b = static_cast<T>(r->i(c));
@@ -134,7 +130,6 @@ template <class T>
 struct NegI final : Expr {
     Expr* a;
     explicit NegI(Expr* x) : a(x) {}
-    uint8_t effects() const override { return a->effects(); }
     int64_t i(Ctx& c) override { return wrapI(static_cast<T>(static_cast<U<T>>(0) - static_cast<U<T>>(static_cast<T>(a->i(c))))); }
 };
 
@@ -142,14 +137,12 @@ template <class T>
 struct NotBits final : Expr {
     Expr* a;
     explicit NotBits(Expr* x) : a(x) {}
-    uint8_t effects() const override { return a->effects(); }
     int64_t i(Ctx& c) override { return wrapI(static_cast<T>(~static_cast<T>(a->i(c)))); }
 };
 
 struct NotBool final : Expr {
     Expr* a;
     explicit NotBool(Expr* x) : a(x) {}
-    uint8_t effects() const override { return a->effects(); }
     int64_t i(Ctx& c) override { return a->i(c) == 0; }
 };
 
@@ -157,13 +150,11 @@ struct NotBool final : Expr {
 struct AndThen final : Expr {
     Expr *l, *r;
     AndThen(Expr* a, Expr* b) : l(a), r(b) {}
-    uint8_t effects() const override { return effectsOf(l->effects(), r->effects()); }
     int64_t i(Ctx& c) override { return l->i(c) != 0 && r->i(c) != 0; }
 };
 struct OrElse final : Expr {
     Expr *l, *r;
     OrElse(Expr* a, Expr* b) : l(a), r(b) {}
-    uint8_t effects() const override { return effectsOf(l->effects(), r->effects()); }
     int64_t i(Ctx& c) override { return l->i(c) != 0 || r->i(c) != 0; }
 };
 
@@ -173,7 +164,6 @@ struct OrElse final : Expr {
     struct NAME final : Expr {                                                                \
         Expr *l, *r;                                                                          \
         NAME(Expr* a, Expr* b) : l(a), r(b) {}                                                \
-        uint8_t effects() const override { return effectsOf(l->effects(), r->effects()); }   \
         double f(Ctx& c) override {                                                           \
             T a = static_cast<T>(l->f(c));                                                    \
             T b = static_cast<T>(r->f(c));                                                    \
@@ -195,7 +185,6 @@ struct RealK final : Expr {
     Expr* x;
     T k;
     RealK(Expr* e, double v) : x(e), k(static_cast<T>(v)) {}
-    uint8_t effects() const override { return x->effects(); }
     double f(Ctx& c) override {
         T v = static_cast<T>(x->f(c));
         T a = LEFT ? k : v, b = LEFT ? v : k;
@@ -212,7 +201,6 @@ template <class T>
 struct NegF final : Expr {
     Expr* a;
     explicit NegF(Expr* x) : a(x) {}
-    uint8_t effects() const override { return a->effects(); }
     double f(Ctx& c) override { return static_cast<double>(-static_cast<T>(a->f(c))); }
 };
 
@@ -233,7 +221,6 @@ template <class T, CmpOp OP>
 struct CmpI final : Expr {
     Expr *l, *r;
     CmpI(Expr* a, Expr* b) : l(a), r(b) {}
-    uint8_t effects() const override { return effectsOf(l->effects(), r->effects()); }
     int64_t i(Ctx& c) override { return compare<T, OP>(static_cast<T>(l->i(c)), static_cast<T>(r->i(c))); }
 };
 
@@ -242,7 +229,6 @@ struct CmpIK final : Expr {
     Expr* l;
     T b;
     CmpIK(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}
-    uint8_t effects() const override { return l->effects(); }
     int64_t i(Ctx& c) override { return compare<T, OP>(static_cast<T>(l->i(c)), b); }
 };
 
@@ -250,7 +236,6 @@ template <class T, CmpOp OP>
 struct CmpF final : Expr {
     Expr *l, *r;
     CmpF(Expr* a, Expr* b) : l(a), r(b) {}
-    uint8_t effects() const override { return effectsOf(l->effects(), r->effects()); }
     int64_t i(Ctx& c) override { return compare<T, OP>(static_cast<T>(l->f(c)), static_cast<T>(r->f(c))); }
 };
 
@@ -287,7 +272,6 @@ template <class T>
 struct ConvIntInt final : Expr {
     Expr* a;
     explicit ConvIntInt(Expr* x) : a(x) {}
-    uint8_t effects() const override { return a->effects(); }
     int64_t i(Ctx& c) override { return wrapI(static_cast<T>(a->i(c))); }
 };
 
@@ -295,7 +279,6 @@ struct ConvToBool final : Expr {
     Expr* a;
     bool fromReal;
     ConvToBool(Expr* x, bool real) : a(x), fromReal(real) {}
-    uint8_t effects() const override { return a->effects(); }
     int64_t i(Ctx& c) override { return fromReal ? (a->f(c) != 0.0) : (a->i(c) != 0); }
 };
 
@@ -304,7 +287,6 @@ template <class T, class SRC>
 struct ConvIntReal final : Expr {
     Expr* a;
     explicit ConvIntReal(Expr* x) : a(x) {}
-    uint8_t effects() const override { return a->effects(); }
     double f(Ctx& c) override { return static_cast<double>(static_cast<T>(static_cast<SRC>(a->i(c)))); }
 };
 
@@ -312,7 +294,6 @@ template <class T>
 struct ConvRealReal final : Expr {
     Expr* a;
     explicit ConvRealReal(Expr* x) : a(x) {}
-    uint8_t effects() const override { return a->effects(); }
     double f(Ctx& c) override { return static_cast<double>(static_cast<T>(a->f(c))); }
 };
 
@@ -326,7 +307,6 @@ struct ConvRealInt final : Expr {
     bool isSigned;
     bool truncate;
     ConvRealInt(Expr* x, int b, bool s, bool t) : a(x), bits(b), isSigned(s), truncate(t) {}
-    uint8_t effects() const override { return a->effects(); }
     int64_t i(Ctx& c) override {
         double v = a->f(c);
         return truncate ? realToIntTruncated(v, bits, isSigned) : realToIntRounded(v, bits, isSigned);

@@ -17,80 +17,20 @@ inline bool tickAborts(Ctx& c) {
 struct Block final : Stmt {
     std::vector<Stmt*> stmts;
     std::vector<std::pair<int, size_t>> labels;  // label id -> statement index
-    // runs[k]: how many statements from k on form a straight run whose
-    // statement cost can be charged at once: statements that neither call,
-    // nor read the clock, nor fault, optionally ended by one that may fault
-    // (its fault is then taken at the next tick, as before). Filled by plan();
-    // without a run of two or more, every statement ticks on its own.
-    std::vector<uint32_t> runs;
-    bool hasRuns = false;
-
-    void plan() {
-        runs.assign(stmts.size(), 0);
-        hasRuns = false;
-        for (size_t k = stmts.size(); k-- > 0;) {
-            uint8_t e = stmts[k]->effects();
-            if (e == kMayFault) runs[k] = 1;
-            else if (e == kPure) runs[k] = 1 + (k + 1 < stmts.size() ? runs[k + 1] : 0);
-            if (runs[k] > 1) hasRuns = true;
-        }
-    }
-
     Flow exec(Ctx& c) override {
-        // Blocks without a run (most loop bodies) keep the plain loop.
-        if (hasRuns) return execRuns(c);
         const size_t n = stmts.size();
         for (size_t k = 0; k < n; ++k) {
-            Flow f = step(c, k);
+            c.stmt = stmts[k];
+            if (tickAborts(c)) return Flow::Abort;
+            Flow f = stmts[k]->exec(c);
             if (__builtin_expect(f != Flow::Next, 0)) {
-                if (f == Flow::Jump && jumpTo(c, k)) continue;
-                return f;
-            }
-        }
-        return Flow::Next;
-    }
-
-private:
-    // One statement with its own tick (decision 0071).
-    Flow step(Ctx& c, size_t k) {
-        c.stmt = stmts[k];
-        if (tickAborts(c)) return Flow::Abort;
-        Flow f = stmts[k]->exec(c);
-        if (__builtin_expect(f == Flow::Next && c.aborting, 0)) return Flow::Abort;
-        return f;
-    }
-    // A JMP to a label of this block: k becomes the index before the label's statement.
-    bool jumpTo(Ctx& c, size_t& k) {
-        auto it = std::find_if(labels.begin(), labels.end(), [&](auto& l) { return l.first == c.jumpLabel; });
-        if (it == labels.end()) return false;
-        k = it->second - 1;
-        return true;
-    }
-    __attribute__((noinline)) Flow execRuns(Ctx& c) {
-        const size_t n = stmts.size();
-        Stmt* const* s = stmts.data();
-        for (size_t k = 0; k < n; ++k) {
-            if (runs[k] > 1) {
-                // The whole run fits before the next attention point (release,
-                // watchdog, sampling, end of --for, a fault's request): no tick
-                // inside it could have acted, so charge them all at once
-                // (decision 0152). Otherwise tick statement by statement.
-                rt::Machine& m = *c.m;
-                const rt::PlcTime end = m.now + m.stmtCost * static_cast<rt::PlcTime>(runs[k]);
-                if (__builtin_expect(end < m.deadline.load(std::memory_order_relaxed), 1)) {
-                    m.now = end;
-                    const size_t last = k + runs[k] - 1;
-                    for (; k < last; ++k) s[k]->exec(c);
-                    c.stmt = s[last];  // the last one may fault; watchdog positions name it
-                    s[last]->exec(c);
-                    continue;
+                if (f == Flow::Jump) {
+                    auto it = std::find_if(labels.begin(), labels.end(), [&](auto& l) { return l.first == c.jumpLabel; });
+                    if (it != labels.end()) { k = it->second - 1; continue; }
                 }
-            }
-            Flow f = step(c, k);
-            if (__builtin_expect(f != Flow::Next, 0)) {
-                if (f == Flow::Jump && jumpTo(c, k)) continue;
                 return f;
             }
+            if (__builtin_expect(c.aborting, 0)) return Flow::Abort;
         }
         return Flow::Next;
     }
@@ -102,7 +42,6 @@ struct Assign final : Stmt {
     Expr* place;
     Expr* value;
     Assign(Expr* p, Expr* v) : place(p), value(v) {}
-    uint8_t effects() const override { return effectsOf(place->effects(), value->effects()); }
     Flow exec(Ctx& c) override {
         if constexpr (std::is_floating_point_v<T>) {
             T v = static_cast<T>(value->f(c));
@@ -124,7 +63,6 @@ struct AssignLocal final : Stmt {
     uint32_t off;
     Expr* value;
     AssignLocal(uint32_t o, Expr* v) : off(o), value(v) {}
-    uint8_t effects() const override { return value->effects(); }
     Flow exec(Ctx& c) override {
         uint8_t* p = (FRAME ? c.frame : c.self) + off;
         if constexpr (std::is_floating_point_v<T>) storeAs<T>(p, static_cast<T>(value->f(c)));
@@ -141,7 +79,6 @@ struct AssignBit final : Stmt {
     int bit;
     Expr* value;
     AssignBit(Expr* b, int n, Expr* v) : base(b), bit(n), value(v) {}
-    uint8_t effects() const override { return effectsOf(base->effects(), value->effects()); }
     Flow exec(Ctx& c) override {
         bool v = value->i(c) != 0;
         uint8_t* p = base->addr(c);

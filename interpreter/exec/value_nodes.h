@@ -24,7 +24,6 @@ inline double toF(T v) { return static_cast<double>(v); }
 struct ConstInt final : Expr {
     int64_t v;
     explicit ConstInt(int64_t value) : v(value) {}
-    uint8_t effects() const override { return kPure; }
     int64_t i(Ctx&) override { return v; }
     double f(Ctx&) override { return static_cast<double>(v); }
 };
@@ -32,7 +31,6 @@ struct ConstInt final : Expr {
 struct ConstReal final : Expr {
     double v;
     explicit ConstReal(double value) : v(value) {}
-    uint8_t effects() const override { return kPure; }
     double f(Ctx&) override { return v; }
 };
 
@@ -40,7 +38,6 @@ struct ConstReal final : Expr {
 struct ConstBytes final : Expr {
     std::vector<uint8_t> bytes;
     explicit ConstBytes(std::vector<uint8_t> b) : bytes(std::move(b)) {}
-    uint8_t effects() const override { return kPure; }
     uint8_t* addr(Ctx&) override { return bytes.data(); }
 };
 
@@ -66,7 +63,6 @@ struct VarNode final : Expr {
     uint8_t* abs = nullptr;
     explicit VarNode(uint32_t o) : off(o) {}
     explicit VarNode(uint8_t* p) : abs(p) {}
-    uint8_t effects() const override { return kPure; }
     uint8_t* addr(Ctx& c) override { return baseOf<B>(c, abs) + off; }
     int64_t i(Ctx& c) override {
         if constexpr (std::is_void_v<T>) return 0;
@@ -92,7 +88,6 @@ template <class T>
 struct PlaceLoad final : Expr {
     Expr* place;
     explicit PlaceLoad(Expr* p) : place(p) {}
-    uint8_t effects() const override { return place->effects(); }
     uint8_t* addr(Ctx& c) override { return place->addr(c); }
     int64_t i(Ctx& c) override {
         if constexpr (std::is_void_v<T>) return 0;
@@ -109,7 +104,6 @@ struct OffsetPlace final : Expr {
     Expr* base;
     uint32_t off;
     OffsetPlace(Expr* b, uint32_t o) : base(b), off(o) {}
-    uint8_t effects() const override { return base->effects(); }
     uint8_t* addr(Ctx& c) override { return base->addr(c) + off; }
 };
 
@@ -173,11 +167,6 @@ struct IndexPlace final : Expr {
     Expr* base;
     std::vector<Dim> dims;
     Site site;
-    uint8_t effects() const override {
-        uint8_t e = effectsOf(kMayFault, base->effects());
-        for (const Dim& d : dims) e = effectsOf(e, d.index->effects());
-        return e;
-    }
     uint8_t* addr(Ctx& c) override {
         uint64_t offset = 0;
         for (const Dim& d : dims) {
@@ -197,7 +186,6 @@ struct Index1Place final : Expr {
     int64_t lo, count;
     uint64_t stride;
     Site site;
-    uint8_t effects() const override { return effectsOf(kMayFault, effectsOf(base->effects(), index->effects())); }
     uint8_t* addr(Ctx& c) override {
         int64_t k = static_cast<int64_t>(static_cast<uint64_t>(index->i(c)) - static_cast<uint64_t>(lo));
         if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return outOfRange(c, static_cast<int64_t>(static_cast<uint64_t>(k) + static_cast<uint64_t>(lo)));
@@ -237,7 +225,6 @@ inline int64_t readIndex(Ctx& c, const Index1Fields& f) {
 }
 template <class T, BaseKind B, IndexFrom IX = IndexFrom::Node>
 struct Index1Var final : Expr, Index1Fields {
-    uint8_t effects() const override { return IX == IndexFrom::Node ? effectsOf(kMayFault, index->effects()) : kMayFault; }
     uint8_t* addr(Ctx& c) override {
         int64_t k = static_cast<int64_t>(static_cast<uint64_t>(readIndex<IX>(c, *this)) - static_cast<uint64_t>(lo));
         if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return indexFault(c, site, static_cast<int64_t>(static_cast<uint64_t>(k) + static_cast<uint64_t>(lo)), lo, count);

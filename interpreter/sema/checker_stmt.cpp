@@ -147,7 +147,6 @@ exec::Block* Checker::checkBlock(const ast::StmtList& list) {
             block->stmts.push_back(st);
         }
     }
-    block->plan();
     return block;
 }
 
