@@ -202,6 +202,10 @@ uint8_t* indexFault(Ctx& c, const Site& site, int64_t value, int64_t lo, int64_t
 
 // a[i] on an array variable at a known place (instance, frame or absolute):
 // the element address and its load in one node, the hot path of array code.
+// The subscript is read inside the node when it is a DINT or INT variable of
+// the instance or frame, plus a constant (a[i], a[j + 1]): computed in DINT
+// with wrap-around, exactly as the index expression would be (decision 0151).
+enum class IndexFrom : uint8_t { Node, Self32, Frame32, Self16, Frame16 };
 struct Index1Fields {
     uint32_t off = 0;
     uint8_t* abs = nullptr;
@@ -209,11 +213,23 @@ struct Index1Fields {
     int64_t lo = 0, count = 0;
     uint64_t stride = 0;
     Site site;
+    uint32_t indexOff = 0;  // IndexFrom other than Node: the index variable
+    int32_t indexAdd = 0;   // and the constant added to it
 };
-template <class T, BaseKind B>
+template <IndexFrom IX>
+inline int64_t readIndex(Ctx& c, const Index1Fields& f) {
+    if constexpr (IX == IndexFrom::Node) return f.index->i(c);
+    else {
+        constexpr bool self = IX == IndexFrom::Self32 || IX == IndexFrom::Self16;
+        const uint8_t* p = (self ? c.self : c.frame) + f.indexOff;
+        int32_t v = (IX == IndexFrom::Self32 || IX == IndexFrom::Frame32) ? loadAs<int32_t>(p) : loadAs<int16_t>(p);
+        return static_cast<int32_t>(static_cast<uint32_t>(v) + static_cast<uint32_t>(f.indexAdd));
+    }
+}
+template <class T, BaseKind B, IndexFrom IX = IndexFrom::Node>
 struct Index1Var final : Expr, Index1Fields {
     uint8_t* addr(Ctx& c) override {
-        int64_t k = static_cast<int64_t>(static_cast<uint64_t>(index->i(c)) - static_cast<uint64_t>(lo));
+        int64_t k = static_cast<int64_t>(static_cast<uint64_t>(readIndex<IX>(c, *this)) - static_cast<uint64_t>(lo));
         if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return indexFault(c, site, static_cast<int64_t>(static_cast<uint64_t>(k) + static_cast<uint64_t>(lo)), lo, count);
         uint8_t* base = B == BaseKind::Abs ? abs : baseOf<B>(c, nullptr) + off;
         return base + static_cast<uint64_t>(k) * stride;

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/fuse.h"
 #include "interpreter/sema/node_factory.h"
 #include "stdlib/literals.h"
 #include "stdlib/time_literals.h"
@@ -773,6 +774,9 @@ Checked Checker::checkIndex(const ast::Expr& e) {
         f->count = dims[0].count;
         f->stride = dims[0].stride;
         f->site = site(e.loc);
+        const exec::BaseKind kind = base.direct == Checked::Direct::Self ? exec::BaseKind::Self
+                                    : base.direct == Checked::Direct::Frame ? exec::BaseKind::Frame : exec::BaseKind::Abs;
+        if (exec::Expr* fused = fuseIndex1(pool(), rep, kind, *f)) n = fused;
         c.node = n;
     } else if (dims.size() == 1) {
         auto* n = pool().make<exec::Index1Place>();
@@ -932,7 +936,8 @@ Checked Checker::convert(Checked e, const Type* target, const ast::Loc& loc, boo
             return bad(loc);
         }
         IntInfo ii = intInfo(t);
-        n = pool().make<exec::ConvRealInt>(e.node, ii.bits, ii.isSigned, truncate);
+        n = fuseRealToInt(pool(), e.node, ii.bits, ii.isSigned, truncate);
+        if (!n) n = pool().make<exec::ConvRealInt>(e.node, ii.bits, ii.isSigned, truncate);
     } else if (fTimeDate && tTimeDate) {
         if ((f == TK::Dt || f == TK::LDt) && (t == TK::Tod || t == TK::LTod)) {
             // The time of day in the source's unit, then rescaled (LDT ns -> TOD ms divides).

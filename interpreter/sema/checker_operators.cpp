@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/fuse.h"
 #include "interpreter/sema/node_factory.h"
 
 namespace strun::sema {
@@ -17,6 +18,17 @@ exec::Expr* intOp(exec::NodePool& pool, Rep rep, exec::Expr* a, exec::Expr* b) {
     return makeIntByRep<N>(pool, rep, a, b);
 }
 
+constexpr exec::BinOp binOpOf(CmpOp op) {
+    switch (op) {
+        case CmpOp::Eq: return exec::BinOp::Eq;
+        case CmpOp::Ne: return exec::BinOp::Ne;
+        case CmpOp::Lt: return exec::BinOp::Lt;
+        case CmpOp::Le: return exec::BinOp::Le;
+        case CmpOp::Gt: return exec::BinOp::Gt;
+        default: return exec::BinOp::Ge;
+    }
+}
+
 template <CmpOp OP>
 struct CmpIntBind {
     template <class T>
@@ -27,12 +39,15 @@ struct CmpIntBind {
 
 template <CmpOp OP>
 exec::Expr* cmpConstNode(exec::NodePool& pool, Rep rep, exec::Expr* a, int64_t k) {
+    if (exec::Expr* n = fuseBinary(pool, binOpOf(OP), rep, a, nullptr, k)) return n;
     return makeIntByRep<CmpIntBind<OP>::template IK>(pool, rep, a, k);
 }
 
 template <CmpOp OP>
 exec::Expr* cmpNode(exec::NodePool& pool, const Type* t, exec::Expr* a, exec::Expr* b) {
     Rep rep = repOf(t);
+    if (!isStringType(t->kind))
+        if (exec::Expr* n = fuseBinary(pool, binOpOf(OP), (rep == Rep::F32 || rep == Rep::F64) ? rep : arithmeticRep(rep), a, b)) return n;
     if (rep == Rep::F32) return pool.make<exec::CmpF<float, OP>>(a, b);
     if (rep == Rep::F64) return pool.make<exec::CmpF<double, OP>>(a, b);
     if (t->kind == TK::String) return pool.make<exec::CmpStr<char, OP>>(a, b);
@@ -308,6 +323,14 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
         bool safeDivisor = k != 0 && !(k == -1 && isSignedInt(integerView(t->kind)));
         exec::Expr* n = nullptr;
         switch (op) {
+            case ast::Op::Add: n = fuseBinary(pool(), exec::BinOp::Add, rep, x.node, nullptr, k); break;
+            case ast::Op::Sub: n = fuseBinary(pool(), exec::BinOp::Sub, rep, x.node, nullptr, k); break;
+            case ast::Op::Mul: n = fuseBinary(pool(), exec::BinOp::Mul, rep, x.node, nullptr, k); break;
+            case ast::Op::Div: if (safeDivisor) n = fuseBinary(pool(), exec::BinOp::Div, rep, x.node, nullptr, k); break;
+            case ast::Op::Mod: if (safeDivisor) n = fuseBinary(pool(), exec::BinOp::Mod, rep, x.node, nullptr, k); break;
+            default: break;
+        }
+        if (!n) switch (op) {
             case ast::Op::Add: n = makeIntByRep<exec::AddIK>(pool(), rep, x.node, k); break;
             case ast::Op::Sub: n = makeIntByRep<exec::SubIK>(pool(), rep, x.node, k); break;
             case ast::Op::Mul: n = makeIntByRep<exec::MulIK>(pool(), rep, x.node, k); break;
@@ -334,11 +357,21 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
                 default: return left ? static_cast<exec::Expr*>(pool().make<exec::RealK<T, exec::RealOp::Div, true>>(v, k)) : pool().make<exec::RealK<T, exec::RealOp::Div, false>>(v, k);
             }
         };
-        r.node = rep == Rep::F32 ? make(float{}) : make(double{});
+        static constexpr exec::BinOp kBin[] = {exec::BinOp::Add, exec::BinOp::Sub, exec::BinOp::Mul, exec::BinOp::Div};
+        const int which = op == ast::Op::Add ? 0 : op == ast::Op::Sub ? 1 : op == ast::Op::Mul ? 2 : 3;
+        r.node = left ? nullptr : fuseBinary(pool(), kBin[which], rep, v, nullptr, 0, k);
+        if (!r.node) r.node = rep == Rep::F32 ? make(float{}) : make(double{});
         r.node->type = t;
         return r;
     }
     switch (op) {
+        case ast::Op::Add: r.node = fuseBinary(pool(), exec::BinOp::Add, rep, x.node, y.node); break;
+        case ast::Op::Sub: r.node = fuseBinary(pool(), exec::BinOp::Sub, rep, x.node, y.node); break;
+        case ast::Op::Mul: r.node = fuseBinary(pool(), exec::BinOp::Mul, rep, x.node, y.node); break;
+        case ast::Op::Div: if (real) r.node = fuseBinary(pool(), exec::BinOp::Div, rep, x.node, y.node); break;
+        default: r.node = nullptr; break;
+    }
+    if (!r.node) switch (op) {
         case ast::Op::Add: r.node = real ? makeRealByRep<exec::AddF>(pool(), rep, x.node, y.node) : intOp<exec::AddI>(pool(), rep, x.node, y.node); break;
         case ast::Op::Sub: r.node = real ? makeRealByRep<exec::SubF>(pool(), rep, x.node, y.node) : intOp<exec::SubI>(pool(), rep, x.node, y.node); break;
         case ast::Op::Mul: r.node = real ? makeRealByRep<exec::MulF>(pool(), rep, x.node, y.node) : intOp<exec::MulI>(pool(), rep, x.node, y.node); break;

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/fuse.h"
 #include "interpreter/sema/node_factory.h"
 
 namespace strun::sema {
@@ -66,6 +67,8 @@ exec::Stmt* Checker::storeTo(exec::Expr* place, const Type* t, exec::Expr* value
     if (t->kind == TK::String) return pool().make<exec::AssignString<char>>(place, value, t->maxLen);
     if (t->kind == TK::WString) return pool().make<exec::AssignString<char16_t>>(place, value, t->maxLen);
     if (isAggregate(t)) return pool().make<exec::AssignBytes>(place, value, t->size);
+    if (exec::Stmt* n = fuseStorePending(pool(), repOf(t), place, value)) return n;  // call arguments, FB inputs
+    if (exec::Stmt* n = fuseAssignConst(pool(), repOf(t), value, place, exec::BaseKind::Self, 0)) return n;
     switch (repOf(t)) {
         case Rep::I8: return pool().make<exec::Assign<int8_t>>(place, value);
         case Rep::I16: return pool().make<exec::Assign<int16_t>>(place, value);
@@ -103,6 +106,12 @@ exec::Stmt* Checker::assignChecked(Checked target, Checked value, const ast::Loc
     Checked v = coerce(value, t, value.loc, "assignment");
     if (!v.ok) return nullptr;
     if (target.var && pou_ && target.var == pou_->result) assignedResult_ = true;
+    if ((target.direct == Checked::Direct::Self || target.direct == Checked::Direct::Frame) && !isAggregate(t) && target.node->bitIndex() < 0) {
+        // Fused forms (decision 0151): x := x + k, x := constant.
+        const bool frame = target.direct == Checked::Direct::Frame;
+        if (exec::Stmt* n = fuseAddConstLocal(pool(), repOf(t), frame, target.directOffset, v.node)) return n;
+        if (exec::Stmt* n = fuseAssignConst(pool(), repOf(t), v.node, nullptr, frame ? exec::BaseKind::Frame : exec::BaseKind::Self, target.directOffset)) return n;
+    }
     if (target.direct == Checked::Direct::Self && !isAggregate(t))
         return assignLocal<false>(pool(), repOf(t), target.directOffset, v.node);
     if (target.direct == Checked::Direct::Frame && !isAggregate(t))
@@ -405,6 +414,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                 n->blocks.push_back(b);
             }
             if (s.elseBlock) n->elseBlock = checkBlock(*s.elseBlock);
+            if (n->conds.size() == 1) return pool().make<exec::If1Stmt>(n->conds[0], n->blocks[0], n->elseBlock);
             return n;
         }
         case ast::StmtKind::Case: return checkCase(s);

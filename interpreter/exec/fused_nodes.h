@@ -1,0 +1,185 @@
+// Fused nodes: the patterns that dominate PLC code, executed with fewer
+// virtual dispatches. A tree interpreter's time follows its node dispatches,
+// not its instructions (decision 0151), so an operand that is a local
+// variable or a constant is read inside its operator instead of through a
+// child node. Every fused node computes exactly what the unfused nodes it
+// replaces compute (same widths, same wrap-around, same fault rules); the
+// checker only builds one where that holds (interpreter/sema/fuse.cpp).
+#pragma once
+
+#include "interpreter/exec/stmt_nodes.h"
+
+namespace strun::exec {
+
+// ---- operands read inside a fused node, as the computation type T
+
+// Any expression: one virtual call, as the unfused node does.
+template <class T>
+struct OpNode {
+    Expr* e;
+    T get(Ctx& c) const {
+        if constexpr (std::is_floating_point_v<T>) return static_cast<T>(e->f(c));
+        else return static_cast<T>(e->i(c));
+    }
+};
+// A variable of storage type T in the current instance (B = Self) or frame (B = Frame).
+template <class T, BaseKind B>
+struct OpVar {
+    uint32_t off;
+    T get(Ctx& c) const { return loadAs<T>(baseOf<B>(c, nullptr) + off); }
+};
+template <class T>
+struct OpConst {
+    T k;
+    T get(Ctx&) const { return k; }
+};
+
+// ---- binary operators over fused operands
+
+enum class BinOp : uint8_t { Add, Sub, Mul, Div, Mod, And, Or, Xor, Eq, Ne, Lt, Le, Gt, Ge };
+
+constexpr bool isCompare(BinOp op) { return op >= BinOp::Eq; }
+
+// The result of `a OP b` computed as the unfused nodes do: integers in the
+// unsigned type of the same width (wrap-around), reals in T; comparisons 0/1.
+// Integer Div and Mod are only fused with a constant divisor that is neither 0 nor -1.
+template <class T, BinOp OP>
+inline auto applyBin(T a, T b) {
+    if constexpr (OP == BinOp::Eq) return static_cast<int64_t>(a == b);
+    else if constexpr (OP == BinOp::Ne) return static_cast<int64_t>(a != b);
+    else if constexpr (OP == BinOp::Lt) return static_cast<int64_t>(a < b);
+    else if constexpr (OP == BinOp::Le) return static_cast<int64_t>(a <= b);
+    else if constexpr (OP == BinOp::Gt) return static_cast<int64_t>(a > b);
+    else if constexpr (OP == BinOp::Ge) return static_cast<int64_t>(a >= b);
+    else if constexpr (std::is_floating_point_v<T>) {
+        T r;
+        if constexpr (OP == BinOp::Add) r = a + b;
+        else if constexpr (OP == BinOp::Sub) r = a - b;
+        else if constexpr (OP == BinOp::Mul) r = a * b;
+        else r = a / b;
+        return static_cast<double>(r);
+    } else {
+        T r;
+        if constexpr (OP == BinOp::Add) r = static_cast<T>(static_cast<U<T>>(static_cast<U<T>>(a) + static_cast<U<T>>(b)));
+        else if constexpr (OP == BinOp::Sub) r = static_cast<T>(static_cast<U<T>>(static_cast<U<T>>(a) - static_cast<U<T>>(b)));
+        else if constexpr (OP == BinOp::Mul) r = static_cast<T>(static_cast<U<T>>(static_cast<W<T>>(a) * static_cast<W<T>>(b)));
+        else if constexpr (OP == BinOp::Div) r = static_cast<T>(a / b);
+        else if constexpr (OP == BinOp::Mod) r = static_cast<T>(a % b);
+        else if constexpr (OP == BinOp::And) r = static_cast<T>(a & b);
+        else if constexpr (OP == BinOp::Or) r = static_cast<T>(a | b);
+        else r = static_cast<T>(a ^ b);
+        return wrapI(r);
+    }
+}
+
+template <class T, BinOp OP, class L, class R>
+struct FusedBin final : Expr {
+    L l;
+    R r;
+    FusedBin(L a, R b) : l(a), r(b) {}
+    int64_t i(Ctx& c) override {
+        if constexpr (isCompare(OP) || !std::is_floating_point_v<T>) return applyBin<T, OP>(l.get(c), r.get(c));
+        else return 0;
+    }
+    double f(Ctx& c) override {
+        if constexpr (std::is_floating_point_v<T> && !isCompare(OP)) return applyBin<T, OP>(l.get(c), r.get(c));
+        else return 0;
+    }
+};
+
+// ---- statements
+
+// x := x + k (k may be negative: x - k) on a variable of the instance or
+// frame. Adding in the storage width wraps exactly as computing in DINT and
+// storing would: addition commutes with truncation modulo 2^n.
+template <class T, BaseKind B>
+struct AddConstLocal final : Stmt {
+    uint32_t off;
+    U<T> k;
+    AddConstLocal(uint32_t o, int64_t add) : off(o), k(static_cast<U<T>>(add)) {}
+    Flow exec(Ctx& c) override {
+        uint8_t* p = baseOf<B>(c, nullptr) + off;
+        storeAs<T>(p, static_cast<T>(static_cast<U<T>>(static_cast<U<T>>(loadAs<T>(p)) + k)));
+        return Flow::Next;
+    }
+};
+
+// place := constant (flags, counters reset, `a[j] := TRUE`): the stored
+// pattern is computed once by the checker, as Assign<T> would convert it.
+template <class T>
+struct AssignConst final : Stmt {
+    Expr* place;
+    T k;
+    AssignConst(Expr* p, T v) : place(p), k(v) {}
+    Flow exec(Ctx& c) override {
+        storeAs<T>(place->addr(c), k);
+        return Flow::Next;
+    }
+};
+template <class T, BaseKind B>
+struct AssignConstLocal final : Stmt {
+    uint32_t off;
+    T k;
+    AssignConstLocal(uint32_t o, T v) : off(o), k(v) {}
+    Flow exec(Ctx& c) override {
+        storeAs<T>(baseOf<B>(c, nullptr) + off, k);
+        return Flow::Next;
+    }
+};
+
+// An argument bound into the frame of the call being set up (Ctx::pending):
+// a direct typed store, as AssignLocal does for the instance and frame.
+template <class T>
+struct AssignPending final : Stmt {
+    uint32_t off;
+    Expr* value;
+    AssignPending(uint32_t o, Expr* v) : off(o), value(v) {}
+    Flow exec(Ctx& c) override {
+        uint8_t* p = c.pending + off;
+        if constexpr (std::is_floating_point_v<T>) storeAs<T>(p, static_cast<T>(value->f(c)));
+        else if constexpr (std::is_same_v<T, bool>) storeAs<uint8_t>(p, value->i(c) != 0);
+        else storeAs<T>(p, static_cast<T>(value->i(c)));
+        return Flow::Next;
+    }
+};
+
+// IF c THEN ... [ELSE ...] END_IF: no vector walk for the one-condition form.
+struct If1Stmt final : Stmt {
+    Expr* cond;
+    Block* then;
+    Block* otherwise;  // may be null
+    If1Stmt(Expr* k, Block* t, Block* e) : cond(k), then(t), otherwise(e) {}
+    Flow exec(Ctx& c) override {
+        if (cond->i(c)) return then->exec(c);
+        return otherwise ? otherwise->exec(c) : Flow::Next;
+    }
+};
+
+// ---- REAL/LREAL -> integer T: the IEC rounding (half to even) or truncation
+// inline for every value below 2^52 in magnitude, where adding and removing
+// 2^52 rounds exactly to the nearest even integer in the default rounding
+// mode; anything else (huge, infinite, NaN) takes the generic routine.
+template <class T, bool TRUNCATE>
+struct ConvRealIntT final : Expr {
+    Expr* a;
+    int bits;
+    bool isSigned;
+    ConvRealIntT(Expr* x, int b, bool s) : a(x), bits(b), isSigned(s) {}
+    int64_t i(Ctx& c) override {
+        double v = a->f(c);
+        constexpr double kTwoPow52 = 4503599627370496.0;
+        if (__builtin_expect(v > -kTwoPow52 && v < kTwoPow52, 1)) {
+            double whole;
+            if constexpr (TRUNCATE) whole = v;  // the cast below truncates toward zero
+            else {
+                // Without -ffast-math the compiler keeps (v + 2^52) - 2^52 as written.
+                double shifted = v >= 0 ? v + kTwoPow52 : v - kTwoPow52;
+                whole = v >= 0 ? shifted - kTwoPow52 : shifted + kTwoPow52;
+            }
+            return wrapI(static_cast<T>(static_cast<int64_t>(whole)));
+        }
+        return TRUNCATE ? realToIntTruncated(v, bits, isSigned) : realToIntRounded(v, bits, isSigned);
+    }
+};
+
+}  // namespace strun::exec

@@ -1,0 +1,326 @@
+// Recognises the operands a fused node can read itself (decision 0151).
+#include "interpreter/sema/fuse.h"
+
+#include <optional>
+
+namespace strun::sema {
+
+using exec::BaseKind;
+using exec::BinOp;
+
+namespace {
+
+enum class LeafKind : uint8_t { None, Self, Frame, Const };
+
+template <class T>
+struct Leaf {
+    LeafKind kind = LeafKind::None;
+    uint32_t off = 0;
+    T k{};
+};
+
+// A variable node of storage type exactly T in the instance or frame: the
+// fused node loads it as the variable node would.
+template <class T>
+Leaf<T> leafOf(exec::Expr* e) {
+    if (!e) return {};
+    if (auto* v = dynamic_cast<exec::VarNode<T, BaseKind::Self>*>(e)) return {LeafKind::Self, v->off, T{}};
+    if (auto* v = dynamic_cast<exec::VarNode<T, BaseKind::Frame>*>(e)) return {LeafKind::Frame, v->off, T{}};
+    return {};
+}
+
+template <class T, BinOp OP, class L, class R>
+exec::Expr* make(exec::NodePool& pool, L l, R r) {
+    return pool.make<exec::FusedBin<T, OP, L, R>>(l, r);
+}
+
+// The right operand of every shape, for a left operand that is a leaf.
+template <class T, BinOp OP, class L>
+exec::Expr* withRight(exec::NodePool& pool, L l, const Leaf<T>& rb, exec::Expr* b) {
+    switch (rb.kind) {
+        case LeafKind::Self: return make<T, OP>(pool, l, exec::OpVar<T, BaseKind::Self>{rb.off});
+        case LeafKind::Frame: return make<T, OP>(pool, l, exec::OpVar<T, BaseKind::Frame>{rb.off});
+        case LeafKind::Const: return make<T, OP>(pool, l, exec::OpConst<T>{rb.k});
+        default: return make<T, OP>(pool, l, exec::OpNode<T>{b});
+    }
+}
+
+template <class T, BinOp OP>
+exec::Expr* fuseTyped(exec::NodePool& pool, exec::Expr* a, exec::Expr* b, T k) {
+    Leaf<T> la = leafOf<T>(a);
+    Leaf<T> rb = b ? leafOf<T>(b) : Leaf<T>{LeafKind::Const, 0, k};
+    constexpr bool divides = OP == BinOp::Div || OP == BinOp::Mod;
+    if (divides && !std::is_floating_point_v<T> && rb.kind != LeafKind::Const) return nullptr;
+    switch (la.kind) {
+        case LeafKind::Self: return withRight<T, OP>(pool, exec::OpVar<T, BaseKind::Self>{la.off}, rb, b);
+        case LeafKind::Frame: return withRight<T, OP>(pool, exec::OpVar<T, BaseKind::Frame>{la.off}, rb, b);
+        default: break;
+    }
+    // k OP x with a commutative OP (3 * x, 0 = x): x OP k, the constant inline.
+    constexpr bool commutes = OP == BinOp::Add || OP == BinOp::Mul || OP == BinOp::And || OP == BinOp::Or || OP == BinOp::Xor ||
+                              OP == BinOp::Eq || OP == BinOp::Ne;
+    if constexpr (commutes) {
+        if (rb.kind == LeafKind::Self || rb.kind == LeafKind::Frame) {
+            exec::Ctx none;  // constants read nothing from the context
+            std::optional<T> ka;
+            if (auto* ci = dynamic_cast<exec::ConstInt*>(a)) ka = std::is_floating_point_v<T> ? static_cast<T>(ci->f(none)) : static_cast<T>(ci->i(none));
+            else if (auto* cr = dynamic_cast<exec::ConstReal*>(a); cr && std::is_floating_point_v<T>) ka = static_cast<T>(cr->f(none));
+            if (ka) {
+                exec::OpConst<T> kk{*ka};
+                if (rb.kind == LeafKind::Self) return make<T, OP>(pool, exec::OpVar<T, BaseKind::Self>{rb.off}, kk);
+                return make<T, OP>(pool, exec::OpVar<T, BaseKind::Frame>{rb.off}, kk);
+            }
+        }
+    }
+    // A general left operand: worth fusing only when the right one is a variable
+    // (node op constant already has its own nodes).
+    exec::OpNode<T> l{a};
+    switch (rb.kind) {
+        case LeafKind::Self: return make<T, OP>(pool, l, exec::OpVar<T, BaseKind::Self>{rb.off});
+        case LeafKind::Frame: return make<T, OP>(pool, l, exec::OpVar<T, BaseKind::Frame>{rb.off});
+        default: return nullptr;
+    }
+}
+
+template <class T>
+exec::Expr* fuseOp(exec::NodePool& pool, BinOp op, exec::Expr* a, exec::Expr* b, T k) {
+    switch (op) {
+        case BinOp::Add: return fuseTyped<T, BinOp::Add>(pool, a, b, k);
+        case BinOp::Sub: return fuseTyped<T, BinOp::Sub>(pool, a, b, k);
+        case BinOp::Mul: return fuseTyped<T, BinOp::Mul>(pool, a, b, k);
+        case BinOp::Div: return fuseTyped<T, BinOp::Div>(pool, a, b, k);
+        case BinOp::Eq: return fuseTyped<T, BinOp::Eq>(pool, a, b, k);
+        case BinOp::Ne: return fuseTyped<T, BinOp::Ne>(pool, a, b, k);
+        case BinOp::Lt: return fuseTyped<T, BinOp::Lt>(pool, a, b, k);
+        case BinOp::Le: return fuseTyped<T, BinOp::Le>(pool, a, b, k);
+        case BinOp::Gt: return fuseTyped<T, BinOp::Gt>(pool, a, b, k);
+        case BinOp::Ge: return fuseTyped<T, BinOp::Ge>(pool, a, b, k);
+        default: break;
+    }
+    if constexpr (!std::is_floating_point_v<T>) {
+        switch (op) {
+            case BinOp::Mod: return fuseTyped<T, BinOp::Mod>(pool, a, b, k);
+            case BinOp::And: return fuseTyped<T, BinOp::And>(pool, a, b, k);
+            case BinOp::Or: return fuseTyped<T, BinOp::Or>(pool, a, b, k);
+            case BinOp::Xor: return fuseTyped<T, BinOp::Xor>(pool, a, b, k);
+            default: break;
+        }
+    }
+    return nullptr;
+}
+
+template <class T, BaseKind B>
+exec::Stmt* addConst(exec::NodePool& pool, uint32_t off, exec::Expr* value) {
+    // The value as the checker builds it: x + k (AddIK / SubIK over the
+    // variable node, in the computation type of T) or, for DINT/LINT
+    // variables, the fused form of the same.
+    using C = std::conditional_t<(sizeof(T) < 4), int32_t, T>;  // arithmeticRep
+    using V = exec::VarNode<T, B>;
+    auto same = [&](exec::Expr* e) {
+        auto* v = dynamic_cast<V*>(e);
+        return v && v->off == off;
+    };
+    if (auto* n = dynamic_cast<exec::AddIK<C>*>(value); n && same(n->l)) return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(n->b));
+    if (auto* n = dynamic_cast<exec::SubIK<C>*>(value); n && same(n->l))
+        return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(0 - static_cast<uint64_t>(static_cast<int64_t>(n->b))));
+    if constexpr (std::is_same_v<C, T>) {
+        using OV = exec::OpVar<T, B>;
+        using K = exec::OpConst<T>;
+        if (auto* n = dynamic_cast<exec::FusedBin<T, BinOp::Add, OV, K>*>(value); n && n->l.off == off)
+            return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(n->r.k));
+        if (auto* n = dynamic_cast<exec::FusedBin<T, BinOp::Sub, OV, K>*>(value); n && n->l.off == off)
+            return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(0 - static_cast<uint64_t>(static_cast<int64_t>(n->r.k))));
+    }
+    return nullptr;
+}
+
+template <BaseKind B>
+exec::Stmt* addConstByRep(exec::NodePool& pool, Rep rep, uint32_t off, exec::Expr* value) {
+    switch (rep) {
+        case Rep::I8: return addConst<int8_t, B>(pool, off, value);
+        case Rep::I16: return addConst<int16_t, B>(pool, off, value);
+        case Rep::I32: return addConst<int32_t, B>(pool, off, value);
+        case Rep::I64: return addConst<int64_t, B>(pool, off, value);
+        default: return nullptr;  // unsigned: rare as counters, left to the general nodes
+    }
+}
+
+template <class T>
+exec::Expr* realToInt(exec::NodePool& pool, exec::Expr* value, int bits, bool isSigned, bool truncate) {
+    if (truncate) return pool.make<exec::ConvRealIntT<T, true>>(value, bits, isSigned);
+    return pool.make<exec::ConvRealIntT<T, false>>(value, bits, isSigned);
+}
+
+// The index variable (and added constant) of a subscript expression.
+struct IndexLeaf {
+    exec::IndexFrom from = exec::IndexFrom::Node;
+    uint32_t off = 0;
+    int32_t add = 0;
+};
+
+template <class S, exec::IndexFrom SELF, exec::IndexFrom FRAME>
+bool indexVar(exec::Expr* e, IndexLeaf& out) {
+    if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Self>*>(e)) { out.from = SELF; out.off = v->off; return true; }
+    if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Frame>*>(e)) { out.from = FRAME; out.off = v->off; return true; }
+    return false;
+}
+
+bool anyIndexVar(exec::Expr* e, IndexLeaf& out) {
+    return indexVar<int32_t, exec::IndexFrom::Self32, exec::IndexFrom::Frame32>(e, out) ||
+           indexVar<int16_t, exec::IndexFrom::Self16, exec::IndexFrom::Frame16>(e, out);
+}
+
+IndexLeaf indexLeafOf(exec::Expr* e) {
+    IndexLeaf leaf;
+    if (anyIndexVar(e, leaf)) return leaf;
+    // v + k, v - k in DINT (INT variables are promoted to DINT).
+    using K = exec::OpConst<int32_t>;
+    auto fusedAdd = [&](auto* n, bool negate) {
+        leaf.from = std::is_same_v<std::remove_pointer_t<decltype(n)>, exec::FusedBin<int32_t, BinOp::Add, exec::OpVar<int32_t, BaseKind::Self>, K>> ||
+                            std::is_same_v<std::remove_pointer_t<decltype(n)>, exec::FusedBin<int32_t, BinOp::Sub, exec::OpVar<int32_t, BaseKind::Self>, K>>
+                        ? exec::IndexFrom::Self32
+                        : exec::IndexFrom::Frame32;
+        leaf.off = n->l.off;
+        leaf.add = static_cast<int32_t>(negate ? 0u - static_cast<uint32_t>(n->r.k) : static_cast<uint32_t>(n->r.k));
+    };
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, exec::OpVar<int32_t, BaseKind::Self>, K>*>(e)) { fusedAdd(n, false); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, exec::OpVar<int32_t, BaseKind::Self>, K>*>(e)) { fusedAdd(n, true); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, exec::OpVar<int32_t, BaseKind::Frame>, K>*>(e)) { fusedAdd(n, false); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, exec::OpVar<int32_t, BaseKind::Frame>, K>*>(e)) { fusedAdd(n, true); return leaf; }
+    IndexLeaf inner;
+    if (auto* n = dynamic_cast<exec::AddIK<int32_t>*>(e); n && anyIndexVar(n->l, inner)) {
+        inner.add = n->b;
+        return inner;
+    }
+    if (auto* n = dynamic_cast<exec::SubIK<int32_t>*>(e); n && anyIndexVar(n->l, inner)) {
+        inner.add = static_cast<int32_t>(0u - static_cast<uint32_t>(n->b));
+        return inner;
+    }
+    return {};
+}
+
+template <BaseKind B, exec::IndexFrom IX>
+struct IndexBind {
+    template <class T>
+    using N = exec::Index1Var<T, B, IX>;
+};
+
+template <BaseKind B>
+exec::Expr* index1From(exec::NodePool& pool, Rep rep, exec::IndexFrom from) {
+    switch (from) {
+        case exec::IndexFrom::Self32: return makeByRep<IndexBind<B, exec::IndexFrom::Self32>::template N>(pool, rep);
+        case exec::IndexFrom::Frame32: return makeByRep<IndexBind<B, exec::IndexFrom::Frame32>::template N>(pool, rep);
+        case exec::IndexFrom::Self16: return makeByRep<IndexBind<B, exec::IndexFrom::Self16>::template N>(pool, rep);
+        case exec::IndexFrom::Frame16: return makeByRep<IndexBind<B, exec::IndexFrom::Frame16>::template N>(pool, rep);
+        default: return nullptr;
+    }
+}
+
+template <class T>
+exec::Stmt* assignConstTyped(exec::NodePool& pool, T k, exec::Expr* place, BaseKind base, uint32_t off) {
+    if (place) return pool.make<exec::AssignConst<T>>(place, k);
+    switch (base) {
+        case BaseKind::Frame: return pool.make<exec::AssignConstLocal<T, BaseKind::Frame>>(off, k);
+        case BaseKind::Pending: return pool.make<exec::AssignConstLocal<T, BaseKind::Pending>>(off, k);
+        default: return pool.make<exec::AssignConstLocal<T, BaseKind::Self>>(off, k);
+    }
+}
+
+}  // namespace
+
+exec::Stmt* fuseAssignConst(exec::NodePool& pool, Rep rep, exec::Expr* value, exec::Expr* place, BaseKind base, uint32_t off) {
+    if (!dynamic_cast<exec::ConstInt*>(value) && !dynamic_cast<exec::ConstReal*>(value)) return nullptr;
+    exec::Ctx none;  // constants read nothing from the context
+    switch (rep) {
+        case Rep::I8: return assignConstTyped<int8_t>(pool, static_cast<int8_t>(value->i(none)), place, base, off);
+        case Rep::I16: return assignConstTyped<int16_t>(pool, static_cast<int16_t>(value->i(none)), place, base, off);
+        case Rep::I32: return assignConstTyped<int32_t>(pool, static_cast<int32_t>(value->i(none)), place, base, off);
+        case Rep::I64: return assignConstTyped<int64_t>(pool, value->i(none), place, base, off);
+        case Rep::U8: return assignConstTyped<uint8_t>(pool, static_cast<uint8_t>(value->i(none)), place, base, off);
+        case Rep::Bool: return assignConstTyped<uint8_t>(pool, static_cast<uint8_t>(value->i(none) != 0), place, base, off);
+        case Rep::U16: return assignConstTyped<uint16_t>(pool, static_cast<uint16_t>(value->i(none)), place, base, off);
+        case Rep::U32: return assignConstTyped<uint32_t>(pool, static_cast<uint32_t>(value->i(none)), place, base, off);
+        case Rep::U64: return assignConstTyped<uint64_t>(pool, static_cast<uint64_t>(value->i(none)), place, base, off);
+        case Rep::F32: return assignConstTyped<float>(pool, static_cast<float>(value->f(none)), place, base, off);
+        case Rep::F64: return assignConstTyped<double>(pool, value->f(none), place, base, off);
+        default: return nullptr;
+    }
+}
+
+namespace {
+template <class T, class S = T>
+exec::Stmt* storePending(exec::NodePool& pool, Rep rep, exec::Expr* place, exec::Expr* value) {
+    BaseKind base;
+    uint32_t off;
+    if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Pending>*>(place)) base = BaseKind::Pending, off = v->off;
+    else if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Self>*>(place)) base = BaseKind::Self, off = v->off;
+    else if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Frame>*>(place)) base = BaseKind::Frame, off = v->off;
+    else return nullptr;
+    if (exec::Stmt* k = fuseAssignConst(pool, rep, value, nullptr, base, off)) return k;
+    switch (base) {
+        case BaseKind::Pending: return pool.make<exec::AssignPending<T>>(off, value);
+        case BaseKind::Frame: return pool.make<exec::AssignLocal<T, true>>(off, value);
+        default: return pool.make<exec::AssignLocal<T, false>>(off, value);
+    }
+}
+}  // namespace
+
+exec::Stmt* fuseStorePending(exec::NodePool& pool, Rep rep, exec::Expr* place, exec::Expr* value) {
+    switch (rep) {
+        case Rep::I8: return storePending<int8_t>(pool, rep, place, value);
+        case Rep::I16: return storePending<int16_t>(pool, rep, place, value);
+        case Rep::I32: return storePending<int32_t>(pool, rep, place, value);
+        case Rep::I64: return storePending<int64_t>(pool, rep, place, value);
+        case Rep::U8: return storePending<uint8_t>(pool, rep, place, value);
+        case Rep::Bool: return storePending<bool, uint8_t>(pool, rep, place, value);
+        case Rep::U16: return storePending<uint16_t>(pool, rep, place, value);
+        case Rep::U32: return storePending<uint32_t>(pool, rep, place, value);
+        case Rep::U64: return storePending<uint64_t>(pool, rep, place, value);
+        case Rep::F32: return storePending<float>(pool, rep, place, value);
+        case Rep::F64: return storePending<double>(pool, rep, place, value);
+        default: return nullptr;
+    }
+}
+
+exec::Expr* fuseIndex1(exec::NodePool& pool, Rep rep, BaseKind base, const exec::Index1Fields& fields) {
+    IndexLeaf leaf = indexLeafOf(fields.index);
+    if (leaf.from == exec::IndexFrom::Node) return nullptr;
+    exec::Expr* n = nullptr;
+    switch (base) {
+        case BaseKind::Self: n = index1From<BaseKind::Self>(pool, rep, leaf.from); break;
+        case BaseKind::Frame: n = index1From<BaseKind::Frame>(pool, rep, leaf.from); break;
+        case BaseKind::Abs: n = index1From<BaseKind::Abs>(pool, rep, leaf.from); break;
+        default: return nullptr;
+    }
+    auto* f = dynamic_cast<exec::Index1Fields*>(n);
+    *f = fields;
+    f->indexOff = leaf.off;
+    f->indexAdd = leaf.add;
+    return n;
+}
+
+exec::Expr* fuseBinary(exec::NodePool& pool, BinOp op, Rep rep, exec::Expr* a, exec::Expr* b, int64_t kInt, double kReal) {
+    switch (rep) {
+        case Rep::I32: return fuseOp<int32_t>(pool, op, a, b, static_cast<int32_t>(kInt));
+        case Rep::I64: return fuseOp<int64_t>(pool, op, a, b, kInt);
+        case Rep::F32: return fuseOp<float>(pool, op, a, b, static_cast<float>(kReal));
+        case Rep::F64: return fuseOp<double>(pool, op, a, b, kReal);
+        default: return nullptr;
+    }
+}
+
+exec::Stmt* fuseAddConstLocal(exec::NodePool& pool, Rep rep, bool frame, uint32_t off, exec::Expr* value) {
+    return frame ? addConstByRep<BaseKind::Frame>(pool, rep, off, value) : addConstByRep<BaseKind::Self>(pool, rep, off, value);
+}
+
+exec::Expr* fuseRealToInt(exec::NodePool& pool, exec::Expr* value, int bits, bool isSigned, bool truncate) {
+    switch (bits) {
+        case 8: return isSigned ? realToInt<int8_t>(pool, value, bits, isSigned, truncate) : realToInt<uint8_t>(pool, value, bits, isSigned, truncate);
+        case 16: return isSigned ? realToInt<int16_t>(pool, value, bits, isSigned, truncate) : realToInt<uint16_t>(pool, value, bits, isSigned, truncate);
+        case 32: return isSigned ? realToInt<int32_t>(pool, value, bits, isSigned, truncate) : realToInt<uint32_t>(pool, value, bits, isSigned, truncate);
+        case 64: return isSigned ? realToInt<int64_t>(pool, value, bits, isSigned, truncate) : realToInt<uint64_t>(pool, value, bits, isSigned, truncate);
+        default: return nullptr;
+    }
+}
+
+}  // namespace strun::sema
