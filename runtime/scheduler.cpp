@@ -719,6 +719,12 @@ int64_t Scheduler::calendarNanos() {
     return realtimeNanos();
 }
 
+int64_t Scheduler::taskStartCalendarNanos() {
+    PlcTime now = currentTime();
+    PlcTime start = stack_.empty() ? now : stack_.back()->releasedAt;
+    return calendarNanos() - (now - start);
+}
+
 void Scheduler::observeRunning(const TaskRun& task, bool running) {
     if (options_.observer) options_.observer->taskRunning(size_t(&task - tasks_.data()), running, machine_.now);
 }

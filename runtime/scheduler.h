@@ -94,6 +94,7 @@ public:
     void onFault(DiagCode code, std::string_view pou, int line, std::string message, int file = -1, int col = 0) override;
     PlcTime currentTime() override;
     int64_t calendarNanos() override;
+    int64_t taskStartCalendarNanos() override;
     PlcTime currentTaskInterval() override;
     bool setCurrentTaskInterval(PlcTime period) override;
 

@@ -1065,6 +1065,8 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
     }
     if (isElementary(from->kind) && isElementary(target->kind)) {
         if (iecImplicit(from, target)) return convert(e, target, loc);
+        // A literal above LINT's range (16#FFFF_FFFF_FFFF_FFFF) is a ULINT constant; it fits an LWORD as it is.
+        if (e.isConst && !e.var && from->kind == TK::ULInt && target->kind == TK::LWord) return convert(e, target, loc);
         const bool promotion = std::strcmp(what, "operand") == 0;  // operands brought to their common type
         if (promotion && bitStringMix(from, target)) return convert(e, target, loc);
         if (codesysImplicit(from, target)) {
