@@ -1145,7 +1145,10 @@ const Type* Checker::commonType(Checked& a, Checked& b, const ast::Loc& loc, boo
         return types().elementary(intKindOf(true, std::min(64, u.bits * 2)));
     }
     if (isReal(ka) || isReal(kb)) {
-        bool otherOk = (isReal(ka) || isInteger(ka)) && (isReal(kb) || isInteger(kb));
+        // A bit string meets a REAL as a number (CODESYS; `(high - low) * X` with X : BYTE):
+        // the operand's conversion then warns, or is an error with --strict.
+        auto number = [](TK k) { return isReal(k) || isInteger(k) || (isBitString(k) && k != TK::Bool); };
+        bool otherOk = number(ka) && number(kb);
         if (!otherOk) return fail();
         if (ka == TK::LReal || kb == TK::LReal) return types().elementary(TK::LReal);
         return types().elementary(TK::Real);
