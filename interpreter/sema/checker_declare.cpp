@@ -557,6 +557,7 @@ void Checker::layoutPou(PouInfo* pou) {
         if (v->storage != Storage::Frame || v->byRef) continue;
         uint8_t* p = pou->code->frameInit.data() + v->offset;
         writeDefault(p, v->type);
+        if (isAddressInit(v.get())) { pou->frameAddressInits.push_back(v.get()); continue; }
         if (v->decl && v->decl->init) writeInitial(p, v->type, v->decl->init.get(), v->decl->loc);
     }
     pou->layingOut = false;

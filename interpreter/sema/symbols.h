@@ -76,6 +76,9 @@ struct PouInfo {
     // assigned once per instance before the first cycle (checker_fb_init.cpp).
     std::vector<VarSym*> addressInits;
     exec::Stmt* addressInitCode = nullptr;
+    // FUNCTION / METHOD locals initialised with an address: assigned at the
+    // start of every call, as CODESYS does (checkBody).
+    std::vector<VarSym*> frameAddressInits;
 };
 
 // An expression after checking: its node, type, and what the checker knows
