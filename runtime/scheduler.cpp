@@ -7,6 +7,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <thread>
+#include <tuple>
 
 #include "runtime/duration_text.h"
 #include "runtime/real_clock.h"
@@ -689,6 +690,7 @@ void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::stri
 }
 
 void Scheduler::record(DiagCode code, const TaskRun* task, std::string_view pou, int line, std::string message, int file, int col) {
+    if (file >= 0 && options_.originalPosition) std::tie(line, col) = options_.originalPosition(file, line, col);
     diagnostics_.add({machine_.now, code, task ? task->spec.name : std::string(), std::string(pou), line, std::move(message), file, col});
 }
 

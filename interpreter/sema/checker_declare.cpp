@@ -601,6 +601,7 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                         error(loc, fmt::format("VAR_EXTERNAL '{}' names no global variable", name));
                         continue;
                     }
+                    if (g->second->sharedName) ambiguousGlobal(g->second, loc, name);
                     if (t && !sameType(t, g->second->type))
                         error(loc, fmt::format("VAR_EXTERNAL '{}' is declared {} but the global is {}", name, typeName(t), typeName(g->second->type)));
                     v->global = g->second;
@@ -682,7 +683,11 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     const std::string& name = decl.names[n];
     ast::Loc loc = n < decl.nameLocs.size() ? decl.nameLocs[n] : decl.loc;
     std::string key = upper(name);
-    if (globals_.count(key)) {
+    auto existing = globals_.find(key);
+    // Two named lists may both declare a name (GVL_A.x, GVL_B.x); within one
+    // list, or beside a global of no list, it is a duplicate.
+    VarSym* other = existing == globals_.end() ? nullptr : existing->second;
+    if (other && (other->listName.empty() || declaringList_.empty() || listGlobals_.count(upper(declaringList_) + "." + key))) {
         error(loc, fmt::format("duplicate global variable '{}'", name));
         return nullptr;
     }
@@ -717,7 +722,13 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     }
     if (block.constant && decl.init) foldConstant(*v, decl);
     VarSym* raw = v.get();
-    globals_[key] = raw;
+    raw->listName = declaringList_;
+    if (!declaringList_.empty()) listGlobals_[upper(declaringList_) + "." + key] = raw;
+    if (other) {
+        other->sharedName = raw->sharedName = true;  // unqualified use: an error naming both lists
+    } else {
+        globals_[key] = raw;
+    }
     model_.globals.push_back(raw);
     model_.globalStore.push_back(std::move(v));
     return raw;
@@ -750,8 +761,10 @@ void Checker::declareGlobals() {
     };
     for (auto* list : globalLists_) {
         qualifiedOnlyList_ = hasAttribute(list->pragmas, "qualified_only") ? list->nameSpace : "";
+        declaringList_ = list->nameSpace;
         declareBlocks(list->blocks);
         qualifiedOnlyList_.clear();
+        declaringList_.clear();
     }
     for (auto* conf : configurations_) {
         declareBlocks(conf->globals);

@@ -348,9 +348,25 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
     return autoDeref(c);
 }
 
+// `x` declared by several named global lists: the error names every list.
+void Checker::ambiguousGlobal(const VarSym* v, const ast::Loc& loc, const std::string& written) {
+    std::string lists;
+    for (const VarSym* g : model_.globals)
+        if (g->sharedName && upper(g->name) == upper(v->name)) lists += (lists.empty() ? "" : ", ") + g->listName + "." + g->name;
+    error(loc, fmt::format("'{}' is declared in several global lists; write one of {}", written, lists));
+}
+
 Checked Checker::checkName(const ast::Expr& e) {
     std::string key = upper(e.name);
+    if (qualifiedAccess_ && !qualifiedList_.empty()) {
+        auto it = listGlobals_.find(qualifiedList_ + "." + key);
+        if (it != listGlobals_.end() && !(pou_ && pou_->ast && libraryFiles_.count(pou_->ast->loc.file))) return varAccess(it->second, e.loc, false);
+    }
     if (VarSym* v = lookupVar(key)) {
+        if (v->section == ast::VarSection::Global && v->sharedName) {
+            ambiguousGlobal(v, e.loc, e.name);
+            return bad(e.loc);
+        }
         if (!v->qualifiedOnlyList.empty() && !qualifiedAccess_ && v->section == ast::VarSection::Global) {
             error(e.loc, fmt::format("'{}' is in global list '{}' with {{attribute 'qualified_only'}}: write {}.{}", e.name,
                                      v->qualifiedOnlyList, v->qualifiedOnlyList, e.name));
@@ -632,8 +648,10 @@ Checked Checker::checkMember(const ast::Expr& e) {
         plain.loc = e.nameLoc.line ? e.nameLoc : e.loc;
         plain.name = e.name;
         qualifiedAccess_ = true;
+        qualifiedList_ = baseExpr.kind == ast::ExprKind::Name ? upper(baseExpr.name) : "";
         Checked c = checkName(plain);
         qualifiedAccess_ = false;
+        qualifiedList_.clear();
         return c;
     }
     if (baseExpr.kind == ast::ExprKind::Name) {

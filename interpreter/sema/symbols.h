@@ -42,6 +42,12 @@ struct VarSym {
     bool used = false;
     // Global of a list with {attribute 'qualified_only'}: only `LIST.name` names it.
     std::string qualifiedOnlyList;
+    // Global of a named global list (GVL): the list's name. `sharedName` when
+    // another named list declares the same name: then only `LIST.name` names
+    // it, and --dump, --set and --vcd call it that (decision 0096).
+    std::string listName;
+    bool sharedName = false;
+    std::string globalKey() const { return sharedName ? listName + "." + name : name; }
     // CONSTANT with a constant initial value: folded into uses.
     bool hasConstValue = false;
     int64_t constInt = 0;
