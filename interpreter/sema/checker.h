@@ -179,6 +179,8 @@ private:
     Checked memberOf(Checked base, const std::string& member, const ast::Loc& loc);
     Checked laterConstant(const std::string& upperName, const ast::Loc& loc);
     std::set<std::string> pendingConstants_;
+    // Constants read by laterConstant before their VarSym existed: used, for warnUnused.
+    std::set<std::pair<const PouInfo*, std::string>> constantsUsedEarly_;
     Checked partialAccess(Checked base, const std::string& key, const std::string& member, const ast::Loc& loc);
     VarSym* lookupVar(const std::string& upperName);
     const Enumerator* lookupEnumValue(const std::string& upperName, const Type** enumType);

@@ -308,7 +308,7 @@ void Checker::warnUnused() {
         if (libraryFiles_.count(p->ast->loc.file)) continue;
         auto visit = [&](PouInfo* pou) {
             for (auto& v : pou->ownedVars) {
-                if (v->used || v.get() == pou->result) continue;
+                if (v->used || v.get() == pou->result || constantsUsedEarly_.count({pou, upper(v->name)})) continue;
                 if (v->section == ast::VarSection::Var || v->section == ast::VarSection::Temp) {
                     if (pou->kind == ast::PouKind::Program) continue;  // program variables are visible in --dump
                     log_.warning(v->loc, fmt::format("variable '{}' is never used", v->name));

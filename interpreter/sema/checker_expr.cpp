@@ -454,6 +454,7 @@ Checked Checker::laterConstant(const std::string& key, const ast::Loc& loc) {
                 v = coerce(v, t, decl.init->expr->loc, "initial value");
                 if (!v.ok || !v.isConst) return bad(loc);
                 v.loc = loc;
+                constantsUsedEarly_.insert({pou_, key});
                 return v;
             }
     }
