@@ -243,6 +243,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         t.kind = TK::Enum;
         t.name = decl->name;
         t.strictEnum = hasAttribute(decl->pragmas, "strict");
+        t.enumToString = hasAttribute(decl->pragmas, "to_string");
         t.qualifiedOnly = hasAttribute(decl->pragmas, "qualified_only");
         const Type* base = spec->elem ? resolveTypeSpec(spec->elem.get(), decl->name) : types().elementary(TK::Int);
         if (base && !isInteger(base->kind) && !isBitString(base->kind)) {
