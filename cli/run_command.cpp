@@ -137,6 +137,10 @@ int runCommand(const CommandLine& line) {
     sema::ProgramModel& model = *compiled.model;
 
     for (int i = 0; i < compiled.sources.size(); ++i) run.sourceFiles.push_back(compiled.sources.file(i).path);
+    // Faults in sources converted from XML are reported at the XML line and column, like compile errors.
+    run.originalPosition = [&sources = compiled.sources](int file, int line, int col) {
+        return file < sources.size() ? sources.file(file).original(line, col) : std::pair<int, int>{line, col};
+    };
     std::vector<rt::TaskSpec> specs;
     for (const auto& t : model.tasks) specs.push_back(t.spec);
     if (run.cycles && specs.empty()) return usage("--cycles: the project declares no TASK (its CONFIGURATION has none)");

@@ -83,6 +83,9 @@ public:
     // Calendar date-time now, as nanoseconds since 1970-01-01-00:00:00 (UTC),
     // from --start on the virtual clock or the system clock on the real one.
     virtual int64_t calendarNanos() = 0;
+    // The calendar time (as calendarNanos) at which the running task's current
+    // activation was due to start (TwinCAT F_GetTaskTime, F_GetCurDcTaskTime64).
+    virtual int64_t taskStartCalendarNanos() { return calendarNanos(); }
     // The running task's period (0: not a cyclic task) and a request to change
     // it (M241 GetCurrentTaskCycle / SetCurrentTaskCycle). False: refused.
     virtual PlcTime currentTaskInterval() { return 0; }

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <thread>
+#include <tuple>
 
 #include "runtime/duration_text.h"
 #include "runtime/real_clock.h"
@@ -723,6 +724,7 @@ void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::stri
 }
 
 void Scheduler::record(DiagCode code, const TaskRun* task, std::string_view pou, int line, std::string message, int file, int col) {
+    if (file >= 0 && options_.originalPosition) std::tie(line, col) = options_.originalPosition(file, line, col);
     diagnostics_.add({machine_.now, code, task ? task->spec.name : std::string(), std::string(pou), line, std::move(message), file, col});
 }
 
@@ -751,6 +753,12 @@ PlcTime Scheduler::currentTime() {
 int64_t Scheduler::calendarNanos() {
     if (options_.virtualClock) return calendarBase_ + machine_.now;
     return realtimeNanos();
+}
+
+int64_t Scheduler::taskStartCalendarNanos() {
+    PlcTime now = currentTime();
+    PlcTime start = stack_.empty() ? now : stack_.back()->releasedAt;
+    return calendarNanos() - (now - start);
 }
 
 void Scheduler::observeRunning(const TaskRun& task, bool running) {

@@ -12,6 +12,8 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
+#include <utility>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -50,6 +52,9 @@ struct RunOptions {
     Stimulus* stimulus = nullptr;         // --set / --stimulus writes (runtime/stimulus.h); nullptr: none
     RunObserver* observer = nullptr;      // --vcd recorder (runtime/run_observer.h); nullptr: none
     std::vector<std::string> sourceFiles;  // paths by source index, for the "file" of diagnostics
+    // Maps a fault's position in the compiled text to the file the user has
+    // (the XML line and column of a converted TwinCAT/PLCopen source); none: as is.
+    std::function<std::pair<int, int>(int file, int line, int col)> originalPosition;
 };
 
 enum class PlcState { Run, Stop, Halt };
@@ -94,6 +99,7 @@ public:
     void onFault(DiagCode code, std::string_view pou, int line, std::string message, int file = -1, int col = 0) override;
     PlcTime currentTime() override;
     int64_t calendarNanos() override;
+    int64_t taskStartCalendarNanos() override;
     PlcTime currentTaskInterval() override;
     bool setCurrentTaskInterval(PlcTime period) override;
 

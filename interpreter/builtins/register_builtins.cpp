@@ -18,6 +18,7 @@ void registerBuiltins(sema::Checker& checker) {
     bind::registerClock(checker);
     bind::registerTaskCycle(checker);
     bind::registerTwinCat(checker);
+    bind::registerMemory(checker);
     registerParameterAliases(checker);
 }
 

@@ -2,11 +2,15 @@
 // X_TO_WSTRING, STRING_TO_X, WSTRING_TO_X and the overloaded TO_STRING /
 // TO_WSTRING; BCD (*_BCD_TO_*, *_TO_BCD_*, BCD_TO_*, TO_BCD_*); TO/FROM_BIG/
 // LITTLE_ENDIAN; IS_VALID; IS_VALID_BCD.
+#include <algorithm>
+#include <cstdio>
+
 #include <fmt/format.h>
 
 #include "interpreter/builtins/bind_support.h"
 #include "interpreter/builtins/convert_nodes.h"
 #include "interpreter/builtins/register_groups.h"
+#include "interpreter/builtins/string_nodes.h"
 
 namespace strun::stdlib::bind {
 
@@ -51,6 +55,33 @@ int64_t textLength(ValueClass k, const Type* t) {
     return 64;
 }
 
+// TO_STRING of an enumeration with {attribute 'to_string'}: the value's name
+// as declared; a value no enumerator has gives its number.
+struct EnumNameNode final : exec::Expr {
+    exec::Expr* in;
+    const Type* enumType;
+    bool wide;
+    uint32_t off = 0, maxLen = 0;
+    EnumNameNode(exec::Expr* e, const Type* t, bool w) : in(e), enumType(t), wide(w) {}
+    uint8_t* addr(exec::Ctx& c) override {
+        int64_t v = in->i(c);
+        char number[24];
+        std::string_view text;
+        for (const auto& en : enumType->enumerators)
+            if (en.value == v) { text = en.name; break; }
+        if (text.empty()) {
+            int n = std::snprintf(number, sizeof number, "%lld", static_cast<long long>(v));
+            text = std::string_view(number, n > 0 ? static_cast<size_t>(n) : 0);
+        }
+        size_t n = std::min<size_t>(text.size(), maxLen);
+        if (!wide) return writeString<char>(c, off, maxLen, text.substr(0, n));
+        auto* dst = reinterpret_cast<char16_t*>(c.frame + off);
+        for (size_t k = 0; k < n; ++k) dst[k] = static_cast<unsigned char>(text[k]);  // names are ASCII identifiers
+        dst[n] = 0;
+        return reinterpret_cast<uint8_t*>(dst);
+    }
+};
+
 void addToString(Checker& ck, const std::string& name, const Type* from, bool wide) {
     ck.addBuiltin(name, [from, wide](Checker& ck, CallArgs& call) -> Checked {
         std::vector<Checked> a;
@@ -65,6 +96,13 @@ void addToString(Checker& ck, const std::string& name, const Type* from, bool wi
             }
         } else {
             x = ck.settle(x);
+        }
+        if (!from && x.type->kind == TK::Enum && x.type->enumToString) {
+            const Type* t = stringResultType(ck, wide, 80);
+            auto* e = ck.pool().make<EnumNameNode>(x.node, x.type, wide);
+            e->maxLen = t->maxLen;
+            e->off = ck.allocTemp(t->size);
+            return makeResult(ck, e, t, call, a, false);
         }
         ValueClass vc;
         if (!valueClassOf(x.type, vc)) return argError(ck, x, call.name, "the input must be an elementary value");

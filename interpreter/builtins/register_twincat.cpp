@@ -2,8 +2,16 @@
 // ADSLOGSTR, ADSLOGDINT, ADSLOGLREAL write their message to stderr (the
 // TwinCAT error list's stand-in), one line each, with the argument in place
 // of the format's %s / %d / %f. They return 0 like TwinCAT.
+// Task and distributed-clock time (Tc2_System F_GetTaskTime, Tc2_EtherCAT
+// F_GetCurDcTaskTime64 / F_GetCurDcTickTime64 / DCTIME64_TO_STRING /
+// STRING_TO_DCTIME64) come from the PLC calendar (--start on the virtual
+// clock), decision 0095.
 #include <cstdio>
 #include <cstring>
+
+#include <fmt/format.h>
+
+#include "stdlib/calendar.h"
 
 #include "interpreter/builtins/bind_support.h"
 #include "interpreter/builtins/register_groups.h"
@@ -66,9 +74,103 @@ void addAdsLog(Checker& ck, const char* name, LogArg kind) {
     });
 }
 
+// The DC clock counts ns since 2000-01-01-00:00:00; FILETIME (F_GetTaskTime)
+// counts 100 ns since 1601-01-01. Both from calendar ns since 1970.
+constexpr int64_t kDcEpochFrom1970 = 946'684'800LL * stdlib::kNsPerSecond;
+constexpr int64_t kFileTimeEpochTo1970 = 11'644'473'600LL * 10'000'000LL;
+
+enum class Clock : uint8_t { TaskFileTime, TaskDc, TickDc };
+
+struct TwinCatClockNode final : exec::Expr {
+    Clock which;
+    explicit TwinCatClockNode(Clock w) : which(w) {}
+    int64_t i(Ctx& c) override {
+        rt::AttentionHandler& h = *c.m->handler;
+        int64_t calendar = which == Clock::TickDc ? h.calendarNanos() : h.taskStartCalendarNanos();
+        if (which == Clock::TaskFileTime) return calendar / 100 + kFileTimeEpochTo1970;
+        int64_t dc = calendar - kDcEpochFrom1970;
+        // A calendar before 2000 (the default --start is 1970): the DC clock
+        // starts at 0 with the PLC, so differences still measure PLC time.
+        return dc >= 0 ? dc : (which == Clock::TickDc ? h.currentTime() : calendar - (h.calendarNanos() - h.currentTime()));
+    }
+};
+
+// 'YYYY-MM-DD-hh:mm:ss.nnnnnnnnn' of a DC time (T_DCTIME64, unsigned ns since 2000).
+struct DcTimeToStringNode final : exec::Expr {
+    Expr* in;
+    uint32_t off;
+    DcTimeToStringNode(Expr* e, uint32_t o) : in(e), off(o) {}
+    uint8_t* addr(Ctx& c) override {
+        auto dc = static_cast<uint64_t>(in->i(c));
+        // Seconds and nanoseconds apart: 2^64 ns since 2000 do not fit int64 ns since 1970.
+        auto seconds = static_cast<int64_t>(dc / 1'000'000'000ULL) + kDcEpochFrom1970 / stdlib::kNsPerSecond;
+        auto ns = static_cast<int64_t>(dc % 1'000'000'000ULL);
+        stdlib::CivilDate d = stdlib::civilFromDays(stdlib::floorDiv(seconds, stdlib::kSecondsPerDay));
+        int64_t sod = stdlib::floorMod(seconds, stdlib::kSecondsPerDay);
+        char text[48];
+        int n = std::snprintf(text, sizeof text, "%04lld-%02d-%02d-%02d:%02d:%02d.%09lld", static_cast<long long>(d.year), d.month, d.day,
+                              static_cast<int>(sod / 3600), static_cast<int>(sod / 60 % 60), static_cast<int>(sod % 60), static_cast<long long>(ns));
+        return writeString<char>(c, off, 29, std::string_view(text, n > 0 ? static_cast<size_t>(n) : 0));
+    }
+};
+
+// STRING_TO_DCTIME64: the same format back ('.' or ':' before the
+// nanoseconds, fewer digits allowed); text that is no such date gives 0.
+struct StringToDcTimeNode final : exec::Expr {
+    Expr* in;
+    explicit StringToDcTimeNode(Expr* e) : in(e) {}
+    int64_t i(Ctx& c) override {
+        std::string_view view = viewOf<char>(in, c);
+        char text[64];
+        size_t len = std::min<size_t>(view.size(), sizeof text - 1);
+        std::memcpy(text, view.data(), len);
+        text[len] = 0;
+        long long y = 0;
+        int mo = 0, d = 0, h = 0, mi = 0, s = 0, fracStart = 0, fracEnd = 0;
+        char sep = 0;
+        if (std::sscanf(text, "%4lld-%2d-%2d-%2d:%2d:%2d%c%n%*9[0-9]%n", &y, &mo, &d, &h, &mi, &s, &sep, &fracStart, &fracEnd) < 6) return 0;
+        auto date = stdlib::concatDateTime(y, mo, d, h, mi, s, 0);
+        if (!date.ok()) return 0;
+        int64_t frac = 0;
+        if ((sep == '.' || sep == ':') && fracEnd > fracStart) {
+            int digits = fracEnd - fracStart;
+            for (int k = fracStart; k < fracEnd; ++k) frac = frac * 10 + (text[k] - '0');
+            for (; digits < 9; ++digits) frac *= 10;
+        }
+        int64_t dc = date.value() + frac - kDcEpochFrom1970;
+        return dc < 0 ? 0 : dc;
+    }
+};
+
+void addClock(Checker& ck, const char* name, Clock which) {
+    ck.addBuiltin(name, [which](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);
+        return makeResult(ck, ck.pool().make<TwinCatClockNode>(which), ck.types().elementary(TK::ULInt), call, a, false);
+    });
+}
+
 }  // namespace
 
 void registerTwinCat(Checker& ck) {
+    addClock(ck, "F_GETTASKTIME", Clock::TaskFileTime);
+    addClock(ck, "F_GETCURDCTASKTIME64", Clock::TaskDc);
+    addClock(ck, "F_GETCURDCTICKTIME64", Clock::TickDc);
+    ck.addBuiltin("DCTIME64_TO_STRING", [](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
+        Checked in = ck.coerce(a[0], ck.types().elementary(TK::ULInt), a[0].loc, call.name.c_str());
+        if (!in.ok) return in;
+        const Type* t = ck.types().string(29, false);
+        auto* n = ck.pool().make<DcTimeToStringNode>(in.node, ck.allocTemp(t->size));
+        return makeResult(ck, n, t, call, a, false);
+    });
+    ck.addBuiltin("STRING_TO_DCTIME64", [](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
+        if (!isStringArg(a[0], false)) return argError(ck, a[0], call.name, "in must be a STRING");
+        return makeResult(ck, ck.pool().make<StringToDcTimeNode>(a[0].node), ck.types().elementary(TK::ULInt), call, a, false);
+    });
     addAdsLog(ck, "ADSLOGSTR", LogArg::String);
     addAdsLog(ck, "ADSLOGDINT", LogArg::Dint);
     addAdsLog(ck, "ADSLOGLREAL", LogArg::Lreal);

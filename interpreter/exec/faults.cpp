@@ -74,6 +74,10 @@ uint8_t* DerefPlace::badTarget(Ctx& c, const uint8_t* p) {
     return sink(c);
 }
 
+void reportMemoryFault(Ctx& c, const Site& site, std::string message) {
+    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(at(c, site)), at(c, site).line, std::move(message), at(c, site).file, at(c, site).col);
+}
+
 PouCode* CallPou::dispatch(Ctx& c, uint8_t* inst) {
     // The instance may come from a pointer or interface forged by arithmetic:
     // it must lie in project memory and start with a real class descriptor.

@@ -132,7 +132,7 @@ json globalsJson(const sema::ProgramModel& model) {
     json obj = json::object();
     for (const sema::VarSym* g : model.globals) {
         if (omitted(g->type)) continue;
-        append(obj, g->name, g->bit >= 0 ? json(((*g->abs >> g->bit) & 1) != 0) : valueToJson(g->type, g->abs));
+        append(obj, g->globalKey(), g->bit >= 0 ? json(((*g->abs >> g->bit) & 1) != 0) : valueToJson(g->type, g->abs));
     }
     return obj;
 }

@@ -36,7 +36,8 @@ void forEachWord(std::string_view text, F&& f) {
     }
 }
 
-// The names a library file declares: the word after each POU keyword.
+// The names a library file declares: the word after each POU keyword (and
+// after TYPE: library files declare one type per TYPE block).
 std::vector<std::string> declaredNames(std::string_view text) {
     std::vector<std::string> names;
     bool nextIsName = false;
@@ -45,7 +46,7 @@ std::vector<std::string> declaredNames(std::string_view text) {
         if (nextIsName) {
             names.push_back(w);
             nextIsName = false;
-        } else if (w == "FUNCTION_BLOCK" || w == "FUNCTION" || w == "INTERFACE" || w == "PROGRAM" || w == "NAMESPACE") {
+        } else if (w == "FUNCTION_BLOCK" || w == "FUNCTION" || w == "INTERFACE" || w == "PROGRAM" || w == "NAMESPACE" || w == "TYPE") {
             nextIsName = true;
         }
     });

@@ -86,7 +86,7 @@ bool unhex(const std::string& text, std::vector<uint8_t>& out) {
 RetainStore::RetainStore(sema::ProgramModel& model, std::string path, std::ostream& warnings)
     : path_(std::move(path)), warnings_(warnings) {
     for (const sema::VarSym* g : model.globals)
-        if (g->abs && g->bit < 0) collect(g->name, g->type, g->abs, g->retain, 0);
+        if (g->abs && g->bit < 0) collect(g->globalKey(), g->type, g->abs, g->retain, 0);
     for (auto& inst : model.programs) {
         for (const sema::PouInfo* p = inst.pou; p; p = p->parent)
             for (const auto& v : p->ownedVars)

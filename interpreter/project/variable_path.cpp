@@ -167,7 +167,9 @@ std::optional<VariableRef> resolveVariablePath(const sema::ProgramModel& model, 
         std::string name = upper(steps[skip].name);
         for (const sema::VarSym* g : model.globals) {
             if (upper(g->name) != name || g->byRef || !g->abs) continue;
-            VariableRef ref{g->name, g->type, g->abs, g->bit, g->constant, nullptr};
+            // A name two global lists declare needs its list: GVL_A.x (decision 0096).
+            if (g->sharedName && (skip == 0 || upper(g->listName) != upper(steps[0].name))) continue;
+            VariableRef ref{g->globalKey(), g->type, g->abs, g->bit, g->constant, nullptr};
             if (!descend(ref, steps, skip + 1, error)) return std::nullopt;
             return ref;
         }
@@ -232,7 +234,7 @@ void forEachElementary(const sema::ProgramModel& model, const std::function<void
     scopes.clear();
     for (const sema::VarSym* g : model.globals) {
         if (g->byRef || !g->abs) continue;
-        expand(VariableRef{g->name, g->type, g->abs, g->bit, g->constant, nullptr}, scopes, g->name, visit);
+        expand(VariableRef{g->globalKey(), g->type, g->abs, g->bit, g->constant, nullptr}, scopes, g->globalKey(), visit);
     }
 }
 

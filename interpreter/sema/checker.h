@@ -115,6 +115,10 @@ private:
     std::vector<VarSym*> globalAddressInits_;
     std::string qualifiedOnlyList_;   // while declaring a {attribute 'qualified_only'} global list: its name
     bool qualifiedAccess_ = false;    // while resolving the member of `LIST.name`
+    std::string qualifiedList_;       // ... and LIST, upper-case
+    std::string declaringList_;       // while declaring a named global list: its name
+    std::map<std::string, VarSym*> listGlobals_;  // "LIST.NAME" (upper-case) of every named list's global
+    void ambiguousGlobal(const VarSym* v, const ast::Loc& loc, const std::string& written);
     void writeInitial(uint8_t* base, const Type* t, const ast::Init* init, const ast::Loc& loc);
     void writeDefault(uint8_t* base, const Type* t);
     void writeScalar(uint8_t* p, const Type* t, const Checked& v);
@@ -179,6 +183,8 @@ private:
     Checked memberOf(Checked base, const std::string& member, const ast::Loc& loc);
     Checked laterConstant(const std::string& upperName, const ast::Loc& loc);
     std::set<std::string> pendingConstants_;
+    // Constants read by laterConstant before their VarSym existed: used, for warnUnused.
+    std::set<std::pair<const PouInfo*, std::string>> constantsUsedEarly_;
     Checked partialAccess(Checked base, const std::string& key, const std::string& member, const ast::Loc& loc);
     VarSym* lookupVar(const std::string& upperName);
     const Enumerator* lookupEnumValue(const std::string& upperName, const Type** enumType);

@@ -353,7 +353,7 @@ void Checker::warnUnused() {
         if (libraryFiles_.count(p->ast->loc.file)) continue;
         auto visit = [&](PouInfo* pou) {
             for (auto& v : pou->ownedVars) {
-                if (v->used || v.get() == pou->result) continue;
+                if (v->used || v.get() == pou->result || constantsUsedEarly_.count({pou, upper(v->name)})) continue;
                 if (v->section == ast::VarSection::Var || v->section == ast::VarSection::Temp) {
                     if (isTestSuiteInstance(v->type)) continue;  // RUN() of strun test calls it
                     // Program variables are visible in --dump, but a block instance nobody calls does nothing.

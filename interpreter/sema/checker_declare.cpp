@@ -243,6 +243,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         t.kind = TK::Enum;
         t.name = decl->name;
         t.strictEnum = hasAttribute(decl->pragmas, "strict");
+        t.enumToString = hasAttribute(decl->pragmas, "to_string");
         t.qualifiedOnly = hasAttribute(decl->pragmas, "qualified_only");
         const Type* base = spec->elem ? resolveTypeSpec(spec->elem.get(), decl->name) : types().elementary(TK::Int);
         if (base && !isInteger(base->kind) && !isBitString(base->kind)) {
@@ -563,6 +564,7 @@ void Checker::layoutPou(PouInfo* pou) {
         if (v->storage != Storage::Frame || v->byRef) continue;
         uint8_t* p = pou->code->frameInit.data() + v->offset;
         writeDefault(p, v->type);
+        if (isAddressInit(v.get())) { pou->frameAddressInits.push_back(v.get()); continue; }
         if (v->decl && v->decl->init) writeInitial(p, v->type, v->decl->init.get(), v->decl->loc);
     }
     pou->layingOut = false;
@@ -633,6 +635,7 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                         unresolvedVars_.insert({pou, key});
                         continue;
                     }
+                    if (g->second->sharedName) ambiguousGlobal(g->second, loc, name);
                     if (t && !sameType(t, g->second->type))
                         error(loc, fmt::format("VAR_EXTERNAL '{}' is declared {} but the global is {}", name, typeName(t), typeName(g->second->type)));
                     v->global = g->second;
@@ -714,7 +717,11 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     const std::string& name = decl.names[n];
     ast::Loc loc = n < decl.nameLocs.size() ? decl.nameLocs[n] : decl.loc;
     std::string key = upper(name);
-    if (globals_.count(key)) {
+    auto existing = globals_.find(key);
+    // Two named lists may both declare a name (GVL_A.x, GVL_B.x); within one
+    // list, or beside a global of no list, it is a duplicate.
+    VarSym* other = existing == globals_.end() ? nullptr : existing->second;
+    if (other && (other->listName.empty() || declaringList_.empty() || listGlobals_.count(upper(declaringList_) + "." + key))) {
         error(loc, fmt::format("duplicate global variable '{}'", name));
         return nullptr;
     }
@@ -752,7 +759,13 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     }
     if (block.constant && decl.init) foldConstant(*v, decl);
     VarSym* raw = v.get();
-    globals_[key] = raw;
+    raw->listName = declaringList_;
+    if (!declaringList_.empty()) listGlobals_[upper(declaringList_) + "." + key] = raw;
+    if (other) {
+        other->sharedName = raw->sharedName = true;  // unqualified use: an error naming both lists
+    } else {
+        globals_[key] = raw;
+    }
     // The library's own lists (GVL_Param_TcUnit) are not the project's state:
     // they stay out of --dump, --vcd and the names --set can write.
     if (!libraryFiles_.count(loc.file)) model_.globals.push_back(raw);
@@ -787,8 +800,10 @@ void Checker::declareGlobals() {
     };
     for (auto* list : globalLists_) {
         qualifiedOnlyList_ = hasAttribute(list->pragmas, "qualified_only") ? list->nameSpace : "";
+        declaringList_ = list->nameSpace;
         declareBlocks(list->blocks);
         qualifiedOnlyList_.clear();
+        declaringList_.clear();
     }
     for (auto* conf : configurations_) {
         declareBlocks(conf->globals);

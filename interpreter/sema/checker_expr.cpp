@@ -350,9 +350,25 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
     return autoDeref(c);
 }
 
+// `x` declared by several named global lists: the error names every list.
+void Checker::ambiguousGlobal(const VarSym* v, const ast::Loc& loc, const std::string& written) {
+    std::string lists;
+    for (const VarSym* g : model_.globals)
+        if (g->sharedName && upper(g->name) == upper(v->name)) lists += (lists.empty() ? "" : ", ") + g->listName + "." + g->name;
+    error(loc, fmt::format("'{}' is declared in several global lists; write one of {}", written, lists));
+}
+
 Checked Checker::checkName(const ast::Expr& e) {
     std::string key = upper(e.name);
+    if (qualifiedAccess_ && !qualifiedList_.empty()) {
+        auto it = listGlobals_.find(qualifiedList_ + "." + key);
+        if (it != listGlobals_.end() && !(pou_ && pou_->ast && libraryFiles_.count(pou_->ast->loc.file))) return varAccess(it->second, e.loc, false);
+    }
     if (VarSym* v = lookupVar(key)) {
+        if (v->section == ast::VarSection::Global && v->sharedName) {
+            ambiguousGlobal(v, e.loc, e.name);
+            return bad(e.loc);
+        }
         if (!v->qualifiedOnlyList.empty() && !qualifiedAccess_ && v->section == ast::VarSection::Global) {
             error(e.loc, fmt::format("'{}' is in global list '{}' with {{attribute 'qualified_only'}}: write {}.{}", e.name,
                                      v->qualifiedOnlyList, v->qualifiedOnlyList, e.name));
@@ -442,6 +458,7 @@ Checked Checker::laterConstant(const std::string& key, const ast::Loc& loc) {
                 v = coerce(v, t, decl.init->expr->loc, "initial value");
                 if (!v.ok || !v.isConst) return bad(loc);
                 v.loc = loc;
+                constantsUsedEarly_.insert({pou_, key});
                 return v;
             }
     }
@@ -638,8 +655,10 @@ Checked Checker::checkMember(const ast::Expr& e) {
         plain.loc = e.nameLoc.line ? e.nameLoc : e.loc;
         plain.name = e.name;
         qualifiedAccess_ = true;
+        qualifiedList_ = baseExpr.kind == ast::ExprKind::Name ? upper(baseExpr.name) : "";
         Checked c = checkName(plain);
         qualifiedAccess_ = false;
+        qualifiedList_.clear();
         return c;
     }
     if (baseExpr.kind == ast::ExprKind::Name) {
@@ -1079,6 +1098,8 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
     }
     if (isElementary(from->kind) && isElementary(target->kind)) {
         if (iecImplicit(from, target)) return convert(e, target, loc);
+        // A literal above LINT's range (16#FFFF_FFFF_FFFF_FFFF) is a ULINT constant; it fits an LWORD as it is.
+        if (e.isConst && !e.var && from->kind == TK::ULInt && target->kind == TK::LWord) return convert(e, target, loc);
         const bool promotion = std::strcmp(what, "operand") == 0;  // operands brought to their common type
         if (promotion && bitStringMix(from, target)) return convert(e, target, loc);
         if (codesysImplicit(from, target)) {
@@ -1157,7 +1178,10 @@ const Type* Checker::commonType(Checked& a, Checked& b, const ast::Loc& loc, boo
         return types().elementary(intKindOf(true, std::min(64, u.bits * 2)));
     }
     if (isReal(ka) || isReal(kb)) {
-        bool otherOk = (isReal(ka) || isInteger(ka)) && (isReal(kb) || isInteger(kb));
+        // A bit string meets a REAL as a number (CODESYS; `(high - low) * X` with X : BYTE):
+        // the operand's conversion then warns, or is an error with --strict.
+        auto number = [](TK k) { return isReal(k) || isInteger(k) || (isBitString(k) && k != TK::Bool); };
+        bool otherOk = number(ka) && number(kb);
         if (!otherOk) return fail();
         if (ka == TK::LReal || kb == TK::LReal) return types().elementary(TK::LReal);
         return types().elementary(TK::Real);

@@ -274,6 +274,8 @@ Checked Checker::addressOf(const ast::Expr& e, const char* fn) {
         error(e.loc, fmt::format("{} needs a variable", fn));
         return bad(e.loc);
     }
+    // OSCAT writes a function's result through a pointer (pt := ADR(BYTE_TO_STRB)).
+    if (v.var && pou_ && v.var == pou_->result) assignedResult_ = true;
     Checked c;
     c.ok = true;
     c.loc = e.loc;

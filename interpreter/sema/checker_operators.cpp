@@ -140,6 +140,16 @@ Checked Checker::checkUnary(const ast::Expr& e) {
         }
         if (a.untypedReal) { Checked c = constReal(-a.constReal, a.type, e.loc); c.untypedReal = true; return c; }
         TK k = a.type->kind;
+        if (isBitString(k) && k != TK::Bool) {
+            // CODESYS negates a bit string as a number (OSCAT's `INC(cnt, -step, mx)`
+            // with step : BYTE gives -step): it becomes the signed integer of twice
+            // its width (LINT for 32 and 64 bits), with the conversion warning.
+            const int bits = bitWidth(k);
+            const Type* to = types().elementary(bits <= 8 ? TK::Int : bits <= 16 ? TK::DInt : TK::LInt);
+            a = coerce(a, to, e.loc, "operand");
+            if (!a.ok) return a;
+            k = a.type->kind;
+        }
         if (!(isInteger(k) || isReal(k) || isTimeLike(k))) {
             error(e.loc, fmt::format("unary '-' needs a number or a duration, not {}", typeName(a.type)));
             return bad(e.loc);
@@ -270,7 +280,7 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
         error(loc, fmt::format("operator '{}' is not defined for {} and {}", opText(op), typeName(a.type), typeName(b.type)));
         return bad(loc);
     }
-    if ((ka == TK::Pointer && (b.untypedInt || isInteger(kb))) && (op == ast::Op::Add || op == ast::Op::Sub)) {
+    if ((ka == TK::Pointer && (b.untypedInt || isInteger(kb) || (isBitString(kb) && kb != TK::Bool))) && (op == ast::Op::Add || op == ast::Op::Sub)) {
         // CODESYS pointer arithmetic: in bytes.
         Checked y = convert(b, types().elementary(TK::LInt), loc);
         r.type = a.type;

@@ -478,6 +478,16 @@ void Checker::checkBody(PouInfo* pou) {
     pendingJumps_.clear();
     assignedResult_ = false;
     pou->code->body = checkBlock(pou->ast->body);
+    if (!pou->frameAddressInits.empty()) {
+        // `p : POINTER TO INT := ADR(local)` in a FUNCTION or METHOD: the address
+        // is one of this call's frame, so the assignment runs first in every call.
+        auto* block = static_cast<exec::Block*>(pou->code->body);
+        std::vector<exec::Stmt*> inits;
+        for (VarSym* v : pou->frameAddressInits)
+            if (exec::Stmt* st = addressInitStmt(v)) inits.push_back(st);
+        block->stmts.insert(block->stmts.begin(), inits.begin(), inits.end());
+        for (auto& label : block->labels) label.second += inits.size();
+    }
     for (const auto& [loc, name] : pendingJumps_)
         if (!definedLabels_.count(upper(name))) error(loc, fmt::format("JMP to undefined label '{}'", name));
     if (pou->kind == ast::PouKind::Function && pou->result && !assignedResult_ && !libraryFiles_.count(pou->ast->loc.file))

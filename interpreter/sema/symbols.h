@@ -42,6 +42,12 @@ struct VarSym {
     bool used = false;
     // Global of a list with {attribute 'qualified_only'}: only `LIST.name` names it.
     std::string qualifiedOnlyList;
+    // Global of a named global list (GVL): the list's name. `sharedName` when
+    // another named list declares the same name: then only `LIST.name` names
+    // it, and --dump, --set and --vcd call it that (decision 0096).
+    std::string listName;
+    bool sharedName = false;
+    std::string globalKey() const { return sharedName ? listName + "." + name : name; }
     // CONSTANT with a constant initial value: folded into uses.
     bool hasConstValue = false;
     int64_t constInt = 0;
@@ -77,6 +83,9 @@ struct PouInfo {
     // assigned once per instance before the first cycle (checker_fb_init.cpp).
     std::vector<VarSym*> addressInits;
     exec::Stmt* addressInitCode = nullptr;
+    // FUNCTION / METHOD locals initialised with an address: assigned at the
+    // start of every call, as CODESYS does (checkBody).
+    std::vector<VarSym*> frameAddressInits;
 };
 
 // An expression after checking: its node, type, and what the checker knows

@@ -107,6 +107,12 @@ TypeTable::TypeTable() {
     names_["LTOD"] = elementary(TK::LTod);
     names_["LDT"] = elementary(TK::LDt);
     names_["BIT"] = elementary(TK::Bool);  // CODESYS/TwinCAT structure bits: a BOOL here (decision 0091)
+    // TwinCAT 3's platform-width types, on strun's 64-bit platform; PVOID is
+    // an untyped address: any POINTER assigns to it (decision 0095).
+    names_["UXINT"] = elementary(TK::ULInt);
+    names_["XINT"] = elementary(TK::LInt);
+    names_["XWORD"] = elementary(TK::LWord);
+    names_["PVOID"] = pointer(elementary(TK::Byte));
     names_.erase("ENUM");
     names_.erase("ARRAY");
     names_.erase("STRUCT");

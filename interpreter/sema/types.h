@@ -73,6 +73,8 @@ struct Type {
     int64_t enumDefault = 0;
     // Enum with {attribute 'strict'}: never converts to or from an integer implicitly.
     bool strictEnum = false;
+    // Enum with {attribute 'to_string'}: TO_STRING gives the value's name (TwinCAT, CODESYS).
+    bool enumToString = false;
     // Enum / global list with {attribute 'qualified_only'}: its names must be qualified.
     bool qualifiedOnly = false;
     // Initial image of a value of this type when it is not all zeros

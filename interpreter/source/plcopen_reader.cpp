@@ -5,6 +5,7 @@
 // the XML element they come from; bodies are copied with their positions.
 #include <cctype>
 #include <cstring>
+#include <set>
 
 #include <pugixml.hpp>
 
@@ -14,7 +15,8 @@ namespace strun::source {
 
 namespace {
 
-constexpr const char* kTc6Namespace = "http://www.plcopen.org/xml/tc6_0201";
+// TC6 v2.01 and v2.00: CODESYS V3, TwinCAT and Machine Expert export 2.00, Beremiz 2.01.
+constexpr const char* kTc6Namespaces[] = {"http://www.plcopen.org/xml/tc6_0201", "http://www.plcopen.org/xml/tc6_0200"};
 constexpr int kMaxTypeDepth = 64;  // nested type elements: far beyond real projects
 
 // Element name without a namespace prefix (`xhtml:p` -> `p`).
@@ -253,6 +255,13 @@ struct Reader : XmlConversion {
         return out;
     }
 
+    // CODESYS writes a task's program call as <pouInstance name="PLC_PRG" typeName="">:
+    // the program of that name.
+    static std::string instanceType(const pugi::xml_node& inst) {
+        std::string type = inst.attribute("typeName").value();
+        return type.empty() ? inst.attribute("name").value() : type;
+    }
+
     void configuration(const pugi::xml_node& c) {
         written(c, std::string("CONFIGURATION ") + c.attribute("name").value());
         for (pugi::xml_node g : children(c, "globalVars")) varSection(g, "VAR_GLOBAL");
@@ -267,10 +276,10 @@ struct Reader : XmlConversion {
                 written(t, std::string("TASK ") + t.attribute("name").value() + " (" + params + ");");
                 for (pugi::xml_node inst : children(t, "pouInstance"))
                     written(inst, std::string("PROGRAM ") + inst.attribute("name").value() + " WITH " + t.attribute("name").value() + " : " +
-                                      inst.attribute("typeName").value() + ";");
+                                      instanceType(inst) + ";");
             }
             for (pugi::xml_node inst : children(r, "pouInstance"))
-                written(inst, std::string("PROGRAM ") + inst.attribute("name").value() + " : " + inst.attribute("typeName").value() + ";");
+                written(inst, std::string("PROGRAM ") + inst.attribute("name").value() + " : " + instanceType(inst) + ";");
             written(r, "END_RESOURCE");
         }
         written(c, "END_CONFIGURATION");
@@ -291,6 +300,24 @@ struct Reader : XmlConversion {
         }
     }
 
+    // CODESYS exports the POUs and data types of an application inside its
+    // resource: <addData><data name=".../pou"><pou> (and ".../datatype"),
+    // with <types><pous/> left empty. Taken unless types/ declares the name too.
+    void addDataDeclarations(const pugi::xml_node& n, int depth, const std::set<std::string>& declared) {
+        if (depth > kMaxTypeDepth) return;
+        for (pugi::xml_node c : n.children()) {
+            if (c.type() != pugi::node_element) continue;
+            const bool inData = localName(c.parent()) == "data";
+            if (inData && localName(c) == "pou" && !declared.count(c.attribute("name").value())) {
+                pou(c);
+            } else if (inData && localName(c) == "dataType" && !declared.count(c.attribute("name").value())) {
+                dataType(c);
+            } else if (localName(c) != "pou" && localName(c) != "types") {
+                addDataDeclarations(c, depth + 1, declared);
+            }
+        }
+    }
+
     void run() {
         pugi::xml_document doc;
         pugi::xml_parse_result parsed = doc.load_buffer(xml.data(), xml.size(), pugi::parse_default, pugi::encoding_utf8);
@@ -301,8 +328,16 @@ struct Reader : XmlConversion {
         }
         pugi::xml_node project = firstElement(doc);
         pugi::xml_node types = child(project, "types");
-        for (pugi::xml_node dt : children(child(types, "dataTypes"), "dataType")) dataType(dt);
-        for (pugi::xml_node p : children(child(types, "pous"), "pou")) pou(p);
+        std::set<std::string> declared;
+        for (pugi::xml_node dt : children(child(types, "dataTypes"), "dataType")) {
+            dataType(dt);
+            declared.insert(dt.attribute("name").value());
+        }
+        for (pugi::xml_node p : children(child(types, "pous"), "pou")) {
+            pou(p);
+            declared.insert(p.attribute("name").value());
+        }
+        addDataDeclarations(child(project, "instances"), 0, declared);
         namedGlobalLists(project, 0);
         for (pugi::xml_node c : children(child(child(project, "instances"), "configurations"), "configuration")) configuration(c);
         result.text = std::move(out.text());
@@ -319,7 +354,9 @@ bool isPlcOpenProject(const std::string& xml) {
     if (!root || localName(root) != "project") return false;
     for (pugi::xml_attribute a : root.attributes()) {
         std::string n = a.name();
-        if ((n == "xmlns" || n.rfind("xmlns:", 0) == 0) && std::strcmp(a.value(), kTc6Namespace) == 0) return true;
+        if (n == "xmlns" || n.rfind("xmlns:", 0) == 0)
+            for (const char* ns : kTc6Namespaces)
+                if (std::strcmp(a.value(), ns) == 0) return true;
     }
     return false;
 }

@@ -64,3 +64,21 @@ TEST_CASE("PLCopen: the namespace decides, variables and tasks become ST", "[sou
     CHECK(c.text.find("TASK T (INTERVAL := T#0.05s, PRIORITY := 2);") != std::string::npos);
     CHECK(c.text.find("PROGRAM p1 WITH T : P;") != std::string::npos);
 }
+
+TEST_CASE("PLCopen: CODESYS's tc6_0200 form with the POUs in the resource's addData", "[source][plcopen]") {
+    CHECK_FALSE(isPlcOpenProject("<project xmlns=\"http://www.plcopen.org/xml/tc6_0199\"/>"));
+    const std::string xml =
+        "<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\"><types><dataTypes/><pous/></types>"
+        "<instances><configurations><configuration name=\"Device\"><resource name=\"App\">"
+        "<task name=\"T\" interval=\"PT0.02S\" priority=\"1\"><pouInstance name=\"PLC_PRG\" typeName=\"\"/></task>"
+        "<addData><data name=\"http://www.3s-software.com/plcopenxml/pou\" handleUnknown=\"implementation\">"
+        "<pou name=\"PLC_PRG\" pouType=\"program\"><interface><localVars><variable name=\"x\"><type><INT/></type></variable></localVars></interface>"
+        "<body><ST><xhtml>x := x + 1;</xhtml></ST></body></pou></data></addData>"
+        "</resource></configuration></configurations></instances></project>";
+    REQUIRE(isPlcOpenProject(xml));
+    Converted c = readPlcOpen(xml);
+    REQUIRE(c.errors.empty());
+    CHECK(c.text.find("PROGRAM PLC_PRG\n") != std::string::npos);
+    CHECK(c.text.find("x := x + 1;") != std::string::npos);
+    CHECK(c.text.find("PROGRAM PLC_PRG WITH T : PLC_PRG;") != std::string::npos);
+}

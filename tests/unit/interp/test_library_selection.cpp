@@ -48,3 +48,17 @@ TEST_CASE("selected files come in the order of the embedded library", "[library]
     CHECK(has(paths, "stdlib/timers.st"));
     CHECK(std::is_sorted(paths.begin(), paths.end()));
 }
+
+TEST_CASE("a type a library file declares selects it (T_MaxString, T_DCTIME64)", "[library]") {
+    auto paths = selectedPaths({"PROGRAM Main VAR s : T_MaxString; t : t_dctime64; END_VAR END_PROGRAM"});
+    CHECK(has(paths, "stdlib/tc2_system.st"));
+    CHECK(has(paths, "stdlib/tc2_ethercat.st"));
+    CHECK_FALSE(has(paths, "stdlib/tc2_utilities.st"));
+    CHECK_FALSE(has(paths, "stdlib/tcunit.st"));
+}
+
+TEST_CASE("a Tc2_Utilities helper pulls in the type file it uses", "[library]") {
+    auto paths = selectedPaths({"PROGRAM Main VAR s : STRING; END_VAR s := DWORD_TO_HEXSTR(16#AB, 2, FALSE); END_PROGRAM"});
+    CHECK(has(paths, "stdlib/tc2_utilities.st"));
+    CHECK(has(paths, "stdlib/tc2_system.st"));
+}
