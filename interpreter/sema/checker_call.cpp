@@ -178,6 +178,23 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         unqualified.name = callee.name;
         calleeName = &unqualified;
     }
+    // THIS^.AssertEquals(...) in a TcUnit suite: TcUnit's assertions and test
+    // control are methods of FB_TestSuite, strun's are built-in functions
+    // (decision 0145), so a call through THIS^/SUPER^ of a name the suite has
+    // no method of is the built-in one.
+    if (callee.kind == ast::ExprKind::Member && callee.kids[0]->kind == ast::ExprKind::Deref &&
+        (callee.kids[0]->kids[0]->kind == ast::ExprKind::This || callee.kids[0]->kids[0]->kind == ast::ExprKind::Super) && pou_ &&
+        hasBuiltin(upper(callee.name))) {
+        PouInfo* fb = pou_->owner ? pou_->owner : pou_;
+        bool suite = false;
+        for (const PouInfo* p = fb; p && !suite; p = p->parent) suite = upper(p->name) == "FB_TESTSUITE";
+        if (suite && fb->kind == ast::PouKind::FunctionBlock && !findMethod(fb, upper(callee.name))) {
+            unqualified.kind = ast::ExprKind::Name;
+            unqualified.loc = callee.nameLoc.line ? callee.nameLoc : callee.loc;
+            unqualified.name = callee.name;
+            calleeName = &unqualified;
+        }
+    }
     if (calleeName->kind == ast::ExprKind::Name) {
         const ast::Expr& callee = *calleeName;
         std::string key = upper(callee.name);

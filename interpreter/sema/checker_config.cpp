@@ -1,6 +1,7 @@
 // CONFIGURATION / RESOURCE / TASK / PROGRAM ... WITH: program instances and
 // the tasks that run them; or, without a CONFIGURATION, the contract's
 // default: every PROGRAM in one freewheeling MainTask.
+#include <algorithm>
 #include <cctype>
 #include <cstring>
 
@@ -8,6 +9,7 @@
 
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/node_factory.h"
+#include "interpreter/source/twincat_tasks.h"
 #include "runtime/plc_profile.h"
 #include "runtime/task_rules.h"
 #include "stdlib/time_literals.h"
@@ -52,16 +54,25 @@ void Checker::buildConfiguration() {
         buildDefaultConfiguration();
         return;
     }
-    if (configurations_.size() > 1)
-        error(configurations_[1]->loc, "only one CONFIGURATION per project");
-    ast::Configuration& conf = *configurations_.front();
+    // The task objects (.TcTTO) of a TwinCAT project each bring a configuration
+    // of this name: together they are the project's one (decision 0144).
+    auto fromTaskObject = [](const ast::Configuration* c) { return c->name == source::kTwinCatTasksConfiguration; };
+    const bool taskObjectsOnly = std::all_of(configurations_.begin(), configurations_.end(), fromTaskObject);
+    if (configurations_.size() > 1 && !taskObjectsOnly) {
+        auto& d = error(configurations_[1]->loc, "only one CONFIGURATION per project");
+        if (std::any_of(configurations_.begin(), configurations_.end(), fromTaskObject))
+            d.withHelp("a TwinCAT project's tasks come from its .TcTTO files; remove them or the CONFIGURATION");
+    }
     std::vector<const ast::TaskDecl*> taskDecls;
     std::vector<const ast::ProgramConfig*> programDecls;
-    for (auto& t : conf.tasks) taskDecls.push_back(&t);
-    for (auto& p : conf.programs) programDecls.push_back(&p);
-    for (auto& r : conf.resources) {
-        for (auto& t : r.tasks) taskDecls.push_back(&t);
-        for (auto& p : r.programs) programDecls.push_back(&p);
+    for (size_t k = 0; k < (taskObjectsOnly ? configurations_.size() : 1); ++k) {
+        ast::Configuration& conf = *configurations_[k];
+        for (auto& t : conf.tasks) taskDecls.push_back(&t);
+        for (auto& p : conf.programs) programDecls.push_back(&p);
+        for (auto& r : conf.resources) {
+            for (auto& t : r.tasks) taskDecls.push_back(&t);
+            for (auto& p : r.programs) programDecls.push_back(&p);
+        }
     }
     // Tasks
     auto constTime = [&](const ast::Expr* e, rt::PlcTime& out) {
