@@ -261,6 +261,15 @@ void Checker::buildConfiguration() {
         currentPouName_ = nullptr;
         task->calls.push_back({&inst, inst.pou->code, inst.memory, inst.name});
     }
+    // TwinCAT: every PROGRAM has its instance, named after it, whether a task
+    // calls it or not; one that no task calls runs only when a POU calls it.
+    if (taskObjectsOnly)
+        for (PouInfo* p : pouOrder_) {
+            if (p->kind != ast::PouKind::Program || libraryFiles_.count(p->ast->loc.file)) continue;
+            const std::string key = upper(p->name);
+            if (std::none_of(model_.programs.begin(), model_.programs.end(), [&](const ProgramInstance& i) { return upper(i.name) == key; }))
+                instantiateProgram(p->name, p, p->ast->loc);
+        }
     if (!options_.testProgram.empty()) addTestProgram(options_.testProgram);
     for (const auto& t : model_.tasks)
         if (std::string problem = rt::programCountProblem(profile(), t.spec, int(t.calls.size())); !problem.empty())
