@@ -139,6 +139,7 @@ private:
     void buildClasses();
     void collectInterfaces(PouInfo* itf, std::vector<PouInfo*>& out);
     PouInfo* findMethod(PouInfo* owner, const std::string& upperName);
+    bool isSuiteBuiltinCall(const ast::Expr& callee);  // THIS^.AssertTrue(...) in a TcUnit suite (checker_call.cpp)
     Checked methodCall(Checked base, PouInfo* method, const ast::Expr& call);
     Checked checkThis(const ast::Expr& e, bool deref);
     Checked propertyAccess(Checked base, const std::string& upperName, const ast::Loc& loc, bool& found);

@@ -166,6 +166,21 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
     return r;
 }
 
+// THIS^.AssertEquals(...) in a TcUnit suite: TcUnit's assertions and test
+// control are methods of FB_TestSuite, strun's are built-in functions
+// (decision 0145), so a call through THIS^/SUPER^ of a name the suite has no
+// method of is the built-in one.
+bool Checker::isSuiteBuiltinCall(const ast::Expr& callee) {
+    if (callee.kind != ast::ExprKind::Member || callee.kids[0]->kind != ast::ExprKind::Deref || !pou_) return false;
+    const ast::ExprKind self = callee.kids[0]->kids[0]->kind;
+    if ((self != ast::ExprKind::This && self != ast::ExprKind::Super) || !hasBuiltin(upper(callee.name))) return false;
+    PouInfo* fb = pou_->owner ? pou_->owner : pou_;
+    if (fb->kind != ast::PouKind::FunctionBlock || findMethod(fb, upper(callee.name))) return false;
+    for (const PouInfo* p = fb; p; p = p->parent)
+        if (upper(p->name) == "FB_TESTSUITE") return true;
+    return false;
+}
+
 Checked Checker::checkCall(const ast::Expr& e, bool statement) {
     const ast::Expr& callee = *e.kids[0];
     // Lib.F(...): namespaces are flattened (names are unique in the project), so
@@ -173,6 +188,12 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
     ast::Expr unqualified;
     const ast::Expr* calleeName = &callee;
     if (callee.kind == ast::ExprKind::Member && isNamespace(*callee.kids[0]) && !lookupVar(upper(callee.kids[0]->name))) {
+        unqualified.kind = ast::ExprKind::Name;
+        unqualified.loc = callee.nameLoc.line ? callee.nameLoc : callee.loc;
+        unqualified.name = callee.name;
+        calleeName = &unqualified;
+    }
+    if (isSuiteBuiltinCall(callee)) {
         unqualified.kind = ast::ExprKind::Name;
         unqualified.loc = callee.nameLoc.line ? callee.nameLoc : callee.loc;
         unqualified.name = callee.name;

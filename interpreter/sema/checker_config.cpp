@@ -1,6 +1,7 @@
 // CONFIGURATION / RESOURCE / TASK / PROGRAM ... WITH: program instances and
 // the tasks that run them; or, without a CONFIGURATION, the contract's
 // default: every PROGRAM in one freewheeling MainTask.
+#include <algorithm>
 #include <cctype>
 #include <cstring>
 
@@ -8,6 +9,7 @@
 
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/node_factory.h"
+#include "interpreter/source/twincat_tasks.h"
 #include "runtime/plc_profile.h"
 #include "runtime/task_rules.h"
 #include "stdlib/time_literals.h"
@@ -52,16 +54,25 @@ void Checker::buildConfiguration() {
         buildDefaultConfiguration();
         return;
     }
-    if (configurations_.size() > 1)
-        error(configurations_[1]->loc, "only one CONFIGURATION per project");
-    ast::Configuration& conf = *configurations_.front();
+    // The task objects (.TcTTO) of a TwinCAT project each bring a configuration
+    // of this name: together they are the project's one (decision 0144).
+    auto fromTaskObject = [](const ast::Configuration* c) { return c->name == source::kTwinCatTasksConfiguration; };
+    const bool taskObjectsOnly = std::all_of(configurations_.begin(), configurations_.end(), fromTaskObject);
+    if (configurations_.size() > 1 && !taskObjectsOnly) {
+        auto& d = error(configurations_[1]->loc, "only one CONFIGURATION per project");
+        if (std::any_of(configurations_.begin(), configurations_.end(), fromTaskObject))
+            d.withHelp("a TwinCAT project's tasks come from its .TcTTO files; remove them or the CONFIGURATION");
+    }
     std::vector<const ast::TaskDecl*> taskDecls;
     std::vector<const ast::ProgramConfig*> programDecls;
-    for (auto& t : conf.tasks) taskDecls.push_back(&t);
-    for (auto& p : conf.programs) programDecls.push_back(&p);
-    for (auto& r : conf.resources) {
-        for (auto& t : r.tasks) taskDecls.push_back(&t);
-        for (auto& p : r.programs) programDecls.push_back(&p);
+    for (size_t k = 0; k < (taskObjectsOnly ? configurations_.size() : 1); ++k) {
+        ast::Configuration& conf = *configurations_[k];
+        for (auto& t : conf.tasks) taskDecls.push_back(&t);
+        for (auto& p : conf.programs) programDecls.push_back(&p);
+        for (auto& r : conf.resources) {
+            for (auto& t : r.tasks) taskDecls.push_back(&t);
+            for (auto& p : r.programs) programDecls.push_back(&p);
+        }
     }
     // Tasks
     auto constTime = [&](const ast::Expr* e, rt::PlcTime& out) {
@@ -250,6 +261,15 @@ void Checker::buildConfiguration() {
         currentPouName_ = nullptr;
         task->calls.push_back({&inst, inst.pou->code, inst.memory, inst.name});
     }
+    // TwinCAT: every PROGRAM has its instance, named after it, whether a task
+    // calls it or not; one that no task calls runs only when a POU calls it.
+    if (taskObjectsOnly)
+        for (PouInfo* p : pouOrder_) {
+            if (p->kind != ast::PouKind::Program || libraryFiles_.count(p->ast->loc.file)) continue;
+            const std::string key = upper(p->name);
+            if (std::none_of(model_.programs.begin(), model_.programs.end(), [&](const ProgramInstance& i) { return upper(i.name) == key; }))
+                instantiateProgram(p->name, p, p->ast->loc);
+        }
     if (!options_.testProgram.empty()) addTestProgram(options_.testProgram);
     for (const auto& t : model_.tasks)
         if (std::string problem = rt::programCountProblem(profile(), t.spec, int(t.calls.size())); !problem.empty())

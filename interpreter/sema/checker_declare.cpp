@@ -520,7 +520,9 @@ void Checker::layoutPou(PouInfo* pou) {
         }
     }
     declareVars(pou, pou->ast->vars, instOff, frameOff, hasInstance ? &fields : nullptr);
-    if (inst && pou->kind == ast::PouKind::FunctionBlock) declareMethodInstanceVars(pou, instOff, fields);
+    // A PROGRAM's methods keep their VAR_INST in the program instance as a block's do (decision 0146).
+    if (inst && (pou->kind == ast::PouKind::FunctionBlock || pou->kind == ast::PouKind::Program))
+        declareMethodInstanceVars(pou, instOff, fields);
     if (inst) {
         uint32_t align = 8;
         inst->fields = std::move(fields);
@@ -540,7 +542,7 @@ void Checker::layoutPou(PouInfo* pou) {
             }
         };
         initialise(pou);
-        if (pou->kind == ast::PouKind::FunctionBlock)
+        if (pou->kind == ast::PouKind::FunctionBlock || pou->kind == ast::PouKind::Program)
             for (auto& [name, m] : pou->methods) initialise(m);  // the methods' VAR_INST
         if (pou->kind == ast::PouKind::FunctionBlock) {
             // Every FB instance starts with its class (methods dispatch through it).

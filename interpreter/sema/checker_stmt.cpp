@@ -380,6 +380,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                     if (upper(prog.name) == upper(callee.name)) maybeFb = true;
             }
             if (callee.kind == ast::ExprKind::Name && pou_ && pou_->result && upper(callee.name) == upper(pou_->result->name)) maybeFb = false;
+            if (isSuiteBuiltinCall(callee)) maybeFb = false;  // THIS^.AssertTrue(...) in a suite (decision 0145)
             if (maybeFb) {
                 bool isMethod = false;
                 const bool qualifiedGlobal = callee.kind == ast::ExprKind::Member && isNamespace(*callee.kids[0]) &&

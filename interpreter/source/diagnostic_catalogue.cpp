@@ -48,7 +48,8 @@ const std::vector<CodeInfo> kCatalogue = {
      "", ""},
     {"E0008", K::Error, "not a usable source file",
      "A FILE that strun cannot read as a project source: XML that is not well-formed, XML that is not a PLCopen TC6 "
-     "project, or a POU whose body is written in another language than ST (LD, FBD, IL, SFC, CFC).",
+     "project, a POU whose body is written in another language than ST (LD, FBD, IL, SFC, CFC), or a TwinCAT task "
+     "object (.TcTTO) whose CycleTime or Priority is not a whole number or whose PouCall names no program.",
      "", ""},
     {"E0009", K::Error, "a declaration in the wrong place",
      "A declaration that is valid ST but not where it stands: VAR blocks other than VAR_GLOBAL outside a POU, a "

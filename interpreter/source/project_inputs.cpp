@@ -22,7 +22,7 @@ std::string lowerExtension(const std::string& path) {
 
 bool isTwinCatObject(const std::string& path) {
     const std::string ext = lowerExtension(path);
-    return ext == ".tcpou" || ext == ".tcdut" || ext == ".tcgvl" || ext == ".tcio";
+    return ext == ".tcpou" || ext == ".tcdut" || ext == ".tcgvl" || ext == ".tcio" || ext == ".tctto";
 }
 
 // The bytes of the project's files read so far, for the project size limit.

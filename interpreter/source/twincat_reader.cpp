@@ -1,5 +1,5 @@
 // TwinCAT 3 PLC objects: <TcPlcObject> holding one POU (with Method,
-// Property/Get/Set, Action, Transition children), DUT, GVL or Itf. The ST
+// Property/Get/Set, Action, Transition children), DUT, GVL, Itf or Task. The ST
 // lives in CDATA sections of <Declaration> and <Implementation><ST>; strun
 // adds the END_xxx lines TwinCAT leaves out.
 #include <cctype>
@@ -7,6 +7,7 @@
 
 #include <pugixml.hpp>
 
+#include "interpreter/source/twincat_tasks.h"
 #include "interpreter/source/xml_conversion.h"
 
 namespace strun::source {
@@ -140,6 +141,8 @@ struct Reader : XmlConversion {
                 written(n, std::string("NAMESPACE ") + n.attribute("Name").value());
                 copyText(n.child("Declaration"));
                 written(n, "END_NAMESPACE");
+            } else if (tag == "Task") {
+                convertTwinCatTask(*this, n);  // a .TcTTO (decision 0144)
             } else if (tag == "Itf") {
                 copyText(n.child("Declaration"));
                 methods(n, true);
