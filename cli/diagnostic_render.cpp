@@ -263,6 +263,36 @@ void printJson(std::ostream& out, const Diagnostic& d, const SourceSet& sources)
 
 }  // namespace
 
+void printRuntimeFault(std::ostream& out, const RuntimeFault& fault, const SourceSet& sources, DiagnosticFormat format,
+                       bool color) {
+    // Only plain ST text: a converted file's (XML) runtime positions are not mapped here.
+    const bool st = fault.loc.file >= 0 && fault.loc.file < sources.size() && sources.file(fault.loc.file).origins.empty() &&
+                    fault.loc.line > 0;
+    if (format == DiagnosticFormat::Json) {
+        nlohmann::ordered_json j;
+        j["code"] = fault.code;
+        j["severity"] = "runtime error";
+        const Where w = st ? locate(sources, fault.loc) : Where{};
+        j["file"] = st ? w.path : fault.where.substr(0, fault.where.find(':'));
+        j["line"] = st ? w.line : std::max(fault.loc.line, 1);
+        j["column"] = st ? w.col : std::max(fault.loc.col, 1);
+        j["task"] = fault.task;
+        j["message"] = fault.message;
+        j["notes"] = nlohmann::ordered_json::array();
+        j["suggestions"] = nlohmann::ordered_json::array();
+        out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+        return;
+    }
+    Style style;
+    style.on = color;
+    out << style.paint(kBold, fault.where + ':') << ' ' << style.paint(kRed, "runtime error:") << ' '
+        << style.paint(kBold, fault.code + " in " + fault.task + ": " + fault.message) << '\n';
+    if (!st) return;
+    const Where w = locate(sources, fault.loc);
+    const Excerpt e = excerptFor(w, nullptr);
+    printExcerpt(out, e, style, kRed, '^', std::to_string(e.line).size());
+}
+
 bool stderrWantsColor(ColorMode mode) {
     if (mode == ColorMode::Always) return true;
     if (mode == ColorMode::Never) return false;

@@ -22,6 +22,20 @@ namespace strun::cli {
 bool printDiagnostics(const CompileLog& log, const SourceSet& sources, const DiagnosticOptions& options, std::ostream& out,
                       bool colorTerminal);
 
+// A runtime fault of `strun run`: its first line `FILE:LINE:COL: runtime
+// error: CODE in TASK: MESSAGE` (fixed by the outside interface, given as
+// `where` and `rest`), then the source excerpt of `loc` when it is a line of an
+// ST file; with --diagnostics-format json one object instead (decision 0163).
+struct RuntimeFault {
+    ast::Loc loc;          // file -1: unknown
+    std::string where;     // FILE:LINE:COL as the first line prints it
+    std::string code;      // DIV_BY_ZERO, ...
+    std::string task;
+    std::string message;
+};
+void printRuntimeFault(std::ostream& out, const RuntimeFault& fault, const SourceSet& sources, DiagnosticFormat format,
+                       bool color);
+
 // --color auto: stderr is a terminal, TERM is not "dumb" and NO_COLOR is unset.
 bool stderrWantsColor(ColorMode mode);
 

@@ -13,6 +13,7 @@
 #include "cli/compile_step.h"
 #include "cli/exit_codes.h"
 #include "cli/option_types.h"
+#include "cli/diagnostic_render.h"
 #include "cli/run_report.h"
 #include "cli/stimulus_args.h"
 #include "interpreter/project/stimulus_build.h"
@@ -196,7 +197,7 @@ int runCommand(const CommandLine& line) {
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
     if (retain) retain->save();  // however the run ended
-    printFaultReport(std::cerr, scheduler);
+    printFaultReport(std::cerr, scheduler, compiled.sources, line.diagnostics, stderrWantsColor(line.diagnostics.color));
     if (!line.dump && !line.quiet) printRunSummary(std::cerr, scheduler, state);
     if (line.dump) {
         nlohmann::ordered_json out;

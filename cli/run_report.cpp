@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "cli/diagnostic_render.h"
 #include "stdlib/value_format.h"
 
 namespace strun::cli {
@@ -26,10 +27,19 @@ std::string microsText(const nlohmann::ordered_json& micros) {
 
 }  // namespace
 
-void printFaultReport(std::ostream& out, const rt::Scheduler& scheduler) {
-    for (const rt::DiagEntry& e : scheduler.stopFaults())
-        out << location(e, scheduler.sourceFiles()) << ": runtime error: " << rt::diagCodeName(e.code) << " in "
-            << (e.task.empty() ? std::string("-") : e.task) << ": " << e.message << "\n";
+void printFaultReport(std::ostream& out, const rt::Scheduler& scheduler, const SourceSet& sources,
+                      const DiagnosticOptions& options, bool color) {
+    for (const rt::DiagEntry& e : scheduler.stopFaults()) {
+        RuntimeFault fault;
+        fault.loc.file = e.file;
+        fault.loc.line = e.line;
+        fault.loc.col = e.col > 0 ? e.col : 1;
+        fault.where = location(e, scheduler.sourceFiles());
+        fault.code = rt::diagCodeName(e.code);
+        fault.task = e.task.empty() ? std::string("-") : e.task;
+        fault.message = e.message;
+        printRuntimeFault(out, fault, sources, options.format, color);
+    }
 }
 
 void printRunSummary(std::ostream& out, const rt::Scheduler& scheduler, rt::PlcState state) {

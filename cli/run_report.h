@@ -6,12 +6,16 @@
 
 #include <ostream>
 
+#include "cli/diagnostic_options.h"
+#include "interpreter/source/source_set.h"
 #include "runtime/scheduler.h"
 
 namespace strun::cli {
 
-// `FILE:LINE:COL: runtime error: CODE in TASK: MESSAGE`, one per stopping fault.
-void printFaultReport(std::ostream& out, const rt::Scheduler& scheduler);
+// `FILE:LINE:COL: runtime error: CODE in TASK: MESSAGE`, one per stopping
+// fault, each followed by its source excerpt (cli/diagnostic_render.h).
+void printFaultReport(std::ostream& out, const rt::Scheduler& scheduler, const SourceSet& sources,
+                      const DiagnosticOptions& options, bool color);
 void printRunSummary(std::ostream& out, const rt::Scheduler& scheduler, rt::PlcState state);
 
 }  // namespace strun::cli

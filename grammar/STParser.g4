@@ -161,7 +161,7 @@ varQualifier
 // (`prog.x AT %QW1 : INT;`) and VAR_ACCESS (`name : prog.var : INT READ_ONLY;`).
 varDecl
     : varName (COMMA varName)* (AT DIRECT_ADDRESS)? COLON (accessPath COLON)?
-        typeSpec (ASSIGN initializer)? (READ_ONLY | READ_WRITE)? SEMI
+        typeSpec (ASSIGN initializer)? (READ_ONLY | READ_WRITE)? SEMI?   // a missing ';' is reported by the AST builder
     ;
 
 varName

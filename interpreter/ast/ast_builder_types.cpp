@@ -47,6 +47,8 @@ VarBlock AstBuilder::varBlock(P::VarBlockContext* c) {
 
 VarDecl AstBuilder::varDecl(P::VarDeclContext* c, VarSection section) {
     VarDecl out;
+    if (c->SEMI() == nullptr && c->exception == nullptr && c->getStop() != nullptr && c->getStart() != nullptr)
+        reportMissingDeclarationSemicolon(errors_, &tokens_, c->getStart(), c->getStop());
     out.loc = loc(c);
     out.pragmas = pragmasBefore(c->getStart());
     for (auto* n : c->varName()) {

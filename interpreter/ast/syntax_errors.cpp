@@ -174,6 +174,12 @@ size_t closingKeyword(antlr4::ParserRuleContext* c) {
 
 }  // namespace
 
+void reportMissingDeclarationSemicolon(SyntaxErrorReporter& reporter, antlr4::TokenStream* tokens, antlr4::Token* first,
+                                       antlr4::Token* last) {
+    const size_t column = last->getCharPositionInLine() + codePoints(last->getText());
+    reporter.report(last->getLine(), column, fmt::format("expected ';' after '{}'", excerpt(tokens, first, last)));
+}
+
 bool FriendlyErrorStrategy::reportMissingSemicolon(antlr4::Parser* parser, antlr4::Token* found,
                                                    const antlr4::misc::IntervalSet& expected) {
     // In a declaration the parser may not list ';' (it was still deciding

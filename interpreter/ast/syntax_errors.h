@@ -52,6 +52,12 @@ private:
     size_t orphanCloser_ = 0;  // the END_ keyword of a statement recovery dropped (not reported again)
 };
 
+// A declaration the grammar accepted without its ';' (`speed : INT` and on
+// the next line `limit : INT;`): the same E0002 as a statement's missing ';',
+// right after `last`; the next declaration is kept (decision 0163).
+void reportMissingDeclarationSemicolon(SyntaxErrorReporter& reporter, antlr4::TokenStream* tokens, antlr4::Token* first,
+                                       antlr4::Token* last);
+
 // Forwards parser errors into the CompileLog as "syntax error: ...".
 class SyntaxErrorReporter : public antlr4::BaseErrorListener {
 public:

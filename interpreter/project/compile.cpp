@@ -71,6 +71,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     auto model = std::make_unique<sema::ProgramModel>();
     sema::Checker checker(*model, log);
     checker.setLibraryFiles(libraryFiles);
+    checker.setLibraryNames(embeddedLibraryNames().types, embeddedLibraryNames().functions);
     checker.setCompileOptions(options);
     if (const rt::PlcProfile* profile = rt::findProfile(options.target)) checker.setProfile(*profile);
     stdlib::registerBuiltins(checker);

@@ -37,19 +37,29 @@ void forEachWord(std::string_view text, F&& f) {
 }
 
 // The names a library file declares: the word after each POU keyword (and
-// after TYPE: library files declare one type per TYPE block).
-std::vector<std::string> declaredNames(std::string_view text) {
-    std::vector<std::string> names;
-    bool nextIsName = false;
+// after TYPE: library files declare one type per TYPE block), as written,
+// with the keyword (upper case) that declares it.
+struct Declared {
+    std::string keyword, name;
+};
+std::vector<Declared> declaredWithKeyword(std::string_view text) {
+    std::vector<Declared> out;
+    std::string keyword;
     forEachWord(text, [&](std::string_view word) {
         const std::string w = upper(word);
-        if (nextIsName) {
-            names.push_back(w);
-            nextIsName = false;
+        if (!keyword.empty()) {
+            out.push_back({keyword, std::string(word)});
+            keyword.clear();
         } else if (w == "FUNCTION_BLOCK" || w == "FUNCTION" || w == "INTERFACE" || w == "PROGRAM" || w == "NAMESPACE" || w == "TYPE") {
-            nextIsName = true;
+            keyword = w;
         }
     });
+    return out;
+}
+
+std::vector<std::string> declaredNames(std::string_view text) {
+    std::vector<std::string> names;
+    for (const Declared& d : declaredWithKeyword(text)) names.push_back(upper(d.name));
     return names;
 }
 
@@ -92,6 +102,19 @@ std::vector<const stdlib::EmbeddedSource*> embeddedSourcesFor(const std::vector<
     for (size_t i = 0; i < sources.size(); ++i)
         if (selected[i]) out.push_back(&sources[i]);
     return out;
+}
+
+const LibraryNames& embeddedLibraryNames() {
+    static const LibraryNames names = [] {
+        LibraryNames built;
+        for (const auto& src : stdlib::embeddedSources())
+            for (const Declared& d : declaredWithKeyword(src.text)) {
+                if (d.keyword == "FUNCTION") built.functions.push_back(d.name);
+                if (d.keyword == "FUNCTION_BLOCK" || d.keyword == "INTERFACE" || d.keyword == "TYPE") built.types.push_back(d.name);
+            }
+        return built;
+    }();
+    return names;
 }
 
 }  // namespace strun::project

@@ -5,6 +5,7 @@
 // comment or string may pull in a file it does not need, never the reverse.
 #pragma once
 
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -14,5 +15,13 @@ namespace strun::project {
 
 // In the order of embeddedSources().
 std::vector<const stdlib::EmbeddedSource*> embeddedSourcesFor(const std::vector<std::string_view>& projectTexts);
+
+// Every block type (FUNCTION_BLOCK, INTERFACE) and FUNCTION an embedded file
+// declares, as written, found by the same lexical scan: the "did you mean"
+// candidates of the files a project did not select (`TONN` -> 'TON').
+struct LibraryNames {
+    std::vector<std::string> types, functions;
+};
+const LibraryNames& embeddedLibraryNames();
 
 }  // namespace strun::project

@@ -259,12 +259,19 @@ private:
     bool assignedResult_ = false;
     std::vector<std::unique_ptr<ast::TypeDecl>> inlineEnumDecls_;
     std::set<int> libraryFiles_;
+    std::vector<std::string> libraryTypeNames_, libraryFunctionNames_;  // also of library files not loaded
     Diagnostic discarded_;  // what warning() hands back for the library's own lines (never printed)
     const rt::PlcProfile* profile_ = &rt::defaultProfile();
 
 public:
     // Files whose POUs are the standard library (no unused-variable warnings).
     void setLibraryFiles(std::set<int> files) { libraryFiles_ = std::move(files); }
+    // The library's block types and functions, also of files the project did
+    // not load (decision 0150): candidates of "did you mean".
+    void setLibraryNames(std::vector<std::string> types, std::vector<std::string> functions) {
+        libraryTypeNames_ = std::move(types);
+        libraryFunctionNames_ = std::move(functions);
+    }
     // The --target whose task rules, defaults and system variables apply.
     void setProfile(const rt::PlcProfile& profile) { profile_ = &profile; }
     const rt::PlcProfile& profile() const { return *profile_; }

@@ -6,6 +6,7 @@
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/fuse.h"
 #include "interpreter/sema/node_factory.h"
+#include "interpreter/sema/read_before_write.h"
 
 namespace strun::sema {
 
@@ -493,6 +494,7 @@ void Checker::checkBody(PouInfo* pou) {
         if (!definedLabels_.count(upper(name))) error(loc, fmt::format("JMP to undefined label '{}'", name));
     if (pou->kind == ast::PouKind::Function && pou->result && !assignedResult_ && !libraryFiles_.count(pou->ast->loc.file))
         log_.warning(pou->ast->loc, fmt::format("function '{}' never assigns its result", pou->name));
+    if (!libraryFiles_.count(pou->ast->loc.file)) warnReadBeforeWrite(*pou, log_);
     uint32_t size = alignUp(frameTop_, 16);
     pou->code->frameSize = size;
     pou->code->frameInit.resize(size, 0);

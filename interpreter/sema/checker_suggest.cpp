@@ -58,6 +58,7 @@ std::vector<std::string> Checker::typeNames() const {
     for (const auto& [key, decl] : typeDecls_) out.push_back(decl->name);
     for (const auto& [key, p] : pous_)
         if (p->kind == ast::PouKind::FunctionBlock || p->kind == ast::PouKind::Interface) out.push_back(p->name);
+    out.insert(out.end(), libraryTypeNames_.begin(), libraryTypeNames_.end());
     return out;
 }
 
@@ -66,6 +67,7 @@ std::vector<std::string> Checker::functionNames() const {
     for (const auto& [key, p] : pous_)
         if (p->kind == ast::PouKind::Function) out.push_back(p->name);
     for (const auto& [key, fn] : builtins_) out.push_back(key);
+    out.insert(out.end(), libraryFunctionNames_.begin(), libraryFunctionNames_.end());
     return out;
 }
 

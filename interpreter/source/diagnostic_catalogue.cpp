@@ -283,6 +283,17 @@ const std::vector<CodeInfo> kCatalogue = {
      "A constant string is assigned (or passed, or given as initial value) to a STRING[n] shorter than it: only the "
      "first n characters are kept. Declare the variable longer, or shorten the text.",
      "VAR msg : STRING[5]; END_VAR\nmsg := 'Motor started';", "VAR msg : STRING[20]; END_VAR\nmsg := 'Motor started';"},
+    {"W0017", K::Warning, "a variable is read before it is ever written",
+     "A local variable of a FUNCTION or METHOD (VAR, VAR_TEMP) without an initial value starts at 0 on every call; "
+     "it keeps nothing from the previous call. Reading it before any assignment reads that 0, which is rarely what "
+     "was meant: often the assignment was forgotten, or the variable should be a VAR_INPUT, a VAR_STAT, or belong to "
+     "a FUNCTION_BLOCK, whose variables keep their value between calls.\n\n"
+     "The check is conservative (decision 0162): statements are followed in order; an assignment inside an IF, CASE "
+     "or loop counts as done for everything after that statement; a variable passed to a call as a bare argument "
+     "(which a VAR_IN_OUT or ADR may write) counts as written; a POU with JMP labels is not checked. So a warning "
+     "always points at a read of the initial value.",
+     "FUNCTION Total : INT\nVAR_INPUT x : INT; END_VAR\nVAR sum : INT; END_VAR\nsum := sum + x;\nTotal := sum;\nEND_FUNCTION",
+     "FUNCTION Total : INT\nVAR_INPUT x : INT; END_VAR\nVAR sum : INT := 0; END_VAR\nsum := sum + x;\nTotal := sum;\nEND_FUNCTION"},
     {"W0999", K::Warning, "other warning", "A warning without a more specific code. The message says what it is.",
      "", ""},
     // ---- runtime faults (the diagnostic buffer; names fixed by the outside interface)

@@ -62,3 +62,14 @@ TEST_CASE("a Tc2_Utilities helper pulls in the type file it uses", "[library]") 
     CHECK(has(paths, "stdlib/tc2_utilities.st"));
     CHECK(has(paths, "stdlib/tc2_system.st"));
 }
+
+TEST_CASE("every library block and function is a 'did you mean' candidate, as declared", "[library]") {
+    const auto& names = strun::project::embeddedLibraryNames();
+    auto in = [](const std::vector<std::string>& list, const std::string& n) { return std::find(list.begin(), list.end(), n) != list.end(); };
+    CHECK(in(names.types, "TON"));
+    CHECK(in(names.types, "CTU"));
+    CHECK(in(names.types, "R_TRIG"));
+    CHECK(in(names.functions, "WRITE_PROTECTED_INT"));
+    CHECK_FALSE(in(names.types, "WRITE_PROTECTED_INT"));  // a FUNCTION is no type
+    CHECK_FALSE(in(names.functions, "TON"));
+}
