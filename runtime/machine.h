@@ -34,6 +34,7 @@ enum class DiagCode {
     Overrun,       // OVERRUN: cyclic task released while still busy; activation dropped
     NullPointer,   // NULL_POINTER: dereference of a null POINTER/REFERENCE
     TaskError,     // TASK_ERROR: other runtime failure of a task (message says which)
+    SystemWatchdog,  // SYSTEM_WATCHDOG: a family's firmware watchdog (M241: high priorities held the CPU)
 };
 const char* diagCodeName(DiagCode code);
 

@@ -14,6 +14,7 @@ const char* diagCodeName(DiagCode code) {
     case DiagCode::Overrun: return "OVERRUN";
     case DiagCode::NullPointer: return "NULL_POINTER";
     case DiagCode::TaskError: return "TASK_ERROR";
+    case DiagCode::SystemWatchdog: return "SYSTEM_WATCHDOG";
     }
     return "UNKNOWN";
 }

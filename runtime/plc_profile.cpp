@@ -139,6 +139,12 @@ constexpr PlcProfile makeM241() {
     p.externalMinSpacingFastOutputs = 15 * kMillisecond;
     p.inputAliases = kM241Inputs;
     p.taskCycleFunctions = true;
+    // "If the total execution time of the tasks with priorities between 0 and
+    // 24 reaches 100% of processor resources for more than 1 second, an
+    // application error is detected" (Schneider's M241 programming guide,
+    // the system watchdog seed 003 names; decision 0120).
+    p.systemWatchdogBusy = 1000 * kMillisecond;
+    p.systemWatchdogMaxPriority = 24;
     return p;
 }
 

@@ -131,6 +131,11 @@ struct PlcProfile {
     std::span<const InputAlias> inputAliases;
     SystemVariables systemVariables = SystemVariables::None;
     bool taskCycleFunctions = false;  // M241: GetCurrentTaskCycle / SetCurrentTaskCycle
+    // M241 system watchdog: tasks of priority 0..systemWatchdogMaxPriority
+    // holding the processor without a pause for longer than systemWatchdogBusy
+    // (0: no such watchdog) stop the controller with SYSTEM_WATCHDOG.
+    PlcTime systemWatchdogBusy = 0;
+    int systemWatchdogMaxPriority = 0;
 
     const KindLimits& limits(TaskKind kind) const { return kinds[kindIndex(kind)]; }
     const FixedTask* fixedTask(std::string_view name) const;  // case-insensitive; nullptr: not one

@@ -214,9 +214,12 @@ void Scheduler::mainLoop() {
         if (machine_.now >= forEnd_) return;
         processDue();
         if (TaskRun* next = pickReady(nullptr)) {
+            noteBusy(next);
             runActivation(*next);
+            checkSystemWatchdog();
             continue;
         }
+        noteBusy(nullptr);
         idle();
     }
 }
@@ -628,6 +631,7 @@ bool Scheduler::onAttention() {
         }
         processDue();
         checkWatchdogs();
+        checkSystemWatchdog();
         if (ending_) continue;
         if (current.abortRequested) {
             armNextAttention();
@@ -658,6 +662,33 @@ bool Scheduler::onAttention() {
 void Scheduler::checkWatchdogs() {
     for (TaskRun* task : stack_)
         if (machine_.now >= task->watchdogAt) tripWatchdog(*task);
+}
+
+// The processor passes from the base level to `next` (nullptr: idle). A task
+// above the system watchdog's priorities, or a pause, ends the busy stretch.
+void Scheduler::noteBusy(const TaskRun* next) {
+    if (profile_.systemWatchdogBusy <= 0) return;
+    if (!next || next->spec.priority > profile_.systemWatchdogMaxPriority) highBusySince_ = kNever;
+    else if (highBusySince_ == kNever) highBusySince_ = machine_.now;
+}
+
+void Scheduler::checkSystemWatchdog() {
+    if (highBusySince_ == kNever || ending_ || machine_.now - highBusySince_ <= profile_.systemWatchdogBusy) return;
+    const TaskRun* current = stack_.empty() ? nullptr : stack_.back();
+    // Reported where the running task was, like a task watchdog.
+    std::string pou;
+    int line = 0, file = -1, col = 0;
+    if (current && current->body) {
+        current->body->currentPosition(pou, line);
+        current->body->currentFileAndColumn(file, col);
+    }
+    record(DiagCode::SystemWatchdog, current, pou, line,
+           "tasks of priority 0.." + std::to_string(profile_.systemWatchdogMaxPriority) + " held the processor without a pause for more than " +
+               formatDuration(profile_.systemWatchdogBusy) + " (since " + formatDuration(highBusySince_) +
+               "); application error: the controller stops",
+           file, col);
+    highBusySince_ = kNever;
+    faultStop(current, DiagCode::SystemWatchdog, PlcState::Stop);
 }
 
 void Scheduler::tripWatchdog(TaskRun& task) {
@@ -719,7 +750,8 @@ void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::stri
         faultStop(current, code, PlcState::Stop);
         return;
     case DiagCode::CallDepth:
-    case DiagCode::TaskError: faultStop(current, code, PlcState::Stop); return;
+    case DiagCode::TaskError:
+    case DiagCode::SystemWatchdog: faultStop(current, code, PlcState::Stop); return;
     }
 }
 
@@ -736,6 +768,7 @@ void Scheduler::armNextAttention() {
     PlcTime at = std::min(earliestRelease_, forEnd_);
     if (sampleOnTicks()) at = std::min(at, nextSample_);
     for (const TaskRun* task : stack_) at = std::min(at, task->watchdogAt);
+    if (highBusySince_ != kNever) at = std::min(at, highBusySince_ + profile_.systemWatchdogBusy + 1);
     if (options_.virtualClock) {
         machine_.deadline.store(at);
         // requestStop() may have lowered the deadline just before the store above.

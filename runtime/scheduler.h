@@ -157,6 +157,8 @@ private:
     void runActivation(TaskRun& task);
     void finishActivation(TaskRun& task, bool completed);
     void checkWatchdogs();
+    void noteBusy(const TaskRun* next);
+    void checkSystemWatchdog();
     void tripWatchdog(TaskRun& task);
     void faultStop(const TaskRun* task, DiagCode code, PlcState state);
     void armNextAttention();
@@ -181,6 +183,9 @@ private:
     std::unique_ptr<SystemArea> system_;  // M340 %S / %SW
     PlcState state_ = PlcState::Run;
     bool ending_ = false;          // the run is over: every level unwinds
+    // Since when tasks within the profile's system-watchdog priorities have
+    // held the processor without a pause (kNever: not now).
+    PlcTime highBusySince_ = kNever;
     bool regularStarted_ = false;  // false while the startup task has not finished
     bool hasTriggers_ = false;     // event or status tasks exist
     PlcTime nextSample_ = kNever;  // next scheduler tick that samples event/status BOOLs

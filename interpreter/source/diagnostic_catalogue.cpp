@@ -321,6 +321,13 @@ const std::vector<CodeInfo> kCatalogue = {
      "dropped and counted in the task's overruns. Give the task a longer interval or less work, or a higher "
      "priority.",
      "", ""},
+    {"SYSTEM_WATCHDOG", K::Runtime, "the controller's own watchdog stopped it (runtime, --target m241)",
+     "Under --target m241: tasks of priority 0..24 held the processor without a pause (no idle time, no lower "
+     "priority task) for more than 1 s, which the M241 firmware treats as an application error. Typically a "
+     "cyclic task whose work takes longer than its INTERVAL: on the M241 it restarts right after writing its "
+     "outputs and never lets anything else run. The PLC goes to STOP (exit 3).",
+     "TASK Fast (INTERVAL := T#4ms, PRIORITY := 10);  (* its program needs 5 ms *)",
+     "TASK Fast (INTERVAL := T#8ms, PRIORITY := 10);  (* period above the execution time *)"},
     {"TASK_ERROR", K::Runtime, "other runtime failure of a task (runtime)",
      "A runtime failure without a more specific code; the message says which. The PLC goes to STOP.", "", ""},
     {"WATCHDOG", K::Runtime, "a task ran longer than its watchdog (runtime)",

@@ -15,6 +15,7 @@ TEST_CASE("diagnostic codes have their --dump names", "[names]") {
     CHECK(std::string(diagCodeName(DiagCode::Overrun)) == "OVERRUN");
     CHECK(std::string(diagCodeName(DiagCode::NullPointer)) == "NULL_POINTER");
     CHECK(std::string(diagCodeName(DiagCode::TaskError)) == "TASK_ERROR");
+    CHECK(std::string(diagCodeName(DiagCode::SystemWatchdog)) == "SYSTEM_WATCHDOG");
 }
 
 TEST_CASE("task kinds and PLC states have their --dump names", "[names]") {
