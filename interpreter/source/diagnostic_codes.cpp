@@ -36,7 +36,7 @@ const Rule kErrorRules[] = {
     {"E0104", "is not a value of"},
     {"E0105", "^undeclared function"},
     {"E0106", "^duplicate (declaration|global|member|method|property|type|variable|enumeration|program instance)"},
-    {"E0108", "is a value of several enumerations|qualified_only"},
+    {"E0108", "is a value of several enumerations|qualified_only|declared in several global lists"},
     {"E0109", "is an internal variable of|is PRIVATE|only available inside a function block"},
     {"E0304", "is a function-block instance: call it"},
     {"E0107", "is a POU, not a variable|is a function, not a type|is a variable, not a function|cannot be called|"
@@ -68,7 +68,7 @@ const Rule kErrorRules[] = {
               "^unary|is not defined for|both operands must be|need an explicit conversion|cannot mix|"
               "cannot be compared|multiplied or divided|of durations or dates|needs a BOOL input|needs a REAL|"
               "must be all BOOL|unsupported operator|needs integers"},
-    {"E0601", "task|TASK|CONFIGURATION|RESOURCE|EDGE must|REPEAT must|^AT needs|EXTERNAL|constant duration|"
+    {"E0601", "task|TASK|time event|CONFIGURATION|RESOURCE|EDGE must|REPEAT must|^AT needs|EXTERNAL|constant duration|"
               "global BOOL variable|program instance|interval|priority|watchdog|unknown input"},
     {"E0405", "EXTENDS|ABSTRACT|FINAL|IMPLEMENTS|SUPER|THIS|does not implement|signature|method|property|PROPERTY|"
               "interface|INTERFACE|SET accessor|__QUERYINTERFACE|\\?="},

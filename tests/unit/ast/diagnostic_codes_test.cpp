@@ -39,6 +39,8 @@ TEST_CASE("diagnostic catalogue: messages get the code of their kind of mistake"
     CHECK(classify(Severity::Error, "assignment: cannot convert STRING to INT implicitly") == "E0201");
     CHECK(classify(Severity::Error, "'Q' is an output of 'TON'; connect it with '=>'") == "E0303");
     CHECK(classify(Severity::Error, "EXIT outside a loop") == "E0501");
+    CHECK(classify(Severity::Error, "'x' is declared in several global lists; write one of A.x, B.x") == "E0108");
+    CHECK(classify(Severity::Error, "monthly time event 'T' is on day 29; MONTHLY allows days 1..28") == "E0601");
     // A --strict error keeps the code of the warning it replaces.
     CHECK(classify(Severity::Error, "implicit conversion from REAL to INT: possible loss of data; use REAL_TO_INT") == "W0001");
     CHECK(classify(Severity::Warning, "variable 'x' is never used") == "W0003");
