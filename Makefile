@@ -55,8 +55,8 @@ fuzz: deps
 	cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ -DSTRUN_FUZZ=ON
 	cmake --build build-fuzz -j$(JOBS) --target fuzz_compile_run
 	mkdir -p build-fuzz/corpus
-	ASAN_OPTIONS=detect_leaks=0 build-fuzz/tests/fuzz/fuzz_compile_run build-fuzz/corpus build-fuzz/fuzz-seeds \
-	  -dict=tests/fuzz/st.dict -max_len=4096 -timeout=10 -rss_limit_mb=2048 -max_total_time=$(FUZZ_SECONDS) \
+	ASAN_OPTIONS=detect_leaks=0:quarantine_size_mb=64 build-fuzz/tests/fuzz/fuzz_compile_run build-fuzz/corpus build-fuzz/fuzz-seeds \
+	  -dict=tests/fuzz/st.dict -max_len=4096 -timeout=30 -rss_limit_mb=2048 -max_total_time=$(FUZZ_SECONDS) \
 	  -artifact_prefix=build-fuzz/
 
 fuzz-smoke:
