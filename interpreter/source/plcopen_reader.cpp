@@ -320,12 +320,7 @@ struct Reader : XmlConversion {
 
     void run() {
         pugi::xml_document doc;
-        pugi::xml_parse_result parsed = doc.load_buffer(xml.data(), xml.size(), pugi::parse_default, pugi::encoding_utf8);
-        if (!parsed) {
-            auto [line, col] = positions.at(parsed.offset);
-            result.errors.push_back({line, col, std::string("not well-formed XML: ") + parsed.description()});
-            return;
-        }
+        if (!load(doc)) return;
         pugi::xml_node project = firstElement(doc);
         pugi::xml_node types = child(project, "types");
         std::set<std::string> declared;

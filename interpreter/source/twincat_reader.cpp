@@ -118,12 +118,7 @@ struct Reader : XmlConversion {
 
     void run() {
         pugi::xml_document doc;
-        pugi::xml_parse_result parsed = doc.load_buffer(xml.data(), xml.size(), pugi::parse_default, pugi::encoding_utf8);
-        if (!parsed) {
-            auto [line, col] = positions.at(parsed.offset);
-            result.errors.push_back({line, col, std::string("not well-formed XML: ") + parsed.description()});
-            return;
-        }
+        if (!load(doc)) return;
         pugi::xml_node root = doc.child("TcPlcObject");
         if (!root) {
             result.errors.push_back({1, 1, "not a TwinCAT PLC object (no <TcPlcObject> root)"});

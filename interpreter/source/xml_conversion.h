@@ -26,6 +26,15 @@ struct XmlConversion {
         auto [line, col] = where(n);
         result.errors.push_back({line, col, std::move(message)});
     }
+    // Parses the text into `doc`; a malformed document is an error at the
+    // line and column where pugixml stopped.
+    bool load(pugi::xml_document& doc) {
+        pugi::xml_parse_result parsed = doc.load_buffer(xml.data(), xml.size(), pugi::parse_default, pugi::encoding_utf8);
+        if (parsed) return true;
+        auto [line, col] = positions.at(parsed.offset);
+        result.errors.push_back({line, col, std::string("not well-formed XML: ") + parsed.description()});
+        return false;
+    }
 };
 
 }  // namespace strun::source
