@@ -4,7 +4,9 @@
 #             (against `lua5.4 -e` of one statement)
 #   check_20k `strun check` of a generated 20 000-line project (200 function
 #             blocks with their functions, one program calling them)
-# Prints the best wall-clock time of each (BENCH_REPEATS runs, default 5).
+# Prints the best wall-clock time of each (BENCH_REPEATS runs, default 5) and,
+# when valgrind is installed, the instructions callgrind counts for one run
+# (repeatable where wall times are noisy; BENCH_INSTRUCTIONS=0 skips them).
 #
 # usage: benchmarks/startup.sh [path-to-strun]
 set -u
@@ -17,6 +19,12 @@ if [[ ! -x "$strun" ]]; then
 fi
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
+
+instructions() {  # instructions CMD...: callgrind's instruction count of one run, or "-"
+    if [[ "${BENCH_INSTRUCTIONS:-1}" == 0 ]] || ! command -v valgrind >/dev/null 2>&1; then echo "-"; return; fi
+    valgrind --tool=callgrind --callgrind-out-file="$scratch/cg.out" "$@" >/dev/null 2>"$scratch/cg.err" || { echo "-"; return; }
+    awk '/^summary:/ { printf "%.1fM", $2 / 1e6 }' "$scratch/cg.out"
+}
 
 best_ms() {  # best_ms CMD...: the fastest of $repeats runs in ms (exit 1 if a run fails)
     local best="" r start end ns
@@ -120,11 +128,16 @@ ST
 } >"$gen"
 lines=$(wc -l <"$gen")
 
-echo "strun: $strun   best of $repeats runs each (wall ms)"
-printf '%-12s %10s %10s\n' "start-up" "strun ms" "lua ms"
+echo "strun: $strun   best of $repeats runs each (wall ms); instructions of one run (callgrind)"
+printf '%-12s %10s %10s %12s %12s\n' "start-up" "strun ms" "lua ms" "strun instr" "lua instr"
 one=$(best_ms "$strun" run --virtual --cycles 1 "$scratch/one_line.st") || exit 1
-lua_one="-"
-command -v "$lua" >/dev/null 2>&1 && lua_one=$(best_ms "$lua" -e 'local x = 0; x = x + 1')
-printf '%-12s %10s %10s\n' "one_line" "$one" "$lua_one"
+one_i=$(instructions "$strun" run --virtual --cycles 1 "$scratch/one_line.st")
+lua_one="-"; lua_i="-"
+if command -v "$lua" >/dev/null 2>&1; then
+    lua_one=$(best_ms "$lua" -e 'local x = 0; x = x + 1')
+    lua_i=$(instructions "$lua" -e 'local x = 0; x = x + 1')
+fi
+printf '%-12s %10s %10s %12s %12s\n' "one_line" "$one" "$lua_one" "$one_i" "$lua_i"
 chk=$(best_ms "$strun" check "$gen") || exit 1
-printf '%-12s %10s %10s   (%d lines, %.0f lines/s)\n' "check_20k" "$chk" "-" "$lines" "$(awk -v l="$lines" -v ms="$chk" 'BEGIN { print l / (ms / 1000) }')"
+chk_i=$(instructions "$strun" check "$gen")
+printf '%-12s %10s %10s %12s %12s   (%d lines, %.0f lines/s)\n' "check_20k" "$chk" "-" "$chk_i" "-" "$lines" "$(awk -v l="$lines" -v ms="$chk" 'BEGIN { print l / (ms / 1000) }')"
