@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
 #include <iostream>
 #include <map>
 #include <optional>
@@ -651,6 +652,45 @@ int checkOne(const std::string& strun, const std::string& programPath) {
 
 // ---------------------------------------------------------------- self-test
 
+// A scratch directory for one end-to-end scenario of the self-test: files
+// written into it, checkOne run on its programs with a fake strun
+// ("fake_strun" in the directory) and the output captured, all removed at
+// the end.
+class SelfTestDir {
+public:
+    SelfTestDir() {
+        char pathTemplate[] = "/tmp/conformance_selftest_XXXXXX";
+        if (const char* dir = mkdtemp(pathTemplate)) path_ = dir;
+    }
+    ~SelfTestDir() {
+        for (const std::string& f : files_) unlink((path_ + "/" + f).c_str());
+        if (ok()) rmdir(path_.c_str());
+    }
+    bool ok() const { return !path_.empty(); }
+    void write(const std::string& name, const std::string& text, mode_t mode = 0644) {
+        if (!ok()) return;
+        std::ofstream(path_ + "/" + name) << text;
+        chmod((path_ + "/" + name).c_str(), mode);
+        files_.push_back(name);
+    }
+    // checkOne's result for each program, their stdout and stderr in output.
+    std::vector<int> check(std::initializer_list<const char*> programs, std::string& output) const {
+        std::vector<int> results;
+        std::ostringstream quiet;
+        auto* saved = std::cout.rdbuf(quiet.rdbuf());
+        auto* savedErr = std::cerr.rdbuf(quiet.rdbuf());
+        for (const char* program : programs) results.push_back(ok() ? checkOne(path_ + "/fake_strun", path_ + "/" + program) : -1);
+        std::cout.rdbuf(saved);
+        std::cerr.rdbuf(savedErr);
+        output = quiet.str();
+        return results;
+    }
+
+private:
+    std::string path_;
+    std::vector<std::string> files_;
+};
+
 int selfTest() {
     int failed = 0;
     auto expect = [&](bool ok, const std::string& what) {
@@ -782,71 +822,41 @@ int selfTest() {
     }
     {
         // End to end with a fake strun: --trace must be added for a .trace expectation.
-        char dirTemplate[] = "/tmp/conformance_selftest_XXXXXX";
-        if (const char* dir = mkdtemp(dirTemplate)) {
-            const std::string d = dir;
-            auto write = [](const std::string& path, const std::string& text) { std::ofstream(path) << text; };
-            write(d + "/fake_strun", "#!/bin/sh\ncase \"$*\" in *--trace*) echo 'T#0s Main start' >&2;; esac\n"
-                                     "echo 'x.st:1:1: warning: w' >&2\necho '{\"state\":\"RUN\"}'\n");
-            chmod((d + "/fake_strun").c_str(), 0755);
-            write(d + "/good.st", "PROGRAM Main END_PROGRAM\n");
-            write(d + "/good.trace", "T#0s Main start\n");
-            write(d + "/bad.st", "PROGRAM Main END_PROGRAM\n");
-            write(d + "/bad.trace", "T#0s Main start\nT#1us Main end\n");
-            write(d + "/both.st", "PROGRAM Main END_PROGRAM\n");
-            write(d + "/both.trace", "T#0s Main start\n");
-            write(d + "/both.err", "error\n");
-            std::ostringstream quiet;
-            auto* saved = std::cout.rdbuf(quiet.rdbuf());
-            auto* savedErr = std::cerr.rdbuf(quiet.rdbuf());
-            const int good = checkOne(d + "/fake_strun", d + "/good.st");
-            const int bad = checkOne(d + "/fake_strun", d + "/bad.st");
-            const int both = checkOne(d + "/fake_strun", d + "/both.st");
-            std::cout.rdbuf(saved);
-            std::cerr.rdbuf(savedErr);
-            expect(good == 0, "a matching .trace passes (--trace added to the command)");
-            expect(bad == 1 && quiet.str().find("expected 2: T#1us Main end") != std::string::npos,
-                   "a differing .trace fails and names the line");
-            expect(both == 2, ".trace together with .err is a malformed test");
-            for (const char* f : {"fake_strun", "good.st", "good.trace", "bad.st", "bad.trace", "both.st", "both.trace",
-                                  "both.err"})
-                unlink((d + "/" + f).c_str());
-            rmdir(dir);
-        } else {
-            expect(false, "cannot create a temporary directory");
-        }
+        SelfTestDir d;
+        d.write("fake_strun", "#!/bin/sh\ncase \"$*\" in *--trace*) echo 'T#0s Main start' >&2;; esac\n"
+                              "echo 'x.st:1:1: warning: w' >&2\necho '{\"state\":\"RUN\"}'\n", 0755);
+        d.write("good.st", "PROGRAM Main END_PROGRAM\n");
+        d.write("good.trace", "T#0s Main start\n");
+        d.write("bad.st", "PROGRAM Main END_PROGRAM\n");
+        d.write("bad.trace", "T#0s Main start\nT#1us Main end\n");
+        d.write("both.st", "PROGRAM Main END_PROGRAM\n");
+        d.write("both.trace", "T#0s Main start\n");
+        d.write("both.err", "error\n");
+        std::string output;
+        const std::vector<int> r = d.check({"good.st", "bad.st", "both.st"}, output);
+        expect(d.ok(), "cannot create a temporary directory");
+        expect(r[0] == 0, "a matching .trace passes (--trace added to the command)");
+        expect(r[1] == 1 && output.find("expected 2: T#1us Main end") != std::string::npos,
+               "a differing .trace fails and names the line");
+        expect(r[2] == 2, ".trace together with .err is a malformed test");
     }
     {
         // A .out expectation: exact stdout of `strun test`, {file} standing for the program path.
-        char dirTemplate[] = "/tmp/conformance_selftest_XXXXXX";
-        if (const char* dir = mkdtemp(dirTemplate)) {
-            const std::string d = dir;
-            auto write = [](const std::string& path, const std::string& text) { std::ofstream(path) << text; };
-            write(d + "/fake_strun", "#!/bin/sh\nfor f; do :; done\necho \"FAIL S.T: $f:3: EXP: 1, ACT: 2, MSG: m\"\necho '0 passed, 1 failed'\nexit 1\n");
-            chmod((d + "/fake_strun").c_str(), 0755);
-            const char* head = "(* strun-test\n   args: test\n   exit: 1\n*)\n";
-            write(d + "/good.st", head);
-            write(d + "/good.out", "FAIL S.T: {file}:3: EXP: 1, ACT: 2, MSG: m\n0 passed, 1 failed\n\n");
-            write(d + "/bad.st", head);
-            write(d + "/bad.out", "FAIL S.T: {file}:3: EXP: 1, ACT: 3, MSG: m\n0 passed, 1 failed\n");
-            write(d + "/run.st", "PROGRAM Main END_PROGRAM\n");
-            write(d + "/run.out", "x\n");
-            std::ostringstream quiet;
-            auto* saved = std::cout.rdbuf(quiet.rdbuf());
-            auto* savedErr = std::cerr.rdbuf(quiet.rdbuf());
-            const int good = checkOne(d + "/fake_strun", d + "/good.st");
-            const int bad = checkOne(d + "/fake_strun", d + "/bad.st");
-            const int run = checkOne(d + "/fake_strun", d + "/run.st");
-            std::cout.rdbuf(saved);
-            std::cerr.rdbuf(savedErr);
-            expect(good == 0, "a matching .out passes ({file} replaced, trailing blank lines ignored)");
-            expect(bad == 1 && quiet.str().find("stdout differs at line 1") != std::string::npos, "a differing .out fails and names the line");
-            expect(run == 2, "a .out with a command other than test is a malformed test");
-            for (const char* f : {"fake_strun", "good.st", "good.out", "bad.st", "bad.out", "run.st", "run.out"}) unlink((d + "/" + f).c_str());
-            rmdir(dir);
-        } else {
-            expect(false, "cannot create a temporary directory");
-        }
+        SelfTestDir d;
+        d.write("fake_strun", "#!/bin/sh\nfor f; do :; done\necho \"FAIL S.T: $f:3: EXP: 1, ACT: 2, MSG: m\"\necho '0 passed, 1 failed'\nexit 1\n", 0755);
+        const char* head = "(* strun-test\n   args: test\n   exit: 1\n*)\n";
+        d.write("good.st", head);
+        d.write("good.out", "FAIL S.T: {file}:3: EXP: 1, ACT: 2, MSG: m\n0 passed, 1 failed\n\n");
+        d.write("bad.st", head);
+        d.write("bad.out", "FAIL S.T: {file}:3: EXP: 1, ACT: 3, MSG: m\n0 passed, 1 failed\n");
+        d.write("run.st", "PROGRAM Main END_PROGRAM\n");
+        d.write("run.out", "x\n");
+        std::string output;
+        const std::vector<int> r = d.check({"good.st", "bad.st", "run.st"}, output);
+        expect(d.ok(), "cannot create a temporary directory");
+        expect(r[0] == 0, "a matching .out passes ({file} replaced, trailing blank lines ignored)");
+        expect(r[1] == 1 && output.find("stdout differs at line 1") != std::string::npos, "a differing .out fails and names the line");
+        expect(r[2] == 2, "a .out with a command other than test is a malformed test");
     }
     std::cout << (failed == 0 ? "self-test passed\n" : "self-test failed\n");
     return failed == 0 ? 0 : 1;
