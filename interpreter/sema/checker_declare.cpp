@@ -1,6 +1,7 @@
 // Declarations: collecting names, resolving types, laying out storage and
 // writing initial values.
 #include <algorithm>
+#include <limits>
 #include <cstring>
 
 #include <fmt/format.h>
@@ -255,13 +256,17 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         t.size = base->size;
         t.align = base->align;
         int64_t next = 0;
+        bool pastLargest = false;  // the previous value was the largest LINT: no implicit next one
         for (const auto& ev : spec->enumValues) {
             int64_t v = next;
             if (ev.value && !constIntExpr(ev.value.get(), v, "an enumeration value")) v = next;
+            if (!ev.value && pastLargest)
+                error(ev.loc, fmt::format("the enumeration value '{}' would follow the largest LINT: give it an explicit value", ev.name));
             for (const auto& other : t.enumerators)
                 if (upper(other.name) == upper(ev.name)) error(ev.loc, fmt::format("duplicate enumeration value '{}'", ev.name));
             t.enumerators.push_back({ev.name, v});
-            next = v + 1;
+            pastLargest = v == std::numeric_limits<int64_t>::max();
+            next = pastLargest ? v : v + 1;
         }
         t.enumDefault = t.enumerators.empty() ? 0 : t.enumerators.front().value;
         Type* created = types().create(std::move(t));

@@ -183,7 +183,8 @@ const std::vector<CodeInfo> kCatalogue = {
     {"E0407", K::Error, "wrong type declaration",
      "A type is declared in a way ST does not allow: an array whose upper bound is below its lower bound, ARRAY[*] "
      "outside VAR_IN_OUT, a subrange or enumeration on a base type that is not an integer, a string length outside "
-     "1..65535, EXTENDS on a type that is not a structure.",
+     "1..65535, EXTENDS on a type that is not a structure, an enumeration value without an explicit value after "
+     "the largest LINT.",
      "VAR a : ARRAY[10..1] OF INT; END_VAR", "VAR a : ARRAY[1..10] OF INT; END_VAR"},
     {"E0408", K::Error, "bad direct address",
      "An `AT %I..`, `%Q..` or `%M..` address is malformed, or does not exist on the target.",

@@ -55,7 +55,7 @@ const Rule kErrorRules[] = {
     {"E0406", "VAR_EXTERNAL"},
     {"E0408", "direct address|system address"},
     {"E0407", "ARRAY\\[\\*\\]|upper bound|subrange needs|base type of an enumeration|can only extend a structure|"
-              "string length|EXTENDS in a TYPE"},
+              "string length|EXTENDS in a TYPE|would follow the largest LINT"},
     {"E0401", "must be a constant|needs an initial value|initial value must be a constant|cannot be initialised with"},
     {"E0402", "initialiser for a variable|too many initial values"},
     {"E0205", "is outside the range of"},
