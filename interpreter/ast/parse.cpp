@@ -173,6 +173,7 @@ private:
     // A cheap test that lets through every pragma kMessage below can match:
     // '{', blanks, then "warning" or "error" in any case.
     static bool mayBeMessagePragma(std::string_view text) {
+        if (text.empty() || text[0] != '{') return false;
         size_t i = 1;
         while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
         auto startsWith = [&](std::string_view word) {
@@ -181,7 +182,7 @@ private:
                 if (std::tolower(static_cast<unsigned char>(text[i + k])) != word[k]) return false;
             return true;
         };
-        return !text.empty() && text[0] == '{' && (startsWith("warning") || startsWith("error"));
+        return startsWith("warning") || startsWith("error");
     }
 
     // {warning 'text'} and {error 'text'} (CODESYS message pragmas): the text

@@ -13,23 +13,13 @@ namespace {
 // One case folding for the whole checker (sema/types.h).
 std::string upper(std::string_view s) { return sema::upper(std::string(s)); }
 
-// The upper-case form of word in out, reusing out's storage: the scans below
-// see every word of the selected sources, and a string per word was the
-// largest part of a one-line run's start-up (decision 0156).
-void foldInto(std::string_view word, std::string& out) {
-    out.assign(word);
-    for (char& c : out)
-        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-}
-
-bool equalsFolded(std::string_view word, std::string_view upperKeyword) {
-    if (word.size() != upperKeyword.size()) return false;
-    for (size_t i = 0; i < word.size(); ++i) {
-        char c = word[i];
-        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-        if (c != upperKeyword[i]) return false;
-    }
-    return true;
+// The same folding into a buffer the caller reuses: the scans below see every
+// word of the selected sources, and a string per word was the largest part
+// of a one-line run's start-up (decision 0156).
+const std::string& upperInto(std::string_view word, std::string& buffer) {
+    buffer.assign(word);
+    sema::upperInPlace(buffer);
+    return buffer;
 }
 
 bool isIdentStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
@@ -65,14 +55,16 @@ std::vector<Declared> declaredWithKeyword(std::string_view text) {
     std::vector<Declared> out;
     static constexpr std::string_view kKeywords[] = {"FUNCTION_BLOCK", "FUNCTION", "INTERFACE", "PROGRAM", "NAMESPACE", "TYPE"};
     std::string_view keyword;
+    std::string folded;
     forEachWord(text, [&](std::string_view word) {
         if (!keyword.empty()) {
             out.push_back({std::string(keyword), std::string(word)});
             keyword = {};
             return;
         }
+        const std::string& w = upperInto(word, folded);
         for (std::string_view k : kKeywords)
-            if (equalsFolded(word, k)) {
+            if (w == k) {
                 keyword = k;
                 break;
             }
@@ -107,10 +99,7 @@ std::vector<const stdlib::EmbeddedSource*> embeddedSourcesFor(const std::vector<
     std::unordered_set<std::string> mentioned;
     std::string folded;
     auto collect = [&](std::string_view text) {
-        forEachWord(text, [&](std::string_view w) {
-            foldInto(w, folded);
-            if (!mentioned.count(folded)) mentioned.insert(folded);
-        });
+        forEachWord(text, [&](std::string_view w) { mentioned.insert(upperInto(w, folded)); });  // copies only new names
     };
     for (std::string_view text : projectTexts) collect(text);
 

@@ -8,9 +8,13 @@ namespace strun::sema {
 // ASCII only, which is what std::toupper does in the C locale strun never
 // leaves, without a locale call per character (a third of the cost of a
 // one-line run's name handling, decision 0156).
-std::string upper(std::string s) {
+void upperInPlace(std::string& s) {
     for (char& c : s)
         if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+}
+
+std::string upper(std::string s) {
+    upperInPlace(s);
     return s;
 }
 

@@ -133,6 +133,7 @@ private:
 };
 
 std::string upper(std::string s);
+void upperInPlace(std::string& s);  // the same folding into a buffer the caller reuses
 std::string typeName(const Type* t);
 // Same type for assignment purposes: elementary types by kind (strings of any length), others by identity.
 bool sameType(const Type* a, const Type* b);
