@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "interpreter/exec/node.h"
+#include "interpreter/exec/string_append_nodes.h"
 #include "stdlib/string_functions.h"
 #include "stdlib/string_pieces.h"
 
@@ -75,24 +75,8 @@ struct FindNode final : Expr {
     }
 };
 
-// Every input part is copied in order, cut at maxLen.
-template <class Ch>
-struct ConcatNode final : Expr {
-    std::vector<Expr*> parts;
-    uint32_t off = 0, maxLen = 0;
-    uint8_t* addr(Ctx& c) override {
-        Ch* dst = reinterpret_cast<Ch*>(c.frame + off);
-        size_t n = 0;
-        for (Expr* p : parts) {
-            auto v = viewOf<Ch>(p, c);
-            size_t k = std::min<size_t>(v.size(), maxLen - n);
-            std::memmove(dst + n, v.data(), k * sizeof(Ch));
-            n += k;
-        }
-        dst[n] = 0;
-        return reinterpret_cast<uint8_t*>(dst);
-    }
-};
+// CONCAT: exec::ConcatNode (it has an in-place form there).
+using exec::ConcatNode;
 
 enum class StrFn : uint8_t { Left, Right, Mid, Insert, Delete, Replace };
 

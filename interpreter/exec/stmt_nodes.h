@@ -90,6 +90,17 @@ struct AssignBit final : Stmt {
     }
 };
 
+// Length of the NUL-terminated text at `s`, at most `max` code units.
+template <class Ch>
+inline size_t boundedLength(const Ch* s, size_t max) {
+    if constexpr (sizeof(Ch) == 1) return strnlen(reinterpret_cast<const char*>(s), max);
+    else {
+        size_t k = 0;
+        while (k < max && s[k] != 0) ++k;
+        return k;
+    }
+}
+
 // STRING / WSTRING assignment: copies up to the target's length, truncating.
 template <class Ch>
 struct AssignString final : Stmt {
@@ -100,14 +111,9 @@ struct AssignString final : Stmt {
     Flow exec(Ctx& c) override {
         const Ch* src = reinterpret_cast<const Ch*>(value->addr(c));
         Ch* dst = reinterpret_cast<Ch*>(place->addr(c));
-        uint32_t k = 0;
-        if (src != dst) {
-            // memmove semantics: source and target may overlap (s := s).
-            while (k < maxLen && src[k] != 0) ++k;
-            std::memmove(dst, src, k * sizeof(Ch));
-        } else {
-            while (k < maxLen && dst[k] != 0) ++k;
-        }
+        size_t k = boundedLength<Ch>(src, maxLen);
+        // memmove semantics: source and target may overlap (s := s).
+        if (src != dst) std::memmove(dst, src, k * sizeof(Ch));
         dst[k] = 0;
         return Flow::Next;
     }

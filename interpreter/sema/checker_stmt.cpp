@@ -65,6 +65,8 @@ exec::Stmt* Checker::storeTo(exec::Expr* place, const Type* t, exec::Expr* value
         if (auto* s = assignBitTyped<uint32_t>(pool(), place, value)) return s;
         if (auto* s = assignBitTyped<uint64_t>(pool(), place, value)) return s;
     }
+    if (isStringType(t->kind))
+        if (exec::Stmt* n = fuseAppendInPlace(pool(), t->kind == TK::WString, place, t->maxLen, value)) return n;
     if (t->kind == TK::String) return pool().make<exec::AssignString<char>>(place, value, t->maxLen);
     if (t->kind == TK::WString) return pool().make<exec::AssignString<char16_t>>(place, value, t->maxLen);
     if (isAggregate(t)) return pool().make<exec::AssignBytes>(place, value, t->size);
@@ -233,20 +235,9 @@ exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
         return pool().make<exec::CondStmt>(value.node, set);
     }
     if (s.kind == ast::StmtKind::RefAssign || s.kind == ast::StmtKind::TryAssign) return checkRefAssign(s);
-    exec::Stmt* st = assignChecked(target, value, s.loc);
-    if (st && (value.hasCall || target.hasCall)) {
-        // A call inside may have been aborted (watchdog / STOP): stop here too.
-        struct AbortCheck final : exec::Stmt {
-            exec::Stmt* inner;
-            explicit AbortCheck(exec::Stmt* s) : inner(s) {}
-            exec::Flow exec(exec::Ctx& c) override {
-                exec::Flow f = inner->exec(c);
-                return c.aborting ? exec::Flow::Abort : f;
-            }
-        };
-        return pool().make<AbortCheck>(st);
-    }
-    return st;
+    // A call inside that was aborted (watchdog / STOP) ends the statement's
+    // Block: it checks Ctx::aborting after every statement.
+    return assignChecked(target, value, s.loc);
 }
 
 exec::Stmt* Checker::checkFor(const ast::Stmt& s) {

@@ -34,6 +34,11 @@ exec::Stmt* fuseAssignConst(exec::NodePool& pool, Rep rep, exec::Expr* value, ex
 // typed store, or its constant form.
 exec::Stmt* fuseStorePending(exec::NodePool& pool, Rep rep, exec::Expr* place, exec::Expr* value);
 
+// s := CONCAT(s, pieces...) on a STRING (wide = false) or WSTRING variable
+// of the instance, frame or a fixed address whose pieces are constants or
+// other variables: the in-place append (decision 0155).
+exec::Stmt* fuseAppendInPlace(exec::NodePool& pool, bool wide, exec::Expr* place, uint32_t placeMaxLen, exec::Expr* value);
+
 // REAL/LREAL -> integer with the typed fast path; nullptr for widths it does not cover.
 exec::Expr* fuseRealToInt(exec::NodePool& pool, exec::Expr* value, int bits, bool isSigned, bool truncate);
 
