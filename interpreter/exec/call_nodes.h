@@ -30,11 +30,17 @@ struct ClassDesc {
 };
 
 // The executable form of one POU (program, function, FB body, method).
+// Frames up to this size are initialised by a fixed-size copy (two vector
+// moves instead of a memcpy call): their images are padded to it, and the
+// bytes above a small frame are free stack when it is pushed.
+constexpr uint32_t kSmallFrame = 32;
+inline size_t frameImageSize(uint32_t frameSize) { return std::max(frameSize, kSmallFrame); }
+
 struct PouCode {
     std::string name;
     Block* body = nullptr;
     uint32_t frameSize = 0;
-    std::vector<uint8_t> frameInit;  // initial image of the frame (locals with their initial values)
+    std::vector<uint8_t> frameInit;  // initial image of the frame (locals with their initial values), frameImageSize bytes
     uint32_t resultOffset = 0;       // FUNCTION / METHOD result, in the frame
     bool library = false;            // declared in the embedded standard library
 };
@@ -44,11 +50,12 @@ void reportCallDepth(Ctx& c, const Site& site, const std::string& callee);
 // Pushes a frame for `code`; returns nullptr (after reporting) when nesting is too deep.
 inline uint8_t* pushFrame(Ctx& c, const PouCode& code, const Site& site) {
     uint8_t* f = reinterpret_cast<uint8_t*>((reinterpret_cast<uintptr_t>(c.stackTop) + 15) & ~uintptr_t(15));
-    if (__builtin_expect(c.depth >= kMaxCallDepth || f + code.frameSize > c.stackEnd, 0)) {
+    if (__builtin_expect(c.depth >= kMaxCallDepth || f + frameImageSize(code.frameSize) > c.stackEnd, 0)) {
         reportCallDepth(c, site, code.name);
         return nullptr;
     }
-    if (code.frameSize) std::memcpy(f, code.frameInit.data(), code.frameSize);
+    if (code.frameSize <= kSmallFrame) std::memcpy(f, code.frameInit.data(), kSmallFrame);
+    else std::memcpy(f, code.frameInit.data(), code.frameSize);
     c.stackTop = f + code.frameSize;
     return f;
 }
@@ -98,6 +105,56 @@ inline int64_t loadIntRep(const uint8_t* p, ResultRep r) {
     }
 }
 
+// One argument of a FUNCTION or METHOD call stored straight into the callee
+// frame, without a statement node and, for a constant or a variable of the
+// caller, without a value node (decision 0154). What it stores is what
+// AssignPending / AssignConstLocal would store: the low bytes of the integer
+// value, 0/1 for BOOL, the value rounded to REAL or LREAL. The stored width
+// is part of `how`, so that binding one argument takes a single dispatch.
+struct ArgBind {
+    enum class How : uint8_t {
+        Const1, Const2, Const4, Const8,              // the stored bytes `bits`
+        CopySelf1, CopySelf2, CopySelf4, CopySelf8,  // the caller's instance variable at `src`
+        CopyFrame1, CopyFrame2, CopyFrame4, CopyFrame8,
+        Int1, Int2, Int4, Int8,                      // value->i
+        Bool, F32, F64                               // value->i != 0, value->f
+    };
+    How how = How::Int8;
+    uint32_t dst = 0;    // offset in the callee frame
+    uint32_t src = 0;    // CopySelf / CopyFrame: offset of the caller's variable
+    uint64_t bits = 0;   // Const: the stored bytes
+    Expr* value = nullptr;  // Int / Bool / F32 / F64
+};
+
+// Binds the arguments in order into the callee frame `f` (Ctx::pending is `f`).
+inline void bindArgs(Ctx& c, uint8_t* f, const std::vector<ArgBind>& binds) {
+    using H = ArgBind::How;
+    for (const ArgBind& a : binds) {
+        uint8_t* p = f + a.dst;
+        switch (a.how) {
+            case H::Const1: storeAs<uint8_t>(p, static_cast<uint8_t>(a.bits)); break;
+            case H::Const2: storeAs<uint16_t>(p, static_cast<uint16_t>(a.bits)); break;
+            case H::Const4: storeAs<uint32_t>(p, static_cast<uint32_t>(a.bits)); break;
+            case H::Const8: storeAs<uint64_t>(p, a.bits); break;
+            case H::CopySelf1: storeAs<uint8_t>(p, loadAs<uint8_t>(c.self + a.src)); break;
+            case H::CopySelf2: storeAs<uint16_t>(p, loadAs<uint16_t>(c.self + a.src)); break;
+            case H::CopySelf4: storeAs<uint32_t>(p, loadAs<uint32_t>(c.self + a.src)); break;
+            case H::CopySelf8: storeAs<uint64_t>(p, loadAs<uint64_t>(c.self + a.src)); break;
+            case H::CopyFrame1: storeAs<uint8_t>(p, loadAs<uint8_t>(c.frame + a.src)); break;
+            case H::CopyFrame2: storeAs<uint16_t>(p, loadAs<uint16_t>(c.frame + a.src)); break;
+            case H::CopyFrame4: storeAs<uint32_t>(p, loadAs<uint32_t>(c.frame + a.src)); break;
+            case H::CopyFrame8: storeAs<uint64_t>(p, loadAs<uint64_t>(c.frame + a.src)); break;
+            case H::Int1: storeAs<uint8_t>(p, static_cast<uint8_t>(a.value->i(c))); break;
+            case H::Int2: storeAs<uint16_t>(p, static_cast<uint16_t>(a.value->i(c))); break;
+            case H::Int4: storeAs<uint32_t>(p, static_cast<uint32_t>(a.value->i(c))); break;
+            case H::Int8: storeAs<uint64_t>(p, static_cast<uint64_t>(a.value->i(c))); break;
+            case H::Bool: storeAs<uint8_t>(p, a.value->i(c) != 0); break;
+            case H::F32: storeAs<float>(p, static_cast<float>(a.value->f(c))); break;
+            case H::F64: storeAs<double>(p, a.value->f(c)); break;
+        }
+    }
+}
+
 // FUNCTION call, or METHOD call (then `instance` gives the FB instance).
 // Inputs are stores into the new frame (places relative to Ctx::pending);
 // outputs are stores from the frame into the caller's places, evaluated
@@ -106,6 +163,8 @@ struct CallPou final : Expr {
     PouCode* callee = nullptr;
     Expr* instance = nullptr;        // methods: the instance (self) the method runs on
     std::vector<Stmt*> inputs;
+    std::vector<ArgBind> binds;      // the inputs in direct form, when every input has one
+    bool directInputs = false;       // bind with `binds` instead of running `inputs`
     std::vector<Stmt*> outputs;
     Site site;
     ResultRep rep = ResultRep::None;
@@ -125,7 +184,9 @@ struct CallPou final : Expr {
         if (!f) return nullptr;
         uint8_t* savedPending = c.pending;
         c.pending = f;
-        for (Stmt* s : inputs) s->exec(c);
+        if (directInputs) bindArgs(c, f, binds);
+        else
+            for (Stmt* s : inputs) s->exec(c);
         runBody(c, *code, inst, f);
         for (Stmt* s : outputs) s->exec(c);
         c.pending = savedPending;
@@ -149,6 +210,28 @@ struct CallPou final : Expr {
         if (fr) std::memmove(dst, fr + callee->resultOffset, resultSize);
         else std::memset(dst, 0, resultSize);
         return dst;
+    }
+};
+
+// x := F(...) with x a scalar of the instance or frame: AssignLocal with the
+// call's value computed by a direct (non-virtual) call.
+template <class T, bool FRAME>
+struct AssignCallLocal final : Stmt {
+    uint32_t off;
+    CallPou* call;
+    AssignCallLocal(uint32_t o, CallPou* k) : off(o), call(k) {}
+    Flow exec(Ctx& c) override {
+        if constexpr (std::is_floating_point_v<T>) {
+            T v = static_cast<T>(call->CallPou::f(c));
+            storeAs<T>((FRAME ? c.frame : c.self) + off, v);
+        } else if constexpr (std::is_same_v<T, bool>) {
+            uint8_t v = call->CallPou::i(c) != 0;
+            storeAs<uint8_t>((FRAME ? c.frame : c.self) + off, v);
+        } else {
+            T v = static_cast<T>(call->CallPou::i(c));
+            storeAs<T>((FRAME ? c.frame : c.self) + off, v);
+        }
+        return Flow::Next;
     }
 };
 

@@ -72,8 +72,15 @@ inline auto applyBin(T a, T b) {
     }
 }
 
+// A fused comparison can become the condition of the IF or WHILE that tests
+// it, so that the branch reads its operands itself (decision 0154).
+struct FusedCompare : Expr {
+    virtual Stmt* makeIf(NodePool& pool, Block* then, Stmt* otherwise) = 0;  // otherwise: see If1Stmt
+    virtual Stmt* makeWhile(NodePool& pool, Block* body) = 0;
+};
+
 template <class T, BinOp OP, class L, class R>
-struct FusedBin final : Expr {
+struct FusedBin final : std::conditional_t<isCompare(OP), FusedCompare, Expr> {
     L l;
     R r;
     FusedBin(L a, R b) : l(a), r(b) {}
@@ -85,7 +92,54 @@ struct FusedBin final : Expr {
         if constexpr (std::is_floating_point_v<T> && !isCompare(OP)) return applyBin<T, OP>(l.get(c), r.get(c));
         else return 0;
     }
+    Stmt* makeIf(NodePool& pool, Block* then, Stmt* otherwise);
+    Stmt* makeWhile(NodePool& pool, Block* body);
 };
+
+// IF l OP r THEN ... [ELSE ...] END_IF with the comparison inline.
+template <class T, BinOp OP, class L, class R>
+struct IfCompare final : Stmt {
+    L l;
+    R r;
+    Block* then;
+    Stmt* otherwise;  // may be null; see If1Stmt
+    IfCompare(L a, R b, Block* t, Stmt* e) : l(a), r(b), then(t), otherwise(e) {}
+    Flow exec(Ctx& c) override {
+        if (applyBin<T, OP>(l.get(c), r.get(c))) return then->exec(c);
+        return otherwise ? otherwise->exec(c) : Flow::Next;
+    }
+};
+
+// WHILE l OP r DO ... END_WHILE with the comparison inline (as WhileStmt).
+template <class T, BinOp OP, class L, class R>
+struct WhileCompare final : Stmt {
+    L l;
+    R r;
+    Block* body;
+    WhileCompare(L a, R b, Block* d) : l(a), r(b), body(d) {}
+    Flow exec(Ctx& c) override {
+        while (applyBin<T, OP>(l.get(c), r.get(c))) {
+            Flow f = body->exec(c);
+            if (f != Flow::Next) {
+                if (f == Flow::Exit) break;
+                if (f != Flow::Continue) return f;
+            }
+            if (tickAborts(c)) return Flow::Abort;
+        }
+        return c.aborting ? Flow::Abort : Flow::Next;
+    }
+};
+
+template <class T, BinOp OP, class L, class R>
+Stmt* FusedBin<T, OP, L, R>::makeIf(NodePool& pool, Block* then, Stmt* otherwise) {
+    if constexpr (isCompare(OP)) return pool.make<IfCompare<T, OP, L, R>>(l, r, then, otherwise);
+    else return nullptr;
+}
+template <class T, BinOp OP, class L, class R>
+Stmt* FusedBin<T, OP, L, R>::makeWhile(NodePool& pool, Block* body) {
+    if constexpr (isCompare(OP)) return pool.make<WhileCompare<T, OP, L, R>>(l, r, body);
+    else return nullptr;
+}
 
 // ---- statements
 
@@ -143,12 +197,14 @@ struct AssignPending final : Stmt {
     }
 };
 
-// IF c THEN ... [ELSE ...] END_IF: no vector walk for the one-condition form.
+// IF c THEN ... [ELSE ...] END_IF without a vector walk. An ELSIF chain is a
+// chain of these: `otherwise` is then the next link (an If1Stmt or
+// IfCompare), run directly as a part of the same statement (no tick).
 struct If1Stmt final : Stmt {
     Expr* cond;
     Block* then;
-    Block* otherwise;  // may be null
-    If1Stmt(Expr* k, Block* t, Block* e) : cond(k), then(t), otherwise(e) {}
+    Stmt* otherwise;  // may be null
+    If1Stmt(Expr* k, Block* t, Stmt* e) : cond(k), then(t), otherwise(e) {}
     Flow exec(Ctx& c) override {
         if (cond->i(c)) return then->exec(c);
         return otherwise ? otherwise->exec(c) : Flow::Next;

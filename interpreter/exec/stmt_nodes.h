@@ -171,17 +171,6 @@ struct CondStmt final : Stmt {
     Flow exec(Ctx& c) override { return cond->i(c) ? then->exec(c) : Flow::Next; }
 };
 
-struct IfStmt final : Stmt {
-    std::vector<Expr*> conds;
-    std::vector<Block*> blocks;
-    Block* elseBlock = nullptr;
-    Flow exec(Ctx& c) override {
-        for (size_t k = 0; k < conds.size(); ++k)
-            if (conds[k]->i(c)) return blocks[k]->exec(c);
-        return elseBlock ? elseBlock->exec(c) : Flow::Next;
-    }
-};
-
 struct CaseStmt final : Stmt {
     struct Entry { int64_t lo, hi; size_t block; };
     Expr* selector;

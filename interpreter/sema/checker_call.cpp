@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/fuse.h"
 #include "interpreter/sema/node_factory.h"
 
 namespace strun::sema {
@@ -458,6 +459,7 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
     call->callee = fn->code;
     call->instance = instance;
     call->site = site(e.loc);
+    bool direct = true;  // every input has a direct form (exec::ArgBind)
     std::set<VarSym*> connected;
     for (const auto& b : bindings) {
         VarSym* p = b.param;
@@ -476,6 +478,7 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
         }
         Checked v = checkExpr(*b.arg->value);
         if (!v.ok) { ok = false; continue; }
+        if (p->byRef || p->type->kind == TK::Reference) direct = false;
         if (p->byRef) {
             exec::Expr* slot = makeByRep<exec::PendingVar>(pool(), Rep::Void, p->offset);
             if (exec::Stmt* bind = bindInOut(p, v, slot, b.arg->value->loc)) call->inputs.push_back(bind);
@@ -492,6 +495,9 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
         Checked cv = coerce(v, p->type, b.arg->value->loc, fmt::format("argument '{}'", p->name).c_str());
         if (!cv.ok) { ok = false; continue; }
         call->inputs.push_back(storeTo(place, p->type, cv.node));
+        exec::ArgBind bind;
+        if (direct && !isAggregate(p->type) && fuseArgBind(repOf(p->type), p->offset, cv.node, bind)) call->binds.push_back(bind);
+        else direct = false;
     }
     for (VarSym* p : fn->params)
         if (p->byRef && !connected.count(p)) {
@@ -499,6 +505,7 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
             ok = false;
         }
     if (!ok) return bad(e.loc);
+    call->directInputs = direct && call->binds.size() == call->inputs.size();
     Checked r;
     r.ok = true;
     r.loc = e.loc;

@@ -566,7 +566,7 @@ void Checker::layoutPou(PouInfo* pou) {
     pou->frameSize = alignUp(frameOff, 16);
     pou->code->frameSize = pou->frameSize;
     pou->code->resultOffset = 0;
-    pou->code->frameInit.assign(pou->frameSize, 0);
+    pou->code->frameInit.assign(exec::frameImageSize(pou->frameSize), 0);
     for (auto& v : pou->ownedVars) {
         if (v->storage != Storage::Frame || v->byRef) continue;
         uint8_t* p = pou->code->frameInit.data() + v->offset;

@@ -15,6 +15,8 @@ uint32_t alignUp(uint32_t v, uint32_t a) { return a <= 1 ? v : (v + a - 1) / a *
 
 template <class T, bool FRAME>
 exec::Stmt* makeLocal(exec::NodePool& pool, uint32_t off, exec::Expr* v) {
+    // x := F(...): the call runs without the dispatch to its value node (decision 0154).
+    if (auto* call = dynamic_cast<exec::CallPou*>(v)) return pool.make<exec::AssignCallLocal<T, FRAME>>(off, call);
     return pool.make<exec::AssignLocal<T, FRAME>>(off, v);
 }
 
@@ -398,17 +400,23 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
             return pool().make<exec::EvalStmt>(c.node, rep);
         }
         case ast::StmtKind::If: {
-            auto* n = pool().make<exec::IfStmt>();
+            std::vector<exec::Expr*> conds;
+            std::vector<exec::Block*> blocks;
             for (size_t k = 0; k < s.conds.size(); ++k) {
                 Checked c = checkCondition(*s.conds[k], "an IF condition");
                 exec::Block* b = checkBlock(s.blocks[k]);
                 if (!c.ok) continue;
-                n->conds.push_back(c.node);
-                n->blocks.push_back(b);
+                conds.push_back(c.node);
+                blocks.push_back(b);
             }
-            if (s.elseBlock) n->elseBlock = checkBlock(*s.elseBlock);
-            if (n->conds.size() == 1) return pool().make<exec::If1Stmt>(n->conds[0], n->blocks[0], n->elseBlock);
-            return n;
+            exec::Stmt* chain = s.elseBlock ? checkBlock(*s.elseBlock) : nullptr;
+            if (conds.empty()) return chain;
+            // IF/ELSIF/ELSE as a chain of one-condition links, built from the end.
+            for (size_t k = conds.size(); k-- > 0;) {
+                if (auto* cmp = dynamic_cast<exec::FusedCompare*>(conds[k])) chain = cmp->makeIf(pool(), blocks[k], chain);
+                else chain = pool().make<exec::If1Stmt>(conds[k], blocks[k], chain);
+            }
+            return chain;
         }
         case ast::StmtKind::Case: return checkCase(s);
         case ast::StmtKind::For: return checkFor(s);
@@ -418,6 +426,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
             exec::Block* b = checkBlock(s.body);
             --loopDepth_;
             if (!c.ok) return nullptr;
+            if (auto* cmp = dynamic_cast<exec::FusedCompare*>(c.node)) return cmp->makeWhile(pool(), b);
             auto* n = pool().make<exec::WhileStmt>();
             n->cond = c.node;
             n->body = b;
@@ -488,7 +497,7 @@ void Checker::checkBody(PouInfo* pou) {
     if (!libraryFiles_.count(pou->ast->loc.file)) warnReadBeforeWrite(*pou, log_);
     uint32_t size = alignUp(frameTop_, 16);
     pou->code->frameSize = size;
-    pou->code->frameInit.resize(size, 0);
+    pou->code->frameInit.resize(exec::frameImageSize(size), 0);
     model_.maxFrameSize = std::max(model_.maxFrameSize, size);
     pou_ = nullptr;
     currentPouName_ = nullptr;

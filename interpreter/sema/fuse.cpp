@@ -1,7 +1,9 @@
 // Recognises the operands a fused node can read itself (decision 0151).
 #include "interpreter/sema/fuse.h"
 
+#include <bit>
 #include <optional>
+#include <type_traits>
 
 namespace strun::sema {
 
@@ -320,6 +322,94 @@ exec::Expr* fuseRealToInt(exec::NodePool& pool, exec::Expr* value, int bits, boo
         case 32: return isSigned ? realToInt<int32_t>(pool, value, bits, isSigned, truncate) : realToInt<uint32_t>(pool, value, bits, isSigned, truncate);
         case 64: return isSigned ? realToInt<int64_t>(pool, value, bits, isSigned, truncate) : realToInt<uint64_t>(pool, value, bits, isSigned, truncate);
         default: return nullptr;
+    }
+}
+
+}  // namespace strun::sema
+
+namespace strun::sema {
+
+namespace {
+
+using How = exec::ArgBind::How;
+
+// The form of `how` for a stored width of `bytes` (1, 2, 4, 8): the four
+// forms of each kind are consecutive.
+How withWidth(How first, size_t bytes) {
+    const int step = bytes == 1 ? 0 : bytes == 2 ? 1 : bytes == 4 ? 2 : 3;
+    return static_cast<How>(static_cast<int>(first) + step);
+}
+
+// A bitwise copy from a variable of the instance or frame stored exactly as
+// the parameter is (same representation T).
+template <class T>
+bool copySource(exec::Expr* value, exec::ArgBind& out) {
+    Leaf<T> leaf = leafOf<T>(value);
+    if (leaf.kind == LeafKind::Self) out.how = withWidth(How::CopySelf1, sizeof(T));
+    else if (leaf.kind == LeafKind::Frame) out.how = withWidth(How::CopyFrame1, sizeof(T));
+    else return false;
+    out.src = leaf.off;
+    return true;
+}
+
+template <class T>
+bool integerArg(exec::Expr* value, exec::ArgBind& out) {
+    if (dynamic_cast<exec::ConstInt*>(value)) {
+        exec::Ctx none;  // constants read nothing from the context
+        out.how = withWidth(How::Const1, sizeof(T));
+        out.bits = static_cast<uint64_t>(static_cast<std::make_unsigned_t<T>>(static_cast<T>(value->i(none))));
+        return true;
+    }
+    if (copySource<T>(value, out)) return true;
+    out.how = withWidth(How::Int1, sizeof(T));
+    out.value = value;
+    return true;
+}
+
+template <class T>
+bool realArg(exec::Expr* value, exec::ArgBind& out) {
+    if (dynamic_cast<exec::ConstInt*>(value) || dynamic_cast<exec::ConstReal*>(value)) {
+        exec::Ctx none;
+        T k = static_cast<T>(value->f(none));
+        out.how = withWidth(How::Const1, sizeof(T));
+        if constexpr (sizeof(T) == 4) out.bits = std::bit_cast<uint32_t>(k);
+        else out.bits = std::bit_cast<uint64_t>(k);
+        return true;
+    }
+    if (copySource<T>(value, out)) return true;
+    out.how = sizeof(T) == 4 ? How::F32 : How::F64;
+    out.value = value;
+    return true;
+}
+
+}  // namespace
+
+bool fuseArgBind(Rep rep, uint32_t dst, exec::Expr* value, exec::ArgBind& out) {
+    out = exec::ArgBind{};
+    out.dst = dst;
+    switch (rep) {
+        case Rep::I8: return integerArg<int8_t>(value, out);
+        case Rep::I16: return integerArg<int16_t>(value, out);
+        case Rep::I32: return integerArg<int32_t>(value, out);
+        case Rep::I64: return integerArg<int64_t>(value, out);
+        case Rep::U8: return integerArg<uint8_t>(value, out);
+        case Rep::U16: return integerArg<uint16_t>(value, out);
+        case Rep::U32: return integerArg<uint32_t>(value, out);
+        case Rep::U64: return integerArg<uint64_t>(value, out);
+        case Rep::Bool:
+            // A constant, or else through the value: a BOOL is stored as 0/1 whatever its source holds.
+            if (dynamic_cast<exec::ConstInt*>(value)) {
+                exec::Ctx none;
+                out.how = How::Const1;
+                out.bits = value->i(none) != 0;
+                return true;
+            }
+            out.how = How::Bool;
+            out.value = value;
+            return true;
+        case Rep::F32: return realArg<float>(value, out);
+        case Rep::F64: return realArg<double>(value, out);
+        default: return false;
     }
 }
 

@@ -4,6 +4,7 @@
 // general node as before.
 #pragma once
 
+#include "interpreter/exec/call_nodes.h"
 #include "interpreter/exec/fused_nodes.h"
 #include "interpreter/sema/node_factory.h"
 
@@ -38,6 +39,11 @@ exec::Stmt* fuseStorePending(exec::NodePool& pool, Rep rep, exec::Expr* place, e
 // of the instance, frame or a fixed address whose pieces are constants or
 // other variables: the in-place append (decision 0155).
 exec::Stmt* fuseAppendInPlace(exec::NodePool& pool, bool wide, exec::Expr* place, uint32_t placeMaxLen, exec::Expr* value);
+
+// The direct form of a call argument `value` stored at `dst` of the callee
+// frame as a scalar of representation `rep` (decision 0154); false when the
+// argument needs its statement node (aggregates, strings, references).
+bool fuseArgBind(Rep rep, uint32_t dst, exec::Expr* value, exec::ArgBind& out);
 
 // REAL/LREAL -> integer with the typed fast path; nullptr for widths it does not cover.
 exec::Expr* fuseRealToInt(exec::NodePool& pool, exec::Expr* value, int bits, bool isSigned, bool truncate);
