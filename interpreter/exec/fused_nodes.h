@@ -197,6 +197,57 @@ struct AssignPending final : Stmt {
     }
 };
 
+// a[i] := value (A as in Assign<A>: bool stores 0/1 in a byte): the value
+// first, then the element's address, as Assign<A> on an Index1Var does.
+template <class A, BaseKind B, IndexFrom IX>
+struct AssignIndex1 final : Stmt, Index1Fields {
+    Expr* value;
+    AssignIndex1(const Index1Fields& f, Expr* v) : Index1Fields(f), value(v) {}
+    Flow exec(Ctx& c) override {
+        if constexpr (std::is_floating_point_v<A>) {
+            A v = static_cast<A>(value->f(c));
+            storeAs<A>(index1Address<B, IX>(c, *this), v);
+        } else if constexpr (std::is_same_v<A, bool>) {
+            uint8_t v = value->i(c) != 0;
+            storeAs<uint8_t>(index1Address<B, IX>(c, *this), v);
+        } else {
+            A v = static_cast<A>(value->i(c));
+            storeAs<A>(index1Address<B, IX>(c, *this), v);
+        }
+        return Flow::Next;
+    }
+};
+
+// a[i] := constant: the stored bytes computed once.
+template <class T, BaseKind B, IndexFrom IX>
+struct AssignConstIndex1 final : Stmt, Index1Fields {
+    T k;
+    AssignConstIndex1(const Index1Fields& f, T v) : Index1Fields(f), k(v) {}
+    Flow exec(Ctx& c) override {
+        storeAs<T>(index1Address<B, IX>(c, *this), k);
+        return Flow::Next;
+    }
+};
+
+template <class T, BaseKind B, IndexFrom IX>
+Stmt* Index1Var<T, B, IX>::makeStore(NodePool& pool, Expr* value, bool boolean) {
+    if constexpr (std::is_void_v<T>) return nullptr;
+    else {
+        const Index1Fields& fields = *this;
+        if (boolean && !std::is_same_v<T, uint8_t>) return nullptr;
+        if (dynamic_cast<ConstInt*>(value) || dynamic_cast<ConstReal*>(value)) {
+            Ctx none;  // constants read nothing from the context
+            T k;
+            if (boolean) k = static_cast<T>(value->i(none) != 0);
+            else if constexpr (std::is_floating_point_v<T>) k = static_cast<T>(value->f(none));
+            else k = static_cast<T>(value->i(none));
+            return pool.make<AssignConstIndex1<T, B, IX>>(fields, k);
+        }
+        if (boolean) return pool.make<AssignIndex1<bool, B, IX>>(fields, value);
+        return pool.make<AssignIndex1<T, B, IX>>(fields, value);
+    }
+}
+
 // IF c THEN ... [ELSE ...] END_IF without a vector walk. An ELSIF chain is a
 // chain of these: `otherwise` is then the next link (an If1Stmt or
 // IfCompare), run directly as a part of the same statement (no tick).

@@ -228,14 +228,29 @@ inline int64_t readIndex(Ctx& c, const Index1Fields& f) {
         return static_cast<int32_t>(static_cast<uint32_t>(v) + static_cast<uint32_t>(f.indexAdd));
     }
 }
+// The address of element readIndex() of a one-dimensional array variable:
+// an index outside the bounds reports ARRAY_BOUNDS and yields the fault sink.
+template <BaseKind B, IndexFrom IX>
+inline uint8_t* index1Address(Ctx& c, const Index1Fields& f) {
+    int64_t k = static_cast<int64_t>(static_cast<uint64_t>(readIndex<IX>(c, f)) - static_cast<uint64_t>(f.lo));
+    if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(f.count), 0))
+        return indexFault(c, f.site, static_cast<int64_t>(static_cast<uint64_t>(k) + static_cast<uint64_t>(f.lo)), f.lo, f.count);
+    uint8_t* base = B == BaseKind::Abs ? f.abs : baseOf<B>(c, nullptr) + f.off;
+    return base + static_cast<uint64_t>(k) * f.stride;
+}
+
+// a[i] as the target of an assignment: the store can compute the element's
+// address itself (fused_nodes.h, decision 0154).
+struct Index1Target : Expr, Index1Fields {
+    // place := value, for the element's scalar representation (`boolean`: BOOL,
+    // stored as 0/1); a constant value is stored as its bytes. Null for
+    // elements that are not scalars.
+    virtual Stmt* makeStore(NodePool& pool, Expr* value, bool boolean) = 0;
+};
+
 template <class T, BaseKind B, IndexFrom IX = IndexFrom::Node>
-struct Index1Var final : Expr, Index1Fields {
-    uint8_t* addr(Ctx& c) override {
-        int64_t k = static_cast<int64_t>(static_cast<uint64_t>(readIndex<IX>(c, *this)) - static_cast<uint64_t>(lo));
-        if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return indexFault(c, site, static_cast<int64_t>(static_cast<uint64_t>(k) + static_cast<uint64_t>(lo)), lo, count);
-        uint8_t* base = B == BaseKind::Abs ? abs : baseOf<B>(c, nullptr) + off;
-        return base + static_cast<uint64_t>(k) * stride;
-    }
+struct Index1Var final : Index1Target {
+    uint8_t* addr(Ctx& c) override { return index1Address<B, IX>(c, *this); }
     int64_t i(Ctx& c) override {
         if constexpr (std::is_void_v<T>) return 0;
         else return toI(loadAs<T>(addr(c)));
@@ -244,6 +259,7 @@ struct Index1Var final : Expr, Index1Fields {
         if constexpr (std::is_void_v<T>) return 0;
         else return toF(loadAs<T>(addr(c)));
     }
+    Stmt* makeStore(NodePool& pool, Expr* value, bool boolean) override;  // fused_nodes.h
 };
 
 // x.3 — one bit of an integer / bit-string place; also BOOL AT %IX0.3.

@@ -72,6 +72,8 @@ exec::Stmt* Checker::storeTo(exec::Expr* place, const Type* t, exec::Expr* value
     if (t->kind == TK::String) return pool().make<exec::AssignString<char>>(place, value, t->maxLen);
     if (t->kind == TK::WString) return pool().make<exec::AssignString<char16_t>>(place, value, t->maxLen);
     if (isAggregate(t)) return pool().make<exec::AssignBytes>(place, value, t->size);
+    if (auto* element = dynamic_cast<exec::Index1Target*>(place))  // a[i] := value (decision 0154)
+        if (exec::Stmt* n = element->makeStore(pool(), value, repOf(t) == Rep::Bool)) return n;
     if (exec::Stmt* n = fuseStorePending(pool(), repOf(t), place, value)) return n;  // call arguments, FB inputs
     if (exec::Stmt* n = fuseAssignConst(pool(), repOf(t), value, place, exec::BaseKind::Self, 0)) return n;
     switch (repOf(t)) {
