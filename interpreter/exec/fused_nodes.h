@@ -7,6 +7,8 @@
 // checker only builds one where that holds (interpreter/sema/fuse.cpp).
 #pragma once
 
+#include <typeinfo>
+
 #include "interpreter/exec/stmt_nodes.h"
 
 namespace strun::exec {
@@ -79,8 +81,15 @@ struct FusedCompare : Expr {
     virtual Stmt* makeWhile(NodePool& pool, Block* body) = 0;
 };
 
+// A fused arithmetic node can become the assignment that stores its result
+// into a variable of the instance or frame of exactly its computation type
+// (`storage`), computing it inline (decision 0154); null for other targets.
+struct FusedArith : Expr {
+    virtual Stmt* makeAssignLocal(NodePool& pool, bool frame, uint32_t off, const std::type_info& storage) = 0;
+};
+
 template <class T, BinOp OP, class L, class R>
-struct FusedBin final : std::conditional_t<isCompare(OP), FusedCompare, Expr> {
+struct FusedBin final : std::conditional_t<isCompare(OP), FusedCompare, FusedArith> {
     L l;
     R r;
     FusedBin(L a, R b) : l(a), r(b) {}
@@ -94,7 +103,33 @@ struct FusedBin final : std::conditional_t<isCompare(OP), FusedCompare, Expr> {
     }
     Stmt* makeIf(NodePool& pool, Block* then, Stmt* otherwise);
     Stmt* makeWhile(NodePool& pool, Block* body);
+    Stmt* makeAssignLocal(NodePool& pool, bool frame, uint32_t off, const std::type_info& storage);
 };
+
+// x := l OP r with x of type T in the instance (FRAME = false) or frame: as
+// AssignLocal<T> over the FusedBin, without the dispatch between them.
+template <class T, BinOp OP, class L, class R, bool FRAME>
+struct AssignBinLocal final : Stmt {
+    uint32_t off;
+    L l;
+    R r;
+    AssignBinLocal(uint32_t o, L a, R b) : off(o), l(a), r(b) {}
+    Flow exec(Ctx& c) override {
+        uint8_t* p = (FRAME ? c.frame : c.self) + off;
+        storeAs<T>(p, static_cast<T>(applyBin<T, OP>(l.get(c), r.get(c))));
+        return Flow::Next;
+    }
+};
+
+template <class T, BinOp OP, class L, class R>
+Stmt* FusedBin<T, OP, L, R>::makeAssignLocal(NodePool& pool, bool frame, uint32_t off, const std::type_info& storage) {
+    if constexpr (isCompare(OP)) return nullptr;
+    else {
+        if (storage != typeid(T)) return nullptr;
+        if (frame) return pool.make<AssignBinLocal<T, OP, L, R, true>>(off, l, r);
+        return pool.make<AssignBinLocal<T, OP, L, R, false>>(off, l, r);
+    }
+}
 
 // IF l OP r THEN ... [ELSE ...] END_IF with the comparison inline.
 template <class T, BinOp OP, class L, class R>

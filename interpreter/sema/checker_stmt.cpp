@@ -17,6 +17,9 @@ template <class T, bool FRAME>
 exec::Stmt* makeLocal(exec::NodePool& pool, uint32_t off, exec::Expr* v) {
     // x := F(...): the call runs without the dispatch to its value node (decision 0154).
     if (auto* call = dynamic_cast<exec::CallPou*>(v)) return pool.make<exec::AssignCallLocal<T, FRAME>>(off, call);
+    // x := a OP b with the operator fused (decision 0154).
+    if (auto* op = dynamic_cast<exec::FusedArith*>(v))
+        if (exec::Stmt* n = op->makeAssignLocal(pool, FRAME, off, typeid(T))) return n;
     return pool.make<exec::AssignLocal<T, FRAME>>(off, v);
 }
 
