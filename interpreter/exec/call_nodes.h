@@ -215,12 +215,34 @@ struct CallPou final : Expr {
 
 // x := F(...) with x a scalar of the instance or frame: AssignLocal with the
 // call's value computed by a direct (non-virtual) call.
+template <class T>
+constexpr ResultRep resultRepFor() {
+    if constexpr (std::is_same_v<T, int8_t>) return ResultRep::I8;
+    else if constexpr (std::is_same_v<T, int16_t>) return ResultRep::I16;
+    else if constexpr (std::is_same_v<T, int32_t>) return ResultRep::I32;
+    else if constexpr (std::is_same_v<T, int64_t>) return ResultRep::I64;
+    else if constexpr (std::is_same_v<T, uint8_t>) return ResultRep::U8;
+    else if constexpr (std::is_same_v<T, uint16_t>) return ResultRep::U16;
+    else if constexpr (std::is_same_v<T, uint32_t>) return ResultRep::U32;
+    else if constexpr (std::is_same_v<T, uint64_t>) return ResultRep::U64;
+    else return ResultRep::None;
+}
+
 template <class T, bool FRAME>
 struct AssignCallLocal final : Stmt {
     uint32_t off;
     CallPou* call;
-    AssignCallLocal(uint32_t o, CallPou* k) : off(o), call(k) {}
+    bool sameType;  // the result is stored as T: copied without the ResultRep switch
+    AssignCallLocal(uint32_t o, CallPou* k) : off(o), call(k), sameType(k->rep == resultRepFor<T>() && k->rep != ResultRep::None) {}
     Flow exec(Ctx& c) override {
+        if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
+            if (sameType) {
+                uint8_t* f = call->run(c);
+                T v = f ? loadAs<T>(f + call->callee->resultOffset) : T(0);
+                storeAs<T>((FRAME ? c.frame : c.self) + off, v);
+                return Flow::Next;
+            }
+        }
         if constexpr (std::is_floating_point_v<T>) {
             T v = static_cast<T>(call->CallPou::f(c));
             storeAs<T>((FRAME ? c.frame : c.self) + off, v);
