@@ -153,15 +153,7 @@ struct WhileCompare final : Stmt {
     Block* body;
     WhileCompare(L a, R b, Block* d) : l(a), r(b), body(d) {}
     Flow exec(Ctx& c) override {
-        while (applyBin<T, OP>(l.get(c), r.get(c))) {
-            Flow f = body->exec(c);
-            if (f != Flow::Next) {
-                if (f == Flow::Exit) break;
-                if (f != Flow::Continue) return f;
-            }
-            if (tickAborts(c)) return Flow::Abort;
-        }
-        return c.aborting ? Flow::Abort : Flow::Next;
+        return runWhile(c, body, [this](Ctx& k) { return applyBin<T, OP>(l.get(k), r.get(k)) != 0; });
     }
 };
 

@@ -218,19 +218,26 @@ struct ForStmt final : Stmt {
     }
 };
 
+// The WHILE loop of WhileStmt and WhileCompare (fused_nodes.h): `holds(c)`
+// evaluates the condition.
+template <class Cond>
+inline Flow runWhile(Ctx& c, Block* body, Cond&& holds) {
+    while (holds(c)) {
+        Flow f = body->exec(c);
+        if (f != Flow::Next) {
+            if (f == Flow::Exit) break;
+            if (f != Flow::Continue) return f;
+        }
+        if (tickAborts(c)) return Flow::Abort;
+    }
+    return c.aborting ? Flow::Abort : Flow::Next;
+}
+
 struct WhileStmt final : Stmt {
     Expr* cond;
     Block* body;
     Flow exec(Ctx& c) override {
-        while (cond->i(c)) {
-            Flow f = body->exec(c);
-            if (f != Flow::Next) {
-                if (f == Flow::Exit) break;
-                if (f != Flow::Continue) return f;
-            }
-            if (tickAborts(c)) return Flow::Abort;
-        }
-        return c.aborting ? Flow::Abort : Flow::Next;
+        return runWhile(c, body, [this](Ctx& k) { return cond->i(k) != 0; });
     }
 };
 
