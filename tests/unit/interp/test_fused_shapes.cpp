@@ -1,0 +1,143 @@
+// The checker builds the fused node shapes of decisions 0154 and 0155 where
+// they apply (and the general ones where they do not): the conformance tests
+// check the results, these check that the fast forms are really chosen.
+#include <catch2/catch.hpp>
+
+#include "interpreter/exec/call_nodes.h"
+#include "interpreter/exec/fused_nodes.h"
+#include "interpreter/exec/string_append_nodes.h"
+#include "tests/unit/interp/st_run.h"
+
+using namespace strun;
+using namespace strun::test;
+
+namespace {
+
+// The statements of POU `name`'s body, in order.
+std::vector<exec::Stmt*> bodyOf(const Compiled& c, const std::string& name) {
+    for (const auto& code : c.model->codes)
+        if (sema::upper(code.name) == sema::upper(name) && code.body) return code.body->stmts;
+    FAIL("no POU " << name);
+    return {};
+}
+
+template <class T>
+bool is(exec::Stmt* s) {
+    return dynamic_cast<T*>(s) != nullptr;
+}
+
+}  // namespace
+
+TEST_CASE("IF and WHILE on a compared variable read it themselves; ELSIF chains are links", "[fused]") {
+    auto c = compileSt(R"(
+PROGRAM Main
+VAR x : DINT; y : INT; z : DINT; END_VAR
+IF x > 5 THEN z := 1; END_IF;
+WHILE x < 10 DO x := x + 1; END_WHILE;
+IF y > 5 THEN z := 2; ELSIF x = 3 THEN z := 3; ELSE z := 4; END_IF;
+END_PROGRAM
+)");
+    REQUIRE(c->ok());
+    auto body = bodyOf(*c, "Main");
+    REQUIRE(body.size() == 3);
+    CHECK(is<exec::IfCompare<int32_t, exec::BinOp::Gt, exec::OpVar<int32_t, exec::BaseKind::Self>, exec::OpConst<int32_t>>>(body[0]));
+    CHECK(is<exec::WhileCompare<int32_t, exec::BinOp::Lt, exec::OpVar<int32_t, exec::BaseKind::Self>, exec::OpConst<int32_t>>>(body[1]));
+    // An INT in DINT arithmetic is no fused operand: a general link, whose ELSE is the fused ELSIF.
+    auto* first = dynamic_cast<exec::If1Stmt*>(body[2]);
+    REQUIRE(first);
+    CHECK(is<exec::IfCompare<int32_t, exec::BinOp::Eq, exec::OpVar<int32_t, exec::BaseKind::Self>, exec::OpConst<int32_t>>>(first->otherwise));
+}
+
+TEST_CASE("calls bind scalar arguments directly and assign their result without a value node", "[fused]") {
+    auto c = compileSt(R"(
+FUNCTION F : DINT
+VAR_INPUT a : DINT; b : REAL; c : BOOL; d : INT; END_VAR
+F := a;
+END_FUNCTION
+FUNCTION G : DINT
+VAR_IN_OUT a : DINT; END_VAR
+G := a;
+END_FUNCTION
+PROGRAM Main
+VAR x : DINT; r : REAL; n : DINT; END_VAR
+x := F(7, r, TRUE, 3 + 4);
+n := G(x);
+END_PROGRAM
+)");
+    REQUIRE(c->ok());
+    auto body = bodyOf(*c, "Main");
+    REQUIRE(body.size() == 2);
+    auto* assign = dynamic_cast<exec::AssignCallLocal<int32_t, false>*>(body[0]);
+    REQUIRE(assign);
+    CHECK(assign->sameType);
+    REQUIRE(assign->call->directInputs);
+    const auto& binds = assign->call->binds;
+    REQUIRE(binds.size() == 4);
+    using H = exec::ArgBind::How;
+    CHECK(binds[0].how == H::Const4);
+    CHECK(binds[0].bits == 7);
+    CHECK(binds[1].how == H::CopySelf4);
+    CHECK(binds[2].how == H::Const1);
+    CHECK(binds[3].how == H::Const2);  // 3 + 4 is folded
+    // A VAR_IN_OUT keeps its statement node.
+    auto* byRef = dynamic_cast<exec::AssignCallLocal<int32_t, false>*>(body[1]);
+    REQUIRE(byRef);
+    CHECK_FALSE(byRef->call->directInputs);
+    auto r = runSt(R"(
+FUNCTION F : DINT
+VAR_INPUT a : DINT; b : REAL; c : BOOL; d : INT; END_VAR
+F := a * 1000 + REAL_TO_DINT(b) * 100 + BOOL_TO_DINT(c) * 10 + d;
+END_FUNCTION
+PROGRAM Main
+VAR x : DINT; r : REAL := 2.0; END_VAR
+x := F(7, r, TRUE, 3 + 4);
+END_PROGRAM
+)");
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "x") == 7217);
+}
+
+TEST_CASE("x := a OP b and a[i] := v store without a separate value or place node", "[fused]") {
+    auto c = compileSt(R"(
+PROGRAM Main
+VAR x : DINT; y : DINT; a : ARRAY[0..3] OF DINT; f : ARRAY[0..3] OF BOOL; s : INT; END_VAR
+x := x * y;
+a[y] := x;
+f[y] := TRUE;
+s := s * s;
+END_PROGRAM
+)");
+    REQUIRE(c->ok());
+    auto body = bodyOf(*c, "Main");
+    REQUIRE(body.size() == 4);
+    using Self = exec::OpVar<int32_t, exec::BaseKind::Self>;
+    CHECK(is<exec::AssignBinLocal<int32_t, exec::BinOp::Mul, Self, Self, false>>(body[0]));
+    CHECK(is<exec::AssignIndex1<int32_t, exec::BaseKind::Self, exec::IndexFrom::Self32>>(body[1]));
+    CHECK(is<exec::AssignConstIndex1<uint8_t, exec::BaseKind::Self, exec::IndexFrom::Self32>>(body[2]));
+    CHECK_FALSE(is<exec::AssignBinLocal<int32_t, exec::BinOp::Mul, Self, Self, false>>(body[3]));  // INT target: general form
+}
+
+TEST_CASE("s := CONCAT(s, ...) appends in place only when the pieces cannot touch s", "[fused]") {
+    auto c = compileSt(R"(
+FUNCTION P : STRING
+P := 'p';
+END_FUNCTION
+PROGRAM Main
+VAR s : STRING[20]; t : STRING[5] := 'ab'; END_VAR
+s := CONCAT(s, 'x', t);
+s := CONCAT(s, s);
+s := CONCAT(s, P());
+t := CONCAT(s, 'x');
+END_PROGRAM
+)");
+    REQUIRE(c->ok());
+    auto body = bodyOf(*c, "Main");
+    REQUIRE(body.size() == 4);
+    auto* append = dynamic_cast<exec::AppendInPlace<char, exec::BaseKind::Self>*>(body[0]);
+    REQUIRE(append);
+    CHECK(append->limit == 20);
+    CHECK(append->pieces.size() == 2);
+    CHECK_FALSE(is<exec::AppendInPlace<char, exec::BaseKind::Self>>(body[1]));
+    CHECK_FALSE(is<exec::AppendInPlace<char, exec::BaseKind::Self>>(body[2]));
+    CHECK_FALSE(is<exec::AppendInPlace<char, exec::BaseKind::Self>>(body[3]));
+}
