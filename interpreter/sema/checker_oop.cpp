@@ -200,6 +200,7 @@ Checked Checker::propertyAccess(Checked base, const std::string& key, const ast:
     c.superRef = base.superRef;
     if (getter) {
         layoutPou(getter);
+        if (!getter->resultType) return bad(loc);  // the property's type did not resolve (reported there)
         auto* call = pool().make<exec::CallPou>();
         call->callee = getter->code;
         call->instance = instance;
@@ -216,7 +217,8 @@ Checked Checker::propertyAccess(Checked base, const std::string& key, const ast:
         c.hasCall = true;
     } else {
         layoutPou(setter);
-        c.type = setter->params.empty() ? types().voidType() : setter->params.front()->type;
+        if (setter->params.empty()) return bad(loc);  // the property's type did not resolve (reported there)
+        c.type = setter->params.front()->type;
         c.node = pool().make<exec::ConstInt>(0);
         c.node->type = c.type;
         c.readOnly = false;
