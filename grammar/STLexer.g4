@@ -1,20 +1,26 @@
-// IEC 61131-3 (3rd edition) Structured Text lexer, plus the common CODESYS
-// extensions. Keywords are case-insensitive (fragment letter rules, because the
-// ANTLR tool in use predates the caseInsensitive option).
+// IEC 61131-3 (3rd edition) Structured Text tokens, plus the common CODESYS
+// extensions: the definition of every token type the parser reads.
+//
+// strun does not run the lexer generated from this file: it runs the scanner
+// of interpreter/ast/st_scanner.cpp, which follows these rules (longest match,
+// the earlier rule on a tie) and is tested against the generated lexer on
+// every source of the repository and on generated input
+// (tests/unit/ast/scanner_equivalence_test.cpp, decision 0157). A change here
+// is a change there.
 //
 // Channels: comments and whitespace are skipped (nothing reads them, and a
 // large file has millions); `{...}` pragmas go to PRAGMAS so the
 // AST builder can attach them to the declaration they precede; malformed input
 // (unterminated comments/strings/pragmas, stray characters) becomes tokens on
-// the ERRORS channel, which parse.cpp reports with their exact location, so the
-// lexer itself never fails.
+// the ERRORS channel, which parse.cpp reports with their exact location, so
+// lexing itself never fails. Keywords are case-insensitive.
 lexer grammar STLexer;
 
 channels { PRAGMAS, ERRORS }
 
 // Token types without a rule of their own: UNTERMINATED_BLOCK_COMMENT is
-// produced by the BLOCK_COMMENT action, the keywords by IDENTIFIER (see the
-// keywords section below).
+// produced by the BLOCK_COMMENT action, the keywords by the scanner from the
+// words IDENTIFIER matches (see the keywords section below).
 tokens {
     UNTERMINATED_BLOCK_COMMENT,
     PROGRAM,
@@ -120,118 +126,6 @@ tokens {
 }
 
 @members {
-
-  // The token type of an identifier-shaped word: its keyword, else IDENTIFIER.
-  static size_t keywordType(const std::string& word) {
-    static const std::unordered_map<std::string, size_t> keywords = {
-      {"PROGRAM", PROGRAM},
-      {"END_PROGRAM", END_PROGRAM},
-      {"FUNCTION", FUNCTION},
-      {"END_FUNCTION", END_FUNCTION},
-      {"FUNCTION_BLOCK", FUNCTION_BLOCK},
-      {"END_FUNCTION_BLOCK", END_FUNCTION_BLOCK},
-      {"METHOD", METHOD},
-      {"END_METHOD", END_METHOD},
-      {"END_ACTION", END_ACTION},
-      {"ACTION", ACTION},
-      {"PROPERTY", PROPERTY},
-      {"END_PROPERTY", END_PROPERTY},
-      {"INTERFACE", INTERFACE},
-      {"END_INTERFACE", END_INTERFACE},
-      {"NAMESPACE", NAMESPACE},
-      {"END_NAMESPACE", END_NAMESPACE},
-      {"USING", USING},
-      {"TYPE", TYPE},
-      {"END_TYPE", END_TYPE},
-      {"STRUCT", STRUCT},
-      {"END_STRUCT", END_STRUCT},
-      {"UNION", UNION},
-      {"END_UNION", END_UNION},
-      {"ARRAY", ARRAY},
-      {"OF", OF},
-      {"STRING", STRING},
-      {"WSTRING", WSTRING},
-      {"POINTER", POINTER},
-      {"REF_TO", REF_TO},
-      {"REFERENCE", REFERENCE},
-      {"TO", TO},
-      {"EXTENDS", EXTENDS},
-      {"IMPLEMENTS", IMPLEMENTS},
-      {"ABSTRACT", ABSTRACT},
-      {"FINAL", FINAL},
-      {"PUBLIC", PUBLIC},
-      {"PRIVATE", PRIVATE},
-      {"PROTECTED", PROTECTED},
-      {"INTERNAL", INTERNAL},
-      {"THIS", THIS},
-      {"SUPER", SUPER},
-      {"END_GET", END_GET},
-      {"END_SET", END_SET},
-      {"GET", GET},
-      {"SET", SET},
-      {"VAR", VAR},
-      {"VAR_INPUT", VAR_INPUT},
-      {"VAR_OUTPUT", VAR_OUTPUT},
-      {"VAR_IN_OUT", VAR_IN_OUT},
-      {"VAR_TEMP", VAR_TEMP},
-      {"VAR_STAT", VAR_STAT},
-      {"VAR_INST", VAR_INST},
-      {"VAR_GLOBAL", VAR_GLOBAL},
-      {"VAR_EXTERNAL", VAR_EXTERNAL},
-      {"VAR_ACCESS", VAR_ACCESS},
-      {"VAR_CONFIG", VAR_CONFIG},
-      {"END_VAR", END_VAR},
-      {"CONSTANT", CONSTANT},
-      {"RETAIN", RETAIN},
-      {"NON_RETAIN", NON_RETAIN},
-      {"PERSISTENT", PERSISTENT},
-      {"AT", AT},
-      {"CONFIGURATION", CONFIGURATION},
-      {"END_CONFIGURATION", END_CONFIGURATION},
-      {"RESOURCE", RESOURCE},
-      {"END_RESOURCE", END_RESOURCE},
-      {"TASK", TASK},
-      {"ON", ON},
-      {"WITH", WITH},
-      {"READ_ONLY", READ_ONLY},
-      {"READ_WRITE", READ_WRITE},
-      {"IF", IF},
-      {"THEN", THEN},
-      {"ELSIF", ELSIF},
-      {"ELSE", ELSE},
-      {"END_IF", END_IF},
-      {"CASE", CASE},
-      {"END_CASE", END_CASE},
-      {"FOR", FOR},
-      {"BY", BY},
-      {"DO", DO},
-      {"END_FOR", END_FOR},
-      {"WHILE", WHILE},
-      {"END_WHILE", END_WHILE},
-      {"REPEAT", REPEAT},
-      {"UNTIL", UNTIL},
-      {"END_REPEAT", END_REPEAT},
-      {"EXIT", EXIT},
-      {"CONTINUE", CONTINUE},
-      {"RETURN", RETURN},
-      {"JMP", JMP},
-      {"AND_THEN", AND_THEN},
-      {"OR_ELSE", OR_ELSE},
-      {"AND", AND},
-      {"OR", OR},
-      {"XOR", XOR},
-      {"NOT", NOT},
-      {"MOD", MOD},
-      {"TRUE", TRUE},
-      {"FALSE", FALSE},
-    };
-    if (word.size() > 18) return IDENTIFIER;  // longer than every keyword
-    std::string upper = word;
-    for (char& c : upper)
-      if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-    auto it = keywords.find(upper);
-    return it == keywords.end() ? IDENTIFIER : it->second;
-  }
   void consumeNestedCommentBody() {
     auto* sim = getInterpreter<antlr4::atn::LexerATNSimulator>();
     int depth = 1;
@@ -312,17 +206,16 @@ fragment DATE_VALUE : [0-9]+ '-' [0-9]+ '-' [0-9]+;
 fragment TOD_VALUE  : [0-9]+ ':' [0-9]+ (':' [0-9]+ ('.' [0-9]+)?)?;
 
 // ------------------------------------------------------------------ keywords
-// Keywords are lexed by the IDENTIFIER rule and given their token type from
-// a table (keywordType below): one rule instead of a case-insensitive rule
-// per keyword keeps the lexer's state machine small, which made lexing and
-// the ATN deserialisation at every process start several times cheaper.
+// Keywords are words the IDENTIFIER rule matches; the scanner gives them
+// their token type from its table (keywordOrIdentifier in
+// interpreter/ast/st_scanner.cpp), so this lexer reports them as IDENTIFIER.
 // GET, SET, TASK, ON, WITH, READ_ONLY, READ_WRITE are soft keywords: the
 // parser also accepts them as names (SET is an input of the standard RS block).
 
 // ------------------------------------------------------------------ names
 // Letters, digits and underscores. IEC forbids double and trailing underscores,
 // CODESYS does not (its operators __NEW, __ISVALIDREF use them): accepted here.
-IDENTIFIER : IDENT_FRAG { setType(keywordType(getText())); };
+IDENTIFIER : IDENT_FRAG;
 fragment IDENT_FRAG : [A-Za-z_] [A-Za-z0-9_]*;
 
 // ------------------------------------------------------------------ operators

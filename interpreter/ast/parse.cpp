@@ -1,9 +1,9 @@
 // parseFile: source text -> tokens -> parse tree -> AST, with every problem
 // reported to the CompileLog and nothing thrown.
 //
-// Stages: (1) make the bytes valid UTF-8 (the ANTLR runtime throws otherwise);
-// (2) lex everything, reporting the lexer's error tokens (unterminated
-// comments/strings/pragmas, stray characters) at their exact location;
+// Stages: (1) make the bytes valid UTF-8; (2) scan everything (ast/st_scanner.h),
+// reporting the error tokens (unterminated comments/strings/pragmas, stray
+// characters) at their exact location;
 // (3) refuse pathological nesting before the recursive parser sees it;
 // (4) parse with SLL prediction and bail out on the first error, then, only if
 // that failed, parse again with full LL and error recovery, so that valid
@@ -23,6 +23,8 @@
 #include "interpreter/ast/ast_builder.h"
 #include "interpreter/ast/large_stack.h"
 #include "interpreter/ast/nesting_guard.h"
+#include "interpreter/ast/scanned_tokens.h"
+#include "interpreter/ast/st_scanner.h"
 #include "interpreter/ast/syntax_errors.h"
 #include "interpreter/ast/utf8_input.h"
 
@@ -54,15 +56,13 @@ class FileParser {
 public:
     FileParser(const SourceSet& sources, int fileIndex, CompileLog& log)
         : text_(sanitizeUtf8(sources.file(fileIndex).text, &firstInvalidByte_, &invalidBytes_)),
-          input_(text_),
-          lexer_(&input_),
-          tokens_(&lexer_),
+          scan_(scanSource(text_, kMaxTokensPerFile)),
+          source_(text_, scan_.tokens),
+          tokens_(&source_),
           parser_(&tokens_),
           reporter_(log, fileIndex),
           log_(log),
           fileIndex_(fileIndex) {
-        lexer_.removeErrorListeners();
-        lexer_.addErrorListener(&reporter_);
         parser_.removeErrorListeners();
     }
 
@@ -113,19 +113,16 @@ private:
                          " byte(s) replaced by U+FFFD, the first here");
     }
 
-    // Lexes the whole file, stopping with an error past kMaxTokensPerFile
-    // tokens (comments and pragmas included), so that memory stays bounded.
+    // Past kMaxTokensPerFile tokens (comments and pragmas included) the
+    // scanner stopped, so that memory stays bounded: an error, no parse.
     bool lexWithinLimit() {
-        while (tokens_.LA(1) != antlr4::Token::EOF) {
-            tokens_.consume();
-            if (tokens_.size() > kMaxTokensPerFile) {
-                const antlr4::Token* at = tokens_.get(tokens_.size() - 1);
-                log_.error(Loc{fileIndex_, static_cast<int>(at->getLine()), static_cast<int>(at->getCharPositionInLine()) + 1},
-                           "the file has more than " + std::to_string(kMaxTokensPerFile) + " tokens (the limit per source file)");
-                return false;
-            }
+        if (scan_.overLimit) {
+            const ScannedToken& at = scan_.tokens[scan_.tokens.size() - 2];  // the last before EOF
+            log_.error(Loc{fileIndex_, static_cast<int>(at.line), static_cast<int>(at.column) + 1},
+                       "the file has more than " + std::to_string(kMaxTokensPerFile) + " tokens (the limit per source file)");
+            return false;
         }
-        tokens_.seek(0);
+        tokens_.fill();
         return true;
     }
 
@@ -255,8 +252,8 @@ private:
     size_t firstInvalidByte_ = 0;
     size_t invalidBytes_ = 0;
     std::string text_;
-    antlr4::ANTLRInputStream input_;
-    L lexer_;
+    ScanResult scan_;
+    ScannedTokenSource source_;
     antlr4::CommonTokenStream tokens_;
     P parser_;
     SyntaxErrorReporter reporter_;

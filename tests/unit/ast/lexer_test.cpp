@@ -1,10 +1,12 @@
 // Lexer: every literal form, case-insensitive keywords, comments, pragmas and
-// the error tokens for malformed input.
+// the error tokens for malformed input, as the scanner strun runs produces
+// them (interpreter/ast/st_scanner.h).
 #include <catch2/catch.hpp>
 
 #include <antlr4-runtime.h>
 
 #include "grammar/STLexer.h"
+#include "interpreter/ast/st_scanner.h"
 #include "interpreter/ast/utf8_input.h"
 
 using strun_grammar::STLexer;
@@ -18,19 +20,19 @@ struct Lexed {
     size_t line, col;  // col 1-based
 };
 
+std::string tokenName(size_t type) {
+    static antlr4::ANTLRInputStream empty("");
+    static STLexer vocabularySource(&empty);
+    return std::string(vocabularySource.getVocabulary().getSymbolicName(type));
+}
+
 std::vector<Lexed> lexAll(const std::string& source) {
-    std::string text = strun::ast::sanitizeUtf8(source);
-    antlr4::ANTLRInputStream input(text);
-    STLexer lexer(&input);
-    lexer.removeErrorListeners();
-    antlr4::CommonTokenStream tokens(&lexer);
-    tokens.fill();
+    const std::string text = strun::ast::sanitizeUtf8(source);
+    const strun::ast::ScanResult scanned = strun::ast::scanSource(text, 1000000);
     std::vector<Lexed> out;
-    for (antlr4::Token* t : tokens.getTokens()) {
-        if (t->getType() == antlr4::Token::EOF) break;
-        if (t->getChannel() == antlr4::Token::HIDDEN_CHANNEL) continue;
-        out.push_back({std::string(lexer.getVocabulary().getSymbolicName(t->getType())), t->getText(), t->getChannel(),
-                       t->getLine(), t->getCharPositionInLine() + 1});
+    for (const strun::ast::ScannedToken& t : scanned.tokens) {
+        if (t.type == antlr4::Token::EOF) break;
+        out.push_back({tokenName(t.type), text.substr(t.start, t.stop + 1 - t.start), t.channel, t.line, t.column + 1});
     }
     return out;
 }
@@ -180,4 +182,14 @@ TEST_CASE("lexer: malformed input becomes error-channel tokens at its start", "[
     REQUIRE(stray.size() == 3);
     CHECK(stray[1].type == "ERROR_CHAR");
     CHECK(stray[1].channel == STLexer::ERRORS);
+}
+
+TEST_CASE("lexer: the token limit stops scanning and says so", "[lexer]") {
+    const strun::ast::ScanResult within = strun::ast::scanSource("a b c", 3);
+    CHECK_FALSE(within.overLimit);
+    CHECK(within.tokens.size() == 4);  // three and EOF
+    const strun::ast::ScanResult over = strun::ast::scanSource("a b c d e f", 3);
+    CHECK(over.overLimit);
+    CHECK(over.tokens.back().type == antlr4::Token::EOF);
+    CHECK(over.tokens.size() <= 5);
 }

@@ -1,0 +1,44 @@
+#include "interpreter/ast/scanned_tokens.h"
+
+namespace strun::ast {
+
+std::string Utf8SourceStream::getText(const antlr4::misc::Interval& interval) {
+    if (interval.a < 0 || interval.b < interval.a || static_cast<size_t>(interval.a) >= text_.size()) return "";
+    const size_t stop = std::min(static_cast<size_t>(interval.b), text_.size() - 1);
+    return std::string(text_.substr(static_cast<size_t>(interval.a), stop + 1 - static_cast<size_t>(interval.a)));
+}
+
+void Utf8SourceStream::consume() {
+    if (position_ < text_.size()) ++position_;
+}
+
+size_t Utf8SourceStream::LA(ssize_t i) {
+    if (i == 0) return 0;
+    const ssize_t at = i > 0 ? static_cast<ssize_t>(position_) + i - 1 : static_cast<ssize_t>(position_) + i;
+    if (at < 0 || static_cast<size_t>(at) >= text_.size()) return antlr4::Token::EOF;
+    return static_cast<unsigned char>(text_[static_cast<size_t>(at)]);
+}
+
+ScannedTokenSource::ScannedTokenSource(std::string_view text, const std::vector<ScannedToken>& scanned)
+    : stream_(text), scanned_(scanned) {}
+
+std::unique_ptr<antlr4::Token> ScannedTokenSource::nextToken() {
+    // Past the end the EOF token again, as a lexer would.
+    const ScannedToken& t = scanned_[std::min(next_, scanned_.size() - 1)];
+    if (next_ < scanned_.size()) ++next_;
+    const size_t stop = t.type == antlr4::Token::EOF ? static_cast<size_t>(t.start) - 1 : t.stop;
+    auto token = std::make_unique<antlr4::CommonToken>(std::make_pair(this, &stream_), t.type, t.channel, t.start, stop);
+    token->setLine(t.line);
+    token->setCharPositionInLine(t.column);
+    return token;
+}
+
+size_t ScannedTokenSource::getLine() const {
+    return next_ < scanned_.size() ? scanned_[next_].line : scanned_.back().line;
+}
+
+size_t ScannedTokenSource::getCharPositionInLine() {
+    return next_ < scanned_.size() ? scanned_[next_].column : scanned_.back().column;
+}
+
+}  // namespace strun::ast
