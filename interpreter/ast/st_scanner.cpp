@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "grammar/STLexer.h"
+#include "stdlib/number_scan.h"
 
 namespace strun::ast {
 
@@ -18,16 +19,8 @@ bool isIdentStart(unsigned char c) { return ((c | 0x20) >= 'a' && (c | 0x20) <= 
 bool isIdentPart(unsigned char c) { return isIdentStart(c) || isDigit(c); }
 unsigned char lower(unsigned char c) { return c >= 'A' && c <= 'Z' ? static_cast<unsigned char>(c | 0x20) : c; }
 
-// `word` equals the upper-case `keyword`, ignoring case.
-bool sameWord(std::string_view word, std::string_view keyword) {
-    if (word.size() != keyword.size()) return false;
-    for (size_t i = 0; i < word.size(); ++i)
-        if (lower(static_cast<unsigned char>(word[i])) != lower(static_cast<unsigned char>(keyword[i]))) return false;
-    return true;
-}
-
 bool isOneOf(std::string_view word, std::initializer_list<std::string_view> keywords) {
-    return std::any_of(keywords.begin(), keywords.end(), [&](std::string_view k) { return sameWord(word, k); });
+    return std::any_of(keywords.begin(), keywords.end(), [&](std::string_view k) { return stdlib::equalsIgnoreCase(word, k); });
 }
 
 struct Quoted {

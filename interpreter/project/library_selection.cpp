@@ -1,10 +1,13 @@
 #include "interpreter/project/library_selection.h"
 
 #include "interpreter/sema/types.h"
+#include "stdlib/number_scan.h"
 
 #include <algorithm>
+#include <array>
 #include <string>
-#include <unordered_set>
+#include <cstdint>
+#include <unordered_map>
 
 namespace strun::project {
 
@@ -22,26 +25,33 @@ const std::string& upperInto(std::string_view word, std::string& buffer) {
     return buffer;
 }
 
-bool isIdentStart(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
-bool isIdentPart(char c) { return isIdentStart(c) || (c >= '0' && c <= '9'); }
+// Character classes of the word scan: 1 starts a word, 2 continues one
+// (digits), 0 neither. A table, because the scan sees every byte of the
+// project and of the selected library files at every start.
+constexpr std::array<unsigned char, 256> kWordClass = [] {
+    std::array<unsigned char, 256> table{};
+    for (int c = 'A'; c <= 'Z'; ++c) table[c] = table[c + ('a' - 'A')] = 1;
+    table['_'] = 1;
+    for (int c = '0'; c <= '9'; ++c) table[c] = 2;
+    return table;
+}();
 
 // Calls f(word) for every identifier-shaped word of the text.
 template <typename F>
 void forEachWord(std::string_view text, F&& f) {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
     size_t i = 0;
     const size_t n = text.size();
     while (i < n) {
-        if (!isIdentStart(text[i])) {
-            // A digit run (16#FF, 2.5E3) is no name: skip it whole.
-            if (text[i] >= '0' && text[i] <= '9')
-                while (i < n && isIdentPart(text[i])) ++i;
-            else
-                ++i;
+        const unsigned char kind = kWordClass[bytes[i]];
+        if (kind == 0) {
+            ++i;
             continue;
         }
-        size_t start = i;
-        while (i < n && isIdentPart(text[i])) ++i;
-        f(text.substr(start, i - start));
+        const size_t start = i;
+        while (i < n && kWordClass[bytes[i]] != 0) ++i;
+        // A digit run (16#FF, 2.5E3) is no name: skipped whole.
+        if (kind == 1) f(text.substr(start, i - start));
     }
 }
 
@@ -49,22 +59,21 @@ void forEachWord(std::string_view text, F&& f) {
 // after TYPE: library files declare one type per TYPE block), as written,
 // with the keyword (upper case) that declares it.
 struct Declared {
-    std::string keyword, name;
+    std::string_view keyword, name;
 };
+
 std::vector<Declared> declaredWithKeyword(std::string_view text) {
     std::vector<Declared> out;
     static constexpr std::string_view kKeywords[] = {"FUNCTION_BLOCK", "FUNCTION", "INTERFACE", "PROGRAM", "NAMESPACE", "TYPE"};
     std::string_view keyword;
-    std::string folded;
     forEachWord(text, [&](std::string_view word) {
         if (!keyword.empty()) {
-            out.push_back({std::string(keyword), std::string(word)});
+            out.push_back({keyword, word});
             keyword = {};
             return;
         }
-        const std::string& w = upperInto(word, folded);
         for (std::string_view k : kKeywords)
-            if (w == k) {
+            if (word.size() == k.size() && stdlib::equalsIgnoreCase(word, k)) {
                 keyword = k;
                 break;
             }
@@ -72,20 +81,26 @@ std::vector<Declared> declaredWithKeyword(std::string_view text) {
     return out;
 }
 
-std::vector<std::string> declaredNames(std::string_view text) {
-    std::vector<std::string> names;
-    for (const Declared& d : declaredWithKeyword(text)) names.push_back(upper(d.name));
-    return names;
-}
-
+// Built once per process from one scan of the embedded texts.
 struct LibraryIndex {
-    std::vector<std::vector<std::string>> declares;  // parallel to embeddedSources()
+    std::vector<std::vector<Declared>> declares;                         // parallel to embeddedSources()
+    std::unordered_map<std::string, std::vector<size_t>> filesDeclaring;  // upper-case name -> files
+    size_t shortestName = SIZE_MAX, longestName = 0;
 };
 
 const LibraryIndex& libraryIndex() {
     static const LibraryIndex index = [] {
         LibraryIndex built;
-        for (const auto& src : stdlib::embeddedSources()) built.declares.push_back(declaredNames(src.text));
+        const auto& sources = stdlib::embeddedSources();
+        for (size_t i = 0; i < sources.size(); ++i) {
+            built.declares.push_back(declaredWithKeyword(sources[i].text));
+            for (const Declared& d : built.declares.back()) {
+                std::vector<size_t>& files = built.filesDeclaring[upper(d.name)];
+                if (files.empty() || files.back() != i) files.push_back(i);
+                built.shortestName = std::min(built.shortestName, d.name.size());
+                built.longestName = std::max(built.longestName, d.name.size());
+            }
+        }
         return built;
     }();
     return index;
@@ -95,26 +110,27 @@ const LibraryIndex& libraryIndex() {
 
 std::vector<const stdlib::EmbeddedSource*> embeddedSourcesFor(const std::vector<std::string_view>& projectTexts) {
     const auto& sources = stdlib::embeddedSources();
-    const auto& index = libraryIndex();
-    std::unordered_set<std::string> mentioned;
-    std::string folded;
-    auto collect = [&](std::string_view text) {
-        forEachWord(text, [&](std::string_view w) { mentioned.insert(upperInto(w, folded)); });  // copies only new names
-    };
-    for (std::string_view text : projectTexts) collect(text);
-
+    const LibraryIndex& index = libraryIndex();
     std::vector<bool> selected(sources.size(), false);
-    for (bool grew = true; grew;) {
-        grew = false;
-        for (size_t i = 0; i < sources.size(); ++i) {
-            if (selected[i]) continue;
-            const auto& names = index.declares[i];
-            if (std::any_of(names.begin(), names.end(), [&](const std::string& n) { return mentioned.count(n) > 0; })) {
-                selected[i] = true;
-                collect(sources[i].text);
-                grew = true;
-            }
-        }
+    std::vector<size_t> toScan;  // selected files whose own mentions are not yet followed
+    std::string folded;
+    auto scan = [&](std::string_view text) {
+        forEachWord(text, [&](std::string_view w) {
+            if (w.size() < index.shortestName || w.size() > index.longestName) return;
+            const auto it = index.filesDeclaring.find(upperInto(w, folded));
+            if (it == index.filesDeclaring.end()) return;
+            for (size_t file : it->second)
+                if (!selected[file]) {
+                    selected[file] = true;
+                    toScan.push_back(file);
+                }
+        });
+    };
+    for (std::string_view text : projectTexts) scan(text);
+    while (!toScan.empty()) {
+        const size_t file = toScan.back();
+        toScan.pop_back();
+        scan(sources[file].text);
     }
     std::vector<const stdlib::EmbeddedSource*> out;
     for (size_t i = 0; i < sources.size(); ++i)
@@ -125,10 +141,10 @@ std::vector<const stdlib::EmbeddedSource*> embeddedSourcesFor(const std::vector<
 const LibraryNames& embeddedLibraryNames() {
     static const LibraryNames names = [] {
         LibraryNames built;
-        for (const auto& src : stdlib::embeddedSources())
-            for (const Declared& d : declaredWithKeyword(src.text)) {
-                if (d.keyword == "FUNCTION") built.functions.push_back(d.name);
-                if (d.keyword == "FUNCTION_BLOCK" || d.keyword == "INTERFACE" || d.keyword == "TYPE") built.types.push_back(d.name);
+        for (const auto& declared : libraryIndex().declares)
+            for (const Declared& d : declared) {
+                if (d.keyword == "FUNCTION") built.functions.emplace_back(d.name);
+                if (d.keyword == "FUNCTION_BLOCK" || d.keyword == "INTERFACE" || d.keyword == "TYPE") built.types.emplace_back(d.name);
             }
         return built;
     }();
