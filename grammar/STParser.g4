@@ -8,14 +8,26 @@ parser grammar STParser;
 options { tokenVocab = STLexer; }
 
 @parser::members {
-  // Inside CASE: is the next thing `name{.name} :` (not `:=`)? Then it is the
-  // label of the next branch, not a jump label inside the current one.
+  // Inside CASE: does a ':' come before anything that ends or starts a
+  // statement? Then the tokens up to it are the labels of the next branch
+  // (`3:`, `1, 2:`, `5..9:`, `Color.Red:`), and a `name:` there is such a
+  // label, not a jump label inside the current branch. A statement has no
+  // ':' of its own before its ';' except as a jump label.
   bool isCaseLabelAhead() {
-    size_t i = 1;
-    if (!isNameToken(_input->LA(i))) return false;
-    ++i;
-    while (_input->LA(i) == DOT && isNameToken(_input->LA(i + 1))) i += 2;
-    return _input->LA(i) == COLON;
+    for (ssize_t i = 1; i < 100000; ++i) {
+      switch (_input->LA(i)) {
+        case COLON: return true;
+        case SEMI: case ASSIGN: case TRY_ASSIGN: case ARROW: case antlr4::Token::EOF:
+        case THEN: case DO: case OF: case ELSE: case ELSIF: case UNTIL:
+        case IF: case CASE: case FOR: case WHILE: case REPEAT: case EXIT: case CONTINUE: case RETURN: case JMP:
+        case END_IF: case END_CASE: case END_FOR: case END_WHILE: case END_REPEAT:
+        case END_PROGRAM: case END_FUNCTION: case END_FUNCTION_BLOCK: case END_METHOD: case END_ACTION:
+        case END_GET: case END_SET: case METHOD: case PROPERTY:
+          return false;
+        default: break;
+      }
+    }
+    return false;
   }
   static bool isNameToken(size_t type) {
     return type == IDENTIFIER || type == GET || type == SET || type == TASK || type == ON ||
@@ -215,14 +227,18 @@ stmtList
     : statement*
     ;
 
+// `name:` (a jump label) is an expression statement ending in ':' for the
+// parser and a label for the AST builder, which checks that it is a name:
+// as two alternatives starting with the same name, the choice between them
+// needed adaptive prediction on every statement. The ';' after END_IF and
+// the like is an empty statement for the same reason (the builder drops it).
 statement
-    : identifier COLON                                                          # labelStmt
-    | expression ((ASSIGN | TRY_ASSIGN) expression | identifier EQ expression)? SEMI   # exprStmt
-    | IF expression THEN stmtList (ELSIF expression THEN stmtList)* (ELSE stmtList)? END_IF SEMI?  # ifStmt
-    | CASE expression OF caseBranch* (ELSE stmtList)? END_CASE SEMI?             # caseStmt
-    | FOR identifier ASSIGN expression TO expression (BY expression)? DO stmtList END_FOR SEMI?  # forStmt
-    | WHILE expression DO stmtList END_WHILE SEMI?                               # whileStmt
-    | REPEAT stmtList UNTIL expression END_REPEAT SEMI?                          # repeatStmt
+    : expression ((((ASSIGN | TRY_ASSIGN) expression | identifier EQ expression)? SEMI) | COLON)   # exprStmt
+    | IF expression THEN stmtList (ELSIF expression THEN stmtList)* (ELSE stmtList)? END_IF  # ifStmt
+    | CASE expression OF caseBranch* (ELSE stmtList)? END_CASE                   # caseStmt
+    | FOR identifier ASSIGN expression TO expression (BY expression)? DO stmtList END_FOR  # forStmt
+    | WHILE expression DO stmtList END_WHILE                                     # whileStmt
+    | REPEAT stmtList UNTIL expression END_REPEAT                                # repeatStmt
     | EXIT SEMI                                                                  # exitStmt
     | CONTINUE SEMI                                                              # continueStmt
     | RETURN SEMI                                                                # returnStmt
@@ -250,20 +266,22 @@ caseLabel
 
 // ================================================================= expressions
 
-// IEC precedence, highest first: postfix (call, member, index, ^), unary,
-// **, * / MOD, + -, comparisons, = <>, AND & AND_THEN, XOR, OR OR_ELSE.
+// An operand chain; the AST builder applies the IEC precedence, highest
+// first: postfix (call, member, index, ^), unary, **, * / MOD, + -,
+// comparisons, = <>, AND & AND_THEN, XOR, OR OR_ELSE; all left-associative.
+// As a flat list rather than one left-recursive rule with a precedence
+// predicate per level, every decision here and in the rules around it is
+// LL(1): the parser predicts from one token instead of running ANTLR's
+// adaptive prediction (decision 0158).
 expression
-    : postfixExpr                                            # postfixExpression
+    : unaryExpr (ops+=(POW | STAR | SLASH | MOD | PLUS | MINUS | LT_OP | GT_OP | LE | GE | EQ | NE
+                     | AND | AMP | AND_THEN | XOR | OR | OR_ELSE) unaryExpr)*
+    ;
+
+unaryExpr
+    : op=(MINUS | PLUS | NOT) unaryExpr                      # unaryExpression
+    | postfixExpr                                            # postfixExpression
     | literal                                                # literalExpression
-    | op=(MINUS | PLUS | NOT) expression                     # unaryExpression
-    | expression op=POW expression                           # binaryExpression
-    | expression op=(STAR | SLASH | MOD) expression          # binaryExpression
-    | expression op=(PLUS | MINUS) expression                # binaryExpression
-    | expression op=(LT_OP | GT_OP | LE | GE) expression     # binaryExpression
-    | expression op=(EQ | NE) expression                     # binaryExpression
-    | expression op=(AND | AMP | AND_THEN) expression        # binaryExpression
-    | expression op=XOR expression                           # binaryExpression
-    | expression op=(OR | OR_ELSE) expression                # binaryExpression
     ;
 
 // Postfix operators are an iteration, not a recursion: a long chain
@@ -302,10 +320,11 @@ argList
     : arg (COMMA arg)*
     ;
 
+// `name := value`, `name => variable` (`NOT name => variable`), `value`:
+// one shape for the parser, told apart by the AST builder, so that the
+// choice needs one token of lookahead.
 arg
-    : identifier ASSIGN expression?          # inputArg
-    | NOT? identifier ARROW expression?      # outputArg
-    | expression                             # positionalArg
+    : expression (op=(ASSIGN | ARROW) expression?)?
     ;
 
 literal

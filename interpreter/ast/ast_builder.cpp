@@ -17,15 +17,22 @@ Loc AstBuilder::loc(const antlr4::Token* token) const {
 
 Loc AstBuilder::loc(antlr4::ParserRuleContext* c) const { return loc(c ? c->getStart() : nullptr); }
 
-std::string AstBuilder::text(antlr4::tree::ParseTree* node) {
-    if (node == nullptr) return std::string();
-    // Most calls ask for one token (a name, a literal): take it directly
-    // instead of ParseTree::getText's recursive concatenation of the subtree.
-    if (auto* rule = dynamic_cast<antlr4::ParserRuleContext*>(node); rule && rule->getStart() != nullptr &&
-        rule->getStart() == rule->getStop() && rule->children.size() == 1 &&
-        dynamic_cast<antlr4::tree::TerminalNode*>(rule->children[0]) != nullptr)
-        return rule->getStart()->getText();
-    return node->getText();
+// The tokens of the context, without the blanks and comments between them
+// (as ParseTree::getText, which builds a std::stringstream per node and
+// recursed over every child: a tenth of `strun check`). A token the error
+// recovery made up is not in the stream and not in the text: by then the
+// error has been reported, and the text only names things in messages.
+std::string AstBuilder::text(antlr4::ParserRuleContext* c) const {
+    if (c == nullptr || c->getStart() == nullptr || c->getStop() == nullptr) return std::string();
+    const size_t first = c->getStart()->getTokenIndex(), last = c->getStop()->getTokenIndex();
+    if (first == last) return c->getStart()->getText();
+    if (last < first || last >= tokens_.size()) return std::string();
+    std::string out;
+    for (size_t i = first; i <= last; ++i) {
+        antlr4::Token* t = tokens_.get(i);
+        if (t->getChannel() == antlr4::Token::DEFAULT_CHANNEL) out += t->getText();
+    }
+    return out;
 }
 
 std::string AstBuilder::sourceText(antlr4::ParserRuleContext* c) {
@@ -33,7 +40,7 @@ std::string AstBuilder::sourceText(antlr4::ParserRuleContext* c) {
     antlr4::CharStream* input = c->getStart()->getInputStream();
     const size_t start = c->getStart()->getStartIndex();
     const size_t stop = c->getStop()->getStopIndex();
-    if (input == nullptr || stop < start) return text(c);
+    if (input == nullptr || stop < start) return std::string();
     std::string out = input->getText(antlr4::misc::Interval(start, stop));
     if (out.size() > 40) out = out.substr(0, 37) + "...";
     return out;
@@ -41,6 +48,15 @@ std::string AstBuilder::sourceText(antlr4::ParserRuleContext* c) {
 
 Diagnostic& AstBuilder::error(const Loc& at, const std::string& message) {
     return errors_.report(static_cast<size_t>(at.line), at.col > 0 ? static_cast<size_t>(at.col - 1) : 0, message);
+}
+
+const antlr4::Token* AstBuilder::previousOnChannel(const antlr4::Token* token) const {
+    if (token == nullptr || token->getTokenIndex() >= tokens_.size()) return nullptr;
+    for (size_t i = token->getTokenIndex(); i-- > 0;) {
+        antlr4::Token* t = tokens_.get(i);
+        if (t->getChannel() == antlr4::Token::DEFAULT_CHANNEL) return t;
+    }
+    return nullptr;
 }
 
 std::vector<Pragma> AstBuilder::pragmasBefore(const antlr4::Token* token) {

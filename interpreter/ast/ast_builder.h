@@ -66,6 +66,8 @@ private:
 
     // ---- expressions (ast_builder_expr.cpp)
     ExprPtr expr(P::ExpressionContext* c);
+    ExprPtr unary(P::UnaryExprContext* c);
+    static P::IdentifierContext* bareName(P::ExpressionContext* c);  // the name if `c` is just one
     ExprPtr postfix(P::PostfixExprContext* c);
     ExprPtr primary(P::PrimaryContext* c);
     ExprPtr literal(P::LiteralContext* c);
@@ -75,9 +77,10 @@ private:
     // ---- helpers
     Loc loc(const antlr4::Token* token) const;
     Loc loc(antlr4::ParserRuleContext* c) const;
-    static std::string text(antlr4::tree::ParseTree* node);  // "" for a missing node
+    std::string text(antlr4::ParserRuleContext* c) const;  // its tokens' text; "" for a missing node
     static std::string sourceText(antlr4::ParserRuleContext* c);  // as written, shortened for messages
     std::vector<Pragma> pragmasBefore(const antlr4::Token* token);
+    const antlr4::Token* previousOnChannel(const antlr4::Token* token) const;  // null at the start
     Diagnostic& error(const Loc& at, const std::string& message);
 
     antlr4::BufferedTokenStream& tokens_;

@@ -41,6 +41,47 @@ Op binaryOp(size_t tokenType) {
     }
 }
 
+// Binding strength of a binary operator: higher binds tighter (IEC 61131-3
+// table "Operators of the ST language"). All are left-associative.
+int precedence(size_t tokenType) {
+    switch (tokenType) {
+        case L::POW: return 7;
+        case L::STAR: case L::SLASH: case L::MOD: return 6;
+        case L::PLUS: case L::MINUS: return 5;
+        case L::LT_OP: case L::GT_OP: case L::LE: case L::GE: return 4;
+        case L::EQ: case L::NE: return 3;
+        case L::AND: case L::AMP: case L::AND_THEN: return 2;
+        case L::XOR: return 1;
+        default: return 0;  // OR, OR_ELSE
+    }
+}
+
+// Operator-precedence parsing of `operand op operand op ...` with an
+// operand stack: `operand(i)` makes operand i, `combine(lhs, op, rhs)` one
+// binary node. Runs in a loop, so a chain of any length costs no stack.
+template <typename Value, typename Operand, typename Combine>
+Value climb(size_t operandCount, const std::vector<antlr4::Token*>& ops, Operand&& operand, Combine&& combine) {
+    std::vector<Value> values;
+    std::vector<size_t> pending;  // indexes into ops
+    auto reduce = [&] {
+        Value rhs = std::move(values.back());
+        values.pop_back();
+        Value lhs = std::move(values.back());
+        values.pop_back();
+        values.push_back(combine(std::move(lhs), ops[pending.back()], std::move(rhs)));
+        pending.pop_back();
+    };
+    values.push_back(operand(0));
+    for (size_t i = 0; i < ops.size() && i + 1 < operandCount; ++i) {
+        const int p = precedence(ops[i]->getType());
+        while (!pending.empty() && precedence(ops[pending.back()]->getType()) >= p) reduce();
+        pending.push_back(i);
+        values.push_back(operand(i + 1));
+    }
+    while (!pending.empty()) reduce();
+    return std::move(values.back());
+}
+
 // Counts the depth of the expression being built; see kMaxExpressionDepth.
 class DepthScope {
 public:
@@ -66,30 +107,65 @@ ExprPtr AstBuilder::expr(P::ExpressionContext* c) {
     if (c == nullptr) return placeholder(Loc{file_, 0, 0});
     const Loc at = loc(c);
     DepthScope scope(exprDepth_);
-    if (exprDepth_ > kMaxExpressionDepth) {
+    const std::vector<P::UnaryExprContext*> operands = c->unaryExpr();
+    if (operands.empty()) return placeholder(at);
+    // The depth of the tree the chain makes, before making it: a chain
+    // `1 + 1 + ...` 100 000 long must be refused, not built and then
+    // destroyed recursively.
+    const int depth = climb<int>(
+        operands.size(), c->ops, [](size_t) { return 0; },
+        [](int lhs, antlr4::Token*, int rhs) { return 1 + std::max(lhs, rhs); });
+    if (exprDepth_ + depth > kMaxExpressionDepth) {
         if (!depthReported_)
             error(at, fmt::format("expression too complex: more than {} nested operations", kMaxExpressionDepth));
         depthReported_ = true;
         return placeholder(at);
     }
+    if (operands.size() == 1) return unary(operands[0]);
+    struct Operand {
+        ExprPtr expr;
+        Loc start;  // where its text starts: a binary node is located at its left operand's
+    };
+    Operand built = climb<Operand>(
+        operands.size(), c->ops, [&](size_t i) { return Operand{unary(operands[i]), loc(operands[i])}; },
+        [&](Operand lhs, antlr4::Token* op, Operand rhs) {
+            auto e = makeExpr(ExprKind::Binary, lhs.start);
+            e->op = binaryOp(op->getType());
+            e->kids.push_back(std::move(lhs.expr));
+            e->kids.push_back(std::move(rhs.expr));
+            return Operand{std::move(e), lhs.start};
+        });
+    return std::move(built.expr);
+}
 
+ExprPtr AstBuilder::unary(P::UnaryExprContext* c) {
+    if (c == nullptr) return placeholder(Loc{file_, 0, 0});
     if (auto* p = dynamic_cast<P::PostfixExpressionContext*>(c)) return postfix(p->postfixExpr());
     if (auto* l = dynamic_cast<P::LiteralExpressionContext*>(c)) return literal(l->literal());
+    const Loc at = loc(c);
     if (auto* u = dynamic_cast<P::UnaryExpressionContext*>(c)) {
+        DepthScope scope(exprDepth_);
+        if (exprDepth_ > kMaxExpressionDepth) {
+            if (!depthReported_)
+                error(at, fmt::format("expression too complex: more than {} nested operations", kMaxExpressionDepth));
+            depthReported_ = true;
+            return placeholder(at);
+        }
         auto e = makeExpr(ExprKind::Unary, at);
         const size_t type = u->op ? u->op->getType() : static_cast<size_t>(L::MINUS);
         e->op = type == L::NOT ? Op::Not : type == L::PLUS ? Op::Plus : Op::Neg;
-        e->kids.push_back(expr(u->expression()));
-        return e;
-    }
-    if (auto* b = dynamic_cast<P::BinaryExpressionContext*>(c)) {
-        auto e = makeExpr(ExprKind::Binary, at);
-        e->op = binaryOp(b->op ? b->op->getType() : 0);
-        e->kids.push_back(expr(b->expression(0)));
-        e->kids.push_back(expr(b->expression(1)));
+        e->kids.push_back(unary(u->unaryExpr()));
         return e;
     }
     return placeholder(at);
+}
+
+AstBuilder::P::IdentifierContext* AstBuilder::bareName(P::ExpressionContext* c) {
+    if (c == nullptr || !c->ops.empty() || c->unaryExpr().size() != 1) return nullptr;
+    auto* p = dynamic_cast<P::PostfixExpressionContext*>(c->unaryExpr(0));
+    if (p == nullptr || p->postfixExpr() == nullptr || !p->postfixExpr()->postfixOp().empty()) return nullptr;
+    P::PrimaryContext* primary = p->postfixExpr()->primary();
+    return primary == nullptr ? nullptr : primary->identifier();
 }
 
 ExprPtr AstBuilder::postfix(P::PostfixExprContext* c) {
@@ -182,23 +258,40 @@ ExprPtr AstBuilder::literal(P::LiteralContext* c) {
     return e;
 }
 
+// `name := value`, `name => variable`, `NOT name => variable` or a value:
+// the grammar parses each as expressions around an optional ':=' / '=>'.
 std::vector<Arg> AstBuilder::args(P::ArgListContext* c) {
     std::vector<Arg> out;
     if (c == nullptr) return out;
     for (auto* a : c->arg()) {
         Arg arg;
         arg.loc = loc(a);
-        if (auto* in = dynamic_cast<P::InputArgContext*>(a)) {
-            arg.name = text(in->identifier());
-            if (in->expression()) arg.value = expr(in->expression());
-        } else if (auto* outArg = dynamic_cast<P::OutputArgContext*>(a)) {
-            arg.name = text(outArg->identifier());
-            arg.output = true;
-            arg.negated = outArg->NOT() != nullptr;
-            if (outArg->expression()) arg.value = expr(outArg->expression());
-        } else if (auto* pos = dynamic_cast<P::PositionalArgContext*>(a)) {
-            arg.value = expr(pos->expression());
+        const std::vector<P::ExpressionContext*> parts = a->expression();
+        if (a->op == nullptr) {
+            arg.value = parts.empty() ? placeholder(arg.loc) : expr(parts[0]);
+            out.push_back(std::move(arg));
+            continue;
         }
+        arg.output = a->op->getType() == L::ARROW;
+        P::IdentifierContext* name = parts.empty() ? nullptr : bareName(parts[0]);
+        if (name == nullptr && arg.output && !parts.empty() && parts[0]->ops.empty() && parts[0]->unaryExpr().size() == 1) {
+            // NOT name => variable: the output negated
+            auto* u = dynamic_cast<P::UnaryExpressionContext*>(parts[0]->unaryExpr(0));
+            if (u != nullptr && u->op != nullptr && u->op->getType() == L::NOT && u->unaryExpr() != nullptr) {
+                auto* p = dynamic_cast<P::PostfixExpressionContext*>(u->unaryExpr());
+                if (p != nullptr && p->postfixExpr() != nullptr && p->postfixExpr()->postfixOp().empty() &&
+                    p->postfixExpr()->primary() != nullptr)
+                    name = p->postfixExpr()->primary()->identifier();
+                arg.negated = name != nullptr;
+            }
+        }
+        if (name == nullptr) {
+            error(arg.loc, fmt::format("'{}' cannot name a parameter: expected 'name {} ...'",
+                                       parts.empty() ? std::string() : sourceText(parts[0]), a->op->getText()));
+            continue;
+        }
+        arg.name = text(name);
+        if (parts.size() > 1) arg.value = expr(parts[1]);
         out.push_back(std::move(arg));
     }
     return out;

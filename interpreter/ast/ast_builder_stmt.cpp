@@ -38,11 +38,6 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
     const Loc at = loc(c);
     if (auto* e = dynamic_cast<P::ExprStmtContext*>(c)) return exprStmt(e);
 
-    if (auto* l = dynamic_cast<P::LabelStmtContext*>(c)) {
-        auto s = makeStmt(StmtKind::Label, at);
-        s->name = text(l->identifier());
-        return s;
-    }
     if (auto* i = dynamic_cast<P::IfStmtContext*>(c)) {
         auto s = makeStmt(StmtKind::If, at);
         auto conds = i->expression();
@@ -113,7 +108,15 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
         s->nameLoc = loc(j->identifier());
         return s;
     }
-    if (dynamic_cast<P::EmptyStmtContext*>(c)) return makeStmt(StmtKind::Empty, at);
+    if (dynamic_cast<P::EmptyStmtContext*>(c)) {
+        // `END_IF;`: the ';' belongs to the statement before, not a statement of its own.
+        const antlr4::Token* before = previousOnChannel(c->getStart());
+        if (before != nullptr) switch (before->getType()) {
+                case L::END_IF: case L::END_CASE: case L::END_FOR: case L::END_WHILE: case L::END_REPEAT: return nullptr;
+                default: break;
+            }
+        return makeStmt(StmtKind::Empty, at);
+    }
     return nullptr;  // a statement the parser could not make sense of (already reported)
 }
 
@@ -121,6 +124,16 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
     const Loc at = loc(c);
     auto operands = c->expression();
     if (operands.empty()) return nullptr;
+    if (c->COLON()) {  // a jump label
+        P::IdentifierContext* name = bareName(operands[0]);
+        if (name == nullptr) {
+            error(at, fmt::format("'{}' cannot be a label: a jump label is a name followed by ':'", sourceText(operands[0])));
+            return nullptr;
+        }
+        auto s = makeStmt(StmtKind::Label, at);
+        s->name = text(name);
+        return s;
+    }
     if (operands.size() == 1) {
         ExprPtr e = expr(operands[0]);
         if (c->ASSIGN() || c->TRY_ASSIGN() || c->EQ()) return nullptr;  // right side missing: reported
