@@ -156,24 +156,32 @@ structInitItem
 
 // ================================================================= variables
 
+// VAR_ACCESS has declarations of its own (`name : prog.var : INT READ_ONLY;`):
+// with its path and access mode in every declaration, the choice after each
+// name and after each type needed more than one token of lookahead.
 varBlock
     : varSection varQualifier* varDecl* END_VAR
+    | VAR_ACCESS varQualifier* accessDecl* END_VAR
     ;
 
 varSection
     : VAR | VAR_INPUT | VAR_OUTPUT | VAR_IN_OUT | VAR_TEMP | VAR_STAT | VAR_INST
-    | VAR_GLOBAL | VAR_EXTERNAL | VAR_ACCESS | VAR_CONFIG
+    | VAR_GLOBAL | VAR_EXTERNAL | VAR_CONFIG
     ;
 
 varQualifier
     : CONSTANT | RETAIN | NON_RETAIN | PERSISTENT
     ;
 
-// `a, b AT %IX0.0 : INT := 5;` — also the looser forms of VAR_CONFIG
-// (`prog.x AT %QW1 : INT;`) and VAR_ACCESS (`name : prog.var : INT READ_ONLY;`).
+// `a, b AT %IX0.0 : INT := 5;` — also the looser form of VAR_CONFIG
+// (`prog.x AT %QW1 : INT;`).
 varDecl
-    : varName (COMMA varName)* (AT DIRECT_ADDRESS)? COLON (accessPath COLON)?
-        typeSpec (ASSIGN initializer)? (READ_ONLY | READ_WRITE)? SEMI?   // a missing ';' is reported by the AST builder
+    : varName (COMMA varName)* (AT DIRECT_ADDRESS)? COLON
+        typeSpec (ASSIGN initializer)? SEMI?   // a missing ';' is reported by the AST builder
+    ;
+
+accessDecl
+    : varName COLON accessPath COLON typeSpec (READ_ONLY | READ_WRITE)? SEMI
     ;
 
 varName

@@ -116,7 +116,7 @@ void AstBuilder::topLevelItem(P::TopLevelItemContext* c, const std::string& name
     } else if (auto* v = c->varBlock()) {
         VarBlock block = varBlock(v);
         if (block.section != VarSection::Global) {
-            error(block.loc, "only VAR_GLOBAL is allowed outside a POU, found " + text(v->varSection()));
+            error(block.loc, "only VAR_GLOBAL is allowed outside a POU, found " + v->getStart()->getText());
             return;
         }
         GlobalList list;

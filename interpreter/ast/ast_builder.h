@@ -54,6 +54,7 @@ private:
     // ---- variables, types, initial values (ast_builder_types.cpp)
     VarBlock varBlock(P::VarBlockContext* c);
     VarDecl varDecl(P::VarDeclContext* c, VarSection section);
+    VarDecl accessDecl(P::AccessDeclContext* c);
     TypeSpecPtr typeSpec(P::TypeSpecContext* c);
     TypeSpecPtr namedType(P::QualifiedNameContext* c);
     EnumValue enumValue(P::EnumValueContext* c);

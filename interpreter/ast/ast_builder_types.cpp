@@ -31,7 +31,8 @@ VarSection sectionOf(size_t tokenType) {
 VarBlock AstBuilder::varBlock(P::VarBlockContext* c) {
     VarBlock out;
     out.loc = loc(c);
-    if (c->varSection()) out.section = sectionOf(c->varSection()->getStart()->getType());
+    if (c->VAR_ACCESS()) out.section = VarSection::Access;
+    else if (c->varSection()) out.section = sectionOf(c->varSection()->getStart()->getType());
     for (auto* q : c->varQualifier()) {
         switch (q->getStart()->getType()) {
             case L::CONSTANT: out.constant = true; break;
@@ -42,6 +43,22 @@ VarBlock AstBuilder::varBlock(P::VarBlockContext* c) {
         }
     }
     for (auto* d : c->varDecl()) out.vars.push_back(varDecl(d, out.section));
+    for (auto* d : c->accessDecl()) out.vars.push_back(accessDecl(d));
+    return out;
+}
+
+// `name : prog.var : TYPE READ_ONLY;` (VAR_ACCESS)
+VarDecl AstBuilder::accessDecl(P::AccessDeclContext* c) {
+    VarDecl out;
+    out.loc = loc(c);
+    out.pragmas = pragmasBefore(c->getStart());
+    if (c->varName()) {
+        out.names.push_back(text(c->varName()));
+        out.nameLocs.push_back(loc(c->varName()));
+    }
+    out.accessPath = text(c->accessPath());
+    out.readOnly = c->READ_ONLY() != nullptr;
+    out.type = typeSpec(c->typeSpec());
     return out;
 }
 
@@ -61,15 +78,6 @@ VarDecl AstBuilder::varDecl(P::VarDeclContext* c, VarSection section) {
             error(loc(n), "'" + out.names.back() + "' is not a simple name; paths are only allowed in VAR_CONFIG");
     }
     if (c->DIRECT_ADDRESS()) out.address = c->DIRECT_ADDRESS()->getText();
-    if (c->accessPath()) {
-        out.accessPath = text(c->accessPath());
-        if (section != VarSection::Access)
-            error(loc(c->accessPath()), "an access path ('name : path : TYPE') is only allowed in VAR_ACCESS");
-    }
-    out.readOnly = c->READ_ONLY() != nullptr;
-    if ((c->READ_ONLY() || c->READ_WRITE()) && section != VarSection::Access)
-        error(loc(c->READ_ONLY() ? c->READ_ONLY()->getSymbol() : c->READ_WRITE()->getSymbol()),
-              "READ_ONLY / READ_WRITE are only allowed in VAR_ACCESS");
     out.type = typeSpec(c->typeSpec());
     if (c->initializer()) out.init = initializer(c->initializer());
     return out;
