@@ -70,6 +70,25 @@ TEST_CASE("expressions: calls with formal and positional arguments", "[parser][e
     CHECK(ex("rs(SET := a, RESET1 := b)") == "(call rs SET:=a RESET1:=b)");
 }
 
+TEST_CASE("expressions: a parameter is named by a plain name", "[parser][expr]") {
+    CHECK(ex("f(NOT a => b, c => d)") == "(call f NOT a=>b c=>d)");
+    auto dotted = parse("PROGRAM P\nx := f(a.b := 1);\nEND_PROGRAM");
+    CHECK(dotted->errors() == "2:8: syntax error: 'a.b' cannot name a parameter: expected 'name := ...'\n");
+    auto negatedInput = parse("PROGRAM P\nx := f(NOT a := 1);\nEND_PROGRAM");
+    CHECK(negatedInput->errors() == "2:8: syntax error: 'NOT a' cannot name a parameter: expected 'name := ...'\n");
+}
+
+TEST_CASE("expressions: a chain deeper than the limit is refused before it is built", "[parser][expr]") {
+    std::string chain = "x := 1";
+    for (int i = 0; i < 2000; ++i) chain += " * 2";  // the limit, kMaxExpressionDepth
+    auto p = parse("PROGRAM P\n" + chain + ";\nEND_PROGRAM");
+    CHECK(p->errors() == "2:6: syntax error: expression too complex: more than 2000 nested operations\n");
+    // 2000 operators whose tree is only 1001 deep (each product is a leaf of the sum chain) are fine.
+    std::string sums = "x := 1";
+    for (int i = 0; i < 1000; ++i) sums += " + 2 * 3";
+    CHECK(parse("PROGRAM P\n" + sums + ";\nEND_PROGRAM")->errors() == "");
+}
+
 TEST_CASE("expressions: literals keep their whole text", "[parser][expr]") {
     auto lit = [](const std::string& text) {
         auto p = parse("PROGRAM P\nx := " + text + ";\nEND_PROGRAM");

@@ -66,6 +66,20 @@ TEST_CASE("statements: loops and jumps", "[parser][stmt]") {
     CHECK(stmts("") == "{}");
 }
 
+// Since decision 0158 a jump label is an expression statement ending in ':'
+// and the ';' after END_IF and the like an empty statement the builder drops.
+TEST_CASE("statements: labels, CASE labels and the ';' after END_xxx", "[parser][stmt]") {
+    CHECK(stmts("IF a THEN x := 1; END_IF;;") == "{(if a {(:= x 1)}) ;}");
+    CHECK(stmts("WHILE a DO END_WHILE; FOR i := 1 TO 2 DO END_FOR; REPEAT UNTIL a END_REPEAT; x := 1;") ==
+          "{(while a {}) (for i 1 2 {}) (repeat {} a) (:= x 1)}");
+    CHECK(stmts("CASE x OF 1: IF a THEN lbl: y := 1; END_IF; 2, 3: JMP lbl; END_CASE;") ==
+          "{(case x [1: {(if a {(label lbl) (:= y 1)})}] [2,3: {(jmp lbl)}])}");
+    CHECK(stmts("CASE x OF 1: y := 1; -2: y := 2; 3..4, 16#FF: y := 3; Color.Red: y := 4; END_CASE") ==
+          "{(case x [1: {(:= y 1)}] [(neg 2): {(:= y 2)}] [3..4,16#FF: {(:= y 3)}] [(. Color Red): {(:= y 4)}])}");
+    CHECK(stmts("a.b: x := 1;") == "ERRORS: 2:1: syntax error: 'a.b' cannot be a label: a jump label is a name followed by ':'\n");
+    CHECK(stmts("f(1):") == "ERRORS: 2:1: syntax error: 'f(1)' cannot be a label: a jump label is a name followed by ':'\n");
+}
+
 TEST_CASE("statements: locations", "[parser][stmt]") {
     auto p = parse("PROGRAM P\nIF a THEN\n    x := 1;\nELSIF b THEN\n  y := 2;\nEND_IF\nEND_PROGRAM");
     REQUIRE(p->errors() == "");
