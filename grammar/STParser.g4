@@ -64,7 +64,7 @@ usingDirective
 
 pouDecl
     : PROGRAM identifier pouElement* stmtList memberDecl* END_PROGRAM                     # programDecl
-    | FUNCTION identifier (COLON typeSpec)? varBlock* stmtList END_FUNCTION               # functionDecl
+    | FUNCTION identifier (COLON returnType)? varBlock* stmtList END_FUNCTION             # functionDecl
     | FUNCTION_BLOCK modifier* identifier
         (EXTENDS qualifiedName)? (IMPLEMENTS qualifiedName (COMMA qualifiedName)*)?
         pouElement* stmtList memberDecl* END_FUNCTION_BLOCK                               # functionBlockDecl
@@ -88,7 +88,7 @@ modifier
     ;
 
 methodDecl
-    : METHOD modifier* identifier (COLON typeSpec)? varBlock* stmtList END_METHOD
+    : METHOD modifier* identifier (COLON returnType)? varBlock* stmtList END_METHOD
     ;
 
 // CODESYS/TwinCAT action: code of a PROGRAM or FUNCTION_BLOCK working on its
@@ -124,10 +124,27 @@ typeSpec
     | STRUCT varDecl* END_STRUCT                                             # structType
     | UNION varDecl* END_UNION                                               # unionType   // CODESYS: members share storage
     | LPAREN enumValue (COMMA enumValue)* RPAREN qualifiedName?              # enumType
-    | qualifiedName LPAREN expression DOTDOT expression RPAREN               # subrangeType
-    | qualifiedName LPAREN enumValue (COMMA enumValue)* RPAREN               # typedEnumType
-    | qualifiedName LPAREN argList? RPAREN                                   # instanceArgsType   // CODESYS `fb : FB(1, x)`, `t : R_TRIG()`: FB_init arguments
-    | qualifiedName                                                          # namedType
+    | qualifiedName typeArguments?                                           # namedType
+    ;
+
+// After a type name: `INT (0..100)` (subrange), `INT (Red, Green)` (enumeration
+// with a base type), `FB(1, x)` / `R_TRIG()` (CODESYS FB_init arguments).
+typeArguments
+    : LPAREN expression DOTDOT expression RPAREN                             # subrangeArgs
+    | LPAREN enumValue (COMMA enumValue)* RPAREN                             # enumArgs
+    | LPAREN argList? RPAREN                                                 # instanceArgs
+    ;
+
+// The result type of a FUNCTION or METHOD: the forms of typeSpec that fit
+// there, without the ones with arguments in parentheses. A body may start
+// with '(' after it; with typeSpec here, the choice after every type name
+// (are arguments next?) needed more than one token of lookahead.
+returnType
+    : ARRAY LBRACK arrayRange (COMMA arrayRange)* RBRACK OF returnType      # arrayReturnType
+    | (POINTER TO | REF_TO) returnType                                       # pointerReturnType
+    | REFERENCE TO returnType                                                # referenceReturnType
+    | (STRING | WSTRING) (LBRACK expression RBRACK | LPAREN expression RPAREN)?   # stringReturnType
+    | qualifiedName                                                          # namedReturnType
     ;
 
 arrayRange

@@ -164,7 +164,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
         out->kind = PouKind::Function;
         out->name = text(fn->identifier());
         out->nameLoc = loc(fn->identifier());
-        if (fn->typeSpec()) out->returnType = typeSpec(fn->typeSpec());
+        if (fn->returnType()) out->returnType = returnType(fn->returnType());
         for (auto* v : fn->varBlock()) out->vars.push_back(varBlock(v));
         stmtList(fn->stmtList(), out->body);
         out->endLoc = loc(fn->END_FUNCTION() ? fn->END_FUNCTION()->getSymbol() : c->getStop());
@@ -214,7 +214,7 @@ std::unique_ptr<Pou> AstBuilder::method(P::MethodDeclContext* c, const std::stri
     out->name = text(c->identifier());
     out->nameLoc = loc(c->identifier());
     modifiers(c->modifier(), out->access, out->abstract, out->final);
-    if (c->typeSpec()) out->returnType = typeSpec(c->typeSpec());
+    if (c->returnType()) out->returnType = returnType(c->returnType());
     for (auto* v : c->varBlock()) out->vars.push_back(varBlock(v));
     stmtList(c->stmtList(), out->body);
     out->hasBody = !(inInterface || out->abstract);

@@ -56,6 +56,8 @@ private:
     VarDecl varDecl(P::VarDeclContext* c, VarSection section);
     VarDecl accessDecl(P::AccessDeclContext* c);
     TypeSpecPtr typeSpec(P::TypeSpecContext* c);
+    TypeSpecPtr returnType(P::ReturnTypeContext* c);
+    std::vector<Range> arrayRanges(const std::vector<P::ArrayRangeContext*>& ranges);
     TypeSpecPtr namedType(P::QualifiedNameContext* c);
     EnumValue enumValue(P::EnumValueContext* c);
     InitPtr initializer(P::InitializerContext* c);

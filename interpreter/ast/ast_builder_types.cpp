@@ -104,18 +104,27 @@ TypeSpecPtr AstBuilder::typeSpec(P::TypeSpecContext* c) {
     out->loc = loc(c);
     if (c == nullptr) return out;  // missing after a syntax error: an unnamed Named type
 
-    if (auto* a = dynamic_cast<P::ArrayTypeContext*>(c)) {
-        out->kind = TypeSpecKind::Array;
-        for (auto* r : a->arrayRange()) {
-            Range range;
-            if (r->STAR()) {
-                range.star = true;
-            } else {
-                range.lo = r->expression(0) ? expr(r->expression(0)) : placeholder(loc(r));
-                range.hi = r->expression(1) ? expr(r->expression(1)) : placeholder(loc(r));
-            }
-            out->dims.push_back(std::move(range));
+    if (auto* n = dynamic_cast<P::NamedTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Named;
+        P::TypeArgumentsContext* arguments = n->typeArguments();
+        if (arguments == nullptr) {
+            out->name = text(n->qualifiedName());
+        } else if (auto* sr = dynamic_cast<P::SubrangeArgsContext*>(arguments)) {
+            out->kind = TypeSpecKind::Subrange;
+            if (n->qualifiedName()) out->elem = namedType(n->qualifiedName());
+            out->lo = sr->expression(0) ? expr(sr->expression(0)) : placeholder(out->loc);
+            out->hi = sr->expression(1) ? expr(sr->expression(1)) : placeholder(out->loc);
+        } else if (auto* te = dynamic_cast<P::EnumArgsContext*>(arguments)) {
+            out->kind = TypeSpecKind::Enum;
+            for (auto* v : te->enumValue()) out->enumValues.push_back(enumValue(v));
+            if (n->qualifiedName()) out->elem = namedType(n->qualifiedName());
+        } else if (auto* ia = dynamic_cast<P::InstanceArgsContext*>(arguments)) {
+            out->name = text(n->qualifiedName());
+            out->initArgs = args(ia->argList());
         }
+    } else if (auto* a = dynamic_cast<P::ArrayTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Array;
+        out->dims = arrayRanges(a->arrayRange());
         out->elem = typeSpec(a->typeSpec());
     } else if (auto* p = dynamic_cast<P::PointerTypeContext*>(c)) {
         out->kind = TypeSpecKind::Pointer;
@@ -138,22 +147,47 @@ TypeSpecPtr AstBuilder::typeSpec(P::TypeSpecContext* c) {
         out->kind = TypeSpecKind::Enum;
         for (auto* v : e->enumValue()) out->enumValues.push_back(enumValue(v));
         if (e->qualifiedName()) out->elem = namedType(e->qualifiedName());
-    } else if (auto* te = dynamic_cast<P::TypedEnumTypeContext*>(c)) {
-        out->kind = TypeSpecKind::Enum;
-        for (auto* v : te->enumValue()) out->enumValues.push_back(enumValue(v));
-        if (te->qualifiedName()) out->elem = namedType(te->qualifiedName());
-    } else if (auto* sr = dynamic_cast<P::SubrangeTypeContext*>(c)) {
-        out->kind = TypeSpecKind::Subrange;
-        if (sr->qualifiedName()) out->elem = namedType(sr->qualifiedName());
-        out->lo = sr->expression(0) ? expr(sr->expression(0)) : placeholder(out->loc);
-        out->hi = sr->expression(1) ? expr(sr->expression(1)) : placeholder(out->loc);
-    } else if (auto* ia = dynamic_cast<P::InstanceArgsTypeContext*>(c)) {
-        out->kind = TypeSpecKind::Named;
-        out->name = text(ia->qualifiedName());
-        out->initArgs = args(ia->argList());
-    } else if (auto* n = dynamic_cast<P::NamedTypeContext*>(c)) {
+    }
+    return out;
+}
+
+std::vector<Range> AstBuilder::arrayRanges(const std::vector<P::ArrayRangeContext*>& ranges) {
+    std::vector<Range> out;
+    for (auto* r : ranges) {
+        Range range;
+        if (r->STAR()) {
+            range.star = true;
+        } else {
+            range.lo = r->expression(0) ? expr(r->expression(0)) : placeholder(loc(r));
+            range.hi = r->expression(1) ? expr(r->expression(1)) : placeholder(loc(r));
+        }
+        out.push_back(std::move(range));
+    }
+    return out;
+}
+
+// The same TypeSpec as typeSpec() builds for the same text.
+TypeSpecPtr AstBuilder::returnType(P::ReturnTypeContext* c) {
+    auto out = std::make_unique<TypeSpec>();
+    out->loc = loc(c);
+    if (c == nullptr) return out;
+    if (auto* n = dynamic_cast<P::NamedReturnTypeContext*>(c)) {
         out->kind = TypeSpecKind::Named;
         out->name = text(n->qualifiedName());
+    } else if (auto* a = dynamic_cast<P::ArrayReturnTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Array;
+        out->dims = arrayRanges(a->arrayRange());
+        out->elem = returnType(a->returnType());
+    } else if (auto* p = dynamic_cast<P::PointerReturnTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Pointer;
+        out->elem = returnType(p->returnType());
+    } else if (auto* r = dynamic_cast<P::ReferenceReturnTypeContext*>(c)) {
+        out->kind = TypeSpecKind::Reference;
+        out->elem = returnType(r->returnType());
+    } else if (auto* s = dynamic_cast<P::StringReturnTypeContext*>(c)) {
+        out->kind = TypeSpecKind::String;
+        out->wide = s->WSTRING() != nullptr;
+        if (s->expression()) out->length = expr(s->expression());
     }
     return out;
 }

@@ -43,7 +43,7 @@ std::string phraseForRule(size_t ruleIndex) {
             return "an expression";
         case P::RuleStatement: case P::RuleStmtList: case P::RuleCaseBody: case P::RuleCaseStatement:
             return "a statement";
-        case P::RuleTypeSpec:
+        case P::RuleTypeSpec: case P::RuleTypeArguments: case P::RuleReturnType:
             return "a type";
         case P::RuleVarDecl: case P::RuleVarName: case P::RuleVarBlock:
             return "a variable declaration";
