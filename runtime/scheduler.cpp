@@ -134,7 +134,7 @@ PlcState Scheduler::run() {
     // between installing the handler and this call still stops the run.
     runningMachine_.store(&machine_);
     machine_.handler = this;
-    for (const std::vector<uint8_t>* area : {&machine_.image.inputs, &machine_.image.outputs, &machine_.image.memory})
+    for (const ImageArea* area : {&machine_.image.inputs, &machine_.image.outputs, &machine_.image.memory})
         machine_.memory.add(area->data(), area->size());
     machine_.now = 0;
     machine_.deadline.store(kNever);

@@ -938,7 +938,7 @@ uint8_t* Checker::mapAddress(const std::string& address, const Type* t, const as
     };
     if (a.size() < 3 || a[0] != '%') return fail("expected %I, %Q or %M");
     if (a[1] == 'S') return mapSystemAddress(address, t, loc, bit);
-    std::vector<uint8_t>* area = nullptr;
+    rt::ImageArea* area = nullptr;
     switch (a[1]) {
         case 'I': area = &model_.machine.image.inputs; break;
         case 'Q': area = &model_.machine.image.outputs; break;
