@@ -6,7 +6,6 @@
 #pragma once
 
 #include <atomic>
-#include <cstdlib>
 #include <new>
 #include <utility>
 #include <cstdint>
@@ -44,24 +43,24 @@ const char* diagCodeName(DiagCode code);
 // The process image of direct addresses (%I, %Q, %M). CODESYS addressing:
 // %IX3.2 = bit 2 of byte 3, %IB3 = byte 3, %IW3 = bytes 6..7, %ID3 = bytes
 // 12..15, %IL3 = bytes 24..31 (the index counts units of the access size).
-// Zero-filled bytes from calloc, which takes fresh memory from the system
-// without writing it: the five 64 KiB areas of the image cost nothing (no
-// memset, no page touched) until a program addresses them. Value-
-// initialisation in std::vector would write every byte (5 % of a one-line run).
+// Zero-filled memory straight from the system (anonymous mmap): the five
+// 64 KiB areas of the image cost nothing (no memset, no page touched) until
+// a program addresses them. Value-initialisation in std::vector, or calloc
+// of heap memory, would write every byte (5 % of a one-line run).
+// Zeroed memory of `bytes` (throws std::bad_alloc), and its release.
+void* allocateZeroedPages(size_t bytes);
+void freeZeroedPages(void* p, size_t bytes);
+
 template <typename T>
 struct ZeroedAllocator {
     using value_type = T;
     ZeroedAllocator() = default;
     template <typename U>
     ZeroedAllocator(const ZeroedAllocator<U>&) {}
-    T* allocate(size_t n) {
-        void* p = std::calloc(n, sizeof(T));
-        if (p == nullptr) throw std::bad_alloc();
-        return static_cast<T*>(p);
-    }
-    void deallocate(T* p, size_t) { std::free(p); }
+    T* allocate(size_t n) { return static_cast<T*>(allocateZeroedPages(n * sizeof(T))); }
+    void deallocate(T* p, size_t n) { freeZeroedPages(p, n * sizeof(T)); }
     template <typename U>
-    void construct(U*) {}  // calloc already made it zero
+    void construct(U*) {}  // already zero
     template <typename U, typename... Args>
     void construct(U* p, Args&&... args) { ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...); }
     template <typename U>
