@@ -303,25 +303,22 @@ expression
                      | AND | AMP | AND_THEN | XOR | OR | OR_ELSE) unaryExpr)*
     ;
 
+// An operand. Names, the primaries and the literals are tokens of this rule
+// rather than rules of their own (`identifier`, `literal`): every rule a
+// parse enters costs a context object, two dynamic casts and a destructor,
+// and operands are most of a program (decision 0158). The name tokens are
+// those of `identifier`.
 unaryExpr
-    : op=(MINUS | PLUS | NOT) unaryExpr                      # unaryExpression
-    | postfixExpr                                            # postfixExpression
-    | literal                                                # literalExpression
-    ;
-
-// Postfix operators are an iteration, not a recursion: a long chain
-// `a.b.c[1]^.d()` costs no parser stack.
-postfixExpr
-    : primary postfixOp*
-    ;
-
-primary
-    : identifier
-    | keywordFunction=(MOD | AND | OR | XOR)   // MOD(a, b), AND(a, b, c): the standard functions named like operators
-    | THIS
-    | SUPER
-    | DIRECT_ADDRESS
-    | LPAREN expression RPAREN
+    : op=(MINUS | PLUS | NOT) unaryExpr                                   # unaryExpression
+    | value=(INTEGER | BASED_INTEGER | REAL_LITERAL | TRUE | FALSE | STRING_LITERAL | WSTRING_LITERAL
+            | DURATION_LITERAL | DATE_LITERAL | TOD_LITERAL | DT_LITERAL | TYPED_LITERAL)   # literalExpression
+    | ( name=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION)
+      | keywordFunction=(MOD | AND | OR | XOR)   // MOD(a, b), AND(a, b, c): the standard functions named like operators
+      | THIS
+      | SUPER
+      | DIRECT_ADDRESS
+      | LPAREN expression RPAREN
+      ) postfixOp*                                                        # postfixExpression
     ;
 
 postfixOp
@@ -350,21 +347,6 @@ argList
 // choice needs one token of lookahead.
 arg
     : expression (op=(ASSIGN | ARROW) expression?)?
-    ;
-
-literal
-    : INTEGER
-    | BASED_INTEGER
-    | REAL_LITERAL
-    | TRUE
-    | FALSE
-    | STRING_LITERAL
-    | WSTRING_LITERAL
-    | DURATION_LITERAL
-    | DATE_LITERAL
-    | TOD_LITERAL
-    | DT_LITERAL
-    | TYPED_LITERAL
     ;
 
 // ================================================================= names

@@ -70,10 +70,12 @@ private:
     // ---- expressions (ast_builder_expr.cpp)
     ExprPtr expr(P::ExpressionContext* c);
     ExprPtr unary(P::UnaryExprContext* c);
-    static P::IdentifierContext* bareName(P::ExpressionContext* c);  // the name if `c` is just one
-    ExprPtr postfix(P::PostfixExprContext* c);
-    ExprPtr primary(P::PrimaryContext* c);
-    ExprPtr literal(P::LiteralContext* c);
+    // The name token if the expression is just a name, else null.
+    static const antlr4::Token* bareName(P::ExpressionContext* c);
+    static const antlr4::Token* bareName(P::UnaryExprContext* c);
+    ExprPtr postfix(P::PostfixExpressionContext* c);
+    ExprPtr primary(P::PostfixExpressionContext* c);  // the part before the postfix operators
+    ExprPtr literal(const antlr4::Token* token);
     std::vector<Arg> args(P::ArgListContext* c);
     ExprPtr placeholder(const Loc& at);  // stands in for what a syntax error left out
 

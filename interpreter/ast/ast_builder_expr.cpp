@@ -140,8 +140,8 @@ ExprPtr AstBuilder::expr(P::ExpressionContext* c) {
 
 ExprPtr AstBuilder::unary(P::UnaryExprContext* c) {
     if (c == nullptr) return placeholder(Loc{file_, 0, 0});
-    if (auto* p = dynamic_cast<P::PostfixExpressionContext*>(c)) return postfix(p->postfixExpr());
-    if (auto* l = dynamic_cast<P::LiteralExpressionContext*>(c)) return literal(l->literal());
+    if (auto* p = dynamic_cast<P::PostfixExpressionContext*>(c)) return postfix(p);
+    if (auto* l = dynamic_cast<P::LiteralExpressionContext*>(c)) return literal(l->value);
     const Loc at = loc(c);
     if (auto* u = dynamic_cast<P::UnaryExpressionContext*>(c)) {
         DepthScope scope(exprDepth_);
@@ -160,18 +160,23 @@ ExprPtr AstBuilder::unary(P::UnaryExprContext* c) {
     return placeholder(at);
 }
 
-AstBuilder::P::IdentifierContext* AstBuilder::bareName(P::ExpressionContext* c) {
+const antlr4::Token* AstBuilder::bareName(P::ExpressionContext* c) {
     if (c == nullptr || !c->ops.empty() || c->unaryExpr().size() != 1) return nullptr;
-    auto* p = dynamic_cast<P::PostfixExpressionContext*>(c->unaryExpr(0));
-    if (p == nullptr || p->postfixExpr() == nullptr || !p->postfixExpr()->postfixOp().empty()) return nullptr;
-    P::PrimaryContext* primary = p->postfixExpr()->primary();
-    return primary == nullptr ? nullptr : primary->identifier();
+    return bareName(c->unaryExpr(0));
 }
 
-ExprPtr AstBuilder::postfix(P::PostfixExprContext* c) {
+const antlr4::Token* AstBuilder::bareName(P::UnaryExprContext* c) {
+    auto* p = dynamic_cast<P::PostfixExpressionContext*>(c);
+    if (p == nullptr || p->name == nullptr || !p->postfixOp().empty()) return nullptr;
+    return p->name;
+}
+
+// A primary and the postfix operators after it (an iteration, not a
+// recursion: a long chain `a.b.c[1]^.d()` costs no parser stack).
+ExprPtr AstBuilder::postfix(P::PostfixExpressionContext* c) {
     const Loc at = loc(c);
     if (c == nullptr) return placeholder(at);
-    ExprPtr current = primary(c->primary());
+    ExprPtr current = primary(c);
     const auto ops = c->postfixOp();
     if (static_cast<int>(ops.size()) + exprDepth_ > kMaxExpressionDepth) {
         if (!depthReported_)
@@ -206,17 +211,11 @@ ExprPtr AstBuilder::postfix(P::PostfixExprContext* c) {
     return current;
 }
 
-ExprPtr AstBuilder::primary(P::PrimaryContext* c) {
+ExprPtr AstBuilder::primary(P::PostfixExpressionContext* c) {
     const Loc at = loc(c);
-    if (c == nullptr) return placeholder(at);
-    if (c->identifier()) {
+    if (const antlr4::Token* name = c->name != nullptr ? c->name : c->keywordFunction) {
         auto e = makeExpr(ExprKind::Name, at);
-        e->name = text(c->identifier());
-        return e;
-    }
-    if (c->keywordFunction) {
-        auto e = makeExpr(ExprKind::Name, at);
-        e->name = c->keywordFunction->getText();
+        e->name = name->getText();
         return e;
     }
     if (c->DIRECT_ADDRESS()) {
@@ -230,11 +229,10 @@ ExprPtr AstBuilder::primary(P::PrimaryContext* c) {
     return placeholder(at);
 }
 
-ExprPtr AstBuilder::literal(P::LiteralContext* c) {
-    const Loc at = loc(c);
-    if (c == nullptr || c->getStart() == nullptr) return placeholder(at);
+ExprPtr AstBuilder::literal(const antlr4::Token* token) {
+    const Loc at = loc(token);
+    if (token == nullptr) return placeholder(at);
     auto e = makeExpr(ExprKind::Literal, at);
-    const antlr4::Token* token = c->getStart();
     e->text = token->getText();
     switch (token->getType()) {
         case L::INTEGER: case L::BASED_INTEGER: e->lit = LitKind::Integer; break;
@@ -273,15 +271,12 @@ std::vector<Arg> AstBuilder::args(P::ArgListContext* c) {
             continue;
         }
         arg.output = a->op->getType() == L::ARROW;
-        P::IdentifierContext* name = parts.empty() ? nullptr : bareName(parts[0]);
+        const antlr4::Token* name = parts.empty() ? nullptr : bareName(parts[0]);
         if (name == nullptr && arg.output && !parts.empty() && parts[0]->ops.empty() && parts[0]->unaryExpr().size() == 1) {
             // NOT name => variable: the output negated
             auto* u = dynamic_cast<P::UnaryExpressionContext*>(parts[0]->unaryExpr(0));
-            if (u != nullptr && u->op != nullptr && u->op->getType() == L::NOT && u->unaryExpr() != nullptr) {
-                auto* p = dynamic_cast<P::PostfixExpressionContext*>(u->unaryExpr());
-                if (p != nullptr && p->postfixExpr() != nullptr && p->postfixExpr()->postfixOp().empty() &&
-                    p->postfixExpr()->primary() != nullptr)
-                    name = p->postfixExpr()->primary()->identifier();
+            if (u != nullptr && u->op != nullptr && u->op->getType() == L::NOT) {
+                name = bareName(u->unaryExpr());
                 arg.negated = name != nullptr;
             }
         }
@@ -290,7 +285,7 @@ std::vector<Arg> AstBuilder::args(P::ArgListContext* c) {
                                        parts.empty() ? std::string() : sourceText(parts[0]), a->op->getText()));
             continue;
         }
-        arg.name = text(name);
+        arg.name = name->getText();
         if (parts.size() > 1) arg.value = expr(parts[1]);
         out.push_back(std::move(arg));
     }

@@ -125,13 +125,13 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
     auto operands = c->expression();
     if (operands.empty()) return nullptr;
     if (c->COLON()) {  // a jump label
-        P::IdentifierContext* name = bareName(operands[0]);
+        const antlr4::Token* name = bareName(operands[0]);
         if (name == nullptr) {
             error(at, fmt::format("'{}' cannot be a label: a jump label is a name followed by ':'", sourceText(operands[0])));
             return nullptr;
         }
         auto s = makeStmt(StmtKind::Label, at);
-        s->name = text(name);
+        s->name = name->getText();
         return s;
     }
     if (operands.size() == 1) {

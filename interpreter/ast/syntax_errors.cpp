@@ -38,7 +38,7 @@ bool isStructuralKeyword(const std::string& symbolic) {
 // What the parser was looking for, in words, by the rule it was in.
 std::string phraseForRule(size_t ruleIndex) {
     switch (ruleIndex) {
-        case P::RuleExpression: case P::RuleUnaryExpr: case P::RulePostfixExpr: case P::RulePrimary: case P::RuleLiteral:
+        case P::RuleExpression: case P::RuleUnaryExpr:
         case P::RuleCaseLabel: case P::RuleExpressionList: case P::RuleArrayRange:
             return "an expression";
         case P::RuleStatement: case P::RuleStmtList: case P::RuleCaseBody: case P::RuleCaseStatement:
