@@ -202,11 +202,13 @@ accessDecl
     ;
 
 varName
-    : identifier (DOT memberName | LBRACK expressionList RBRACK)*
+    : identifier (DOT member=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION
+                             | INTEGER | PARTIAL_ACCESS) | LBRACK expressionList RBRACK)*
     ;
 
 accessPath
-    : identifier (DOT memberName | LBRACK expressionList RBRACK)*
+    : identifier (DOT member=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION
+                             | INTEGER | PARTIAL_ACCESS) | LBRACK expressionList RBRACK)*
     ;
 
 // ================================================================= configuration
@@ -322,16 +324,11 @@ unaryExpr
     ;
 
 postfixOp
-    : DOT memberName                      # memberOp
+    : DOT member=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION
+                 | INTEGER | PARTIAL_ACCESS)   # memberOp   // a name (the tokens of `identifier`), a bit number, %X3
     | LBRACK expressionList RBRACK        # indexOp
     | CARET                               # derefOp
     | LPAREN argList? RPAREN              # callOp
-    ;
-
-memberName
-    : identifier
-    | INTEGER
-    | PARTIAL_ACCESS
     ;
 
 expressionList
@@ -351,8 +348,11 @@ arg
 
 // ================================================================= names
 
+// A dotted name: its parts are tokens (those of `identifier`), not rules,
+// as every type name of a declaration is one (decision 0158).
 qualifiedName
-    : identifier (DOT identifier)*
+    : (IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION)
+      (DOT (IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION))*
     ;
 
 // Soft keywords: words with a meaning in one place that stay usable as names.

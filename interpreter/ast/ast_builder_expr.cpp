@@ -188,8 +188,10 @@ ExprPtr AstBuilder::postfix(P::PostfixExpressionContext* c) {
         ExprPtr next;
         if (auto* m = dynamic_cast<P::MemberOpContext*>(op)) {
             next = makeExpr(ExprKind::Member, at);
-            next->name = text(m->memberName());
-            next->nameLoc = loc(m->memberName());
+            if (m->member != nullptr) {
+                next->name = m->member->getText();
+                next->nameLoc = loc(m->member);
+            }
         } else if (auto* i = dynamic_cast<P::IndexOpContext*>(op)) {
             next = makeExpr(ExprKind::Index, at);
             next->kids.push_back(std::move(current));

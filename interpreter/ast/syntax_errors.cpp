@@ -53,7 +53,7 @@ std::string phraseForRule(size_t ruleIndex) {
             return "an initial value";
         case P::RuleArgList: case P::RuleArg:
             return "an argument";
-        case P::RulePostfixOp: case P::RuleMemberName:
+        case P::RulePostfixOp:
             return "a member name";
         default:
             return "";
