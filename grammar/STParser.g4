@@ -178,7 +178,7 @@ structInitItem
 // name and after each type needed more than one token of lookahead.
 varBlock
     : varSection varQualifier* varDecl* END_VAR
-    | VAR_ACCESS varQualifier* accessDecl* END_VAR
+    | access=VAR_ACCESS varQualifier* accessDecl* END_VAR
     ;
 
 varSection
@@ -191,10 +191,12 @@ varQualifier
     ;
 
 // `a, b AT %IX0.0 : INT := 5;` — also the looser form of VAR_CONFIG
-// (`prog.x AT %QW1 : INT;`).
+// (`prog.x AT %QW1 : INT;`). Tokens the AST builder asks about have labels
+// (semi=, address=, and colon=, assign=, eq= in exprStmt): a label is a
+// field, the generated accessor a search of the children.
 varDecl
-    : varName (COMMA varName)* (AT DIRECT_ADDRESS)? COLON
-        typeSpec (ASSIGN initializer)? SEMI?   // a missing ';' is reported by the AST builder
+    : varName (COMMA varName)* (AT address=DIRECT_ADDRESS)? COLON
+        typeSpec (ASSIGN initializer)? semi=SEMI?   // a missing ';' is reported by the AST builder
     ;
 
 accessDecl
@@ -260,7 +262,7 @@ stmtList
 // needed adaptive prediction on every statement. The ';' after END_IF and
 // the like is an empty statement for the same reason (the builder drops it).
 statement
-    : expression ((((ASSIGN | TRY_ASSIGN) expression | identifier EQ expression)? SEMI) | COLON)   # exprStmt
+    : expression (((assign=(ASSIGN | TRY_ASSIGN) expression | identifier eq=EQ expression)? SEMI) | colon=COLON)   # exprStmt
     | IF expression THEN stmtList (ELSIF expression THEN stmtList)* (ELSE stmtList)? END_IF  # ifStmt
     | CASE expression OF caseBranch* (ELSE stmtList)? END_CASE                   # caseStmt
     | FOR identifier ASSIGN expression TO expression (BY expression)? DO stmtList END_FOR  # forStmt

@@ -124,7 +124,7 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
     const Loc at = loc(c);
     auto operands = c->expression();
     if (operands.empty()) return nullptr;
-    if (c->COLON()) {  // a jump label
+    if (c->colon != nullptr) {  // a jump label
         const antlr4::Token* name = bareName(operands[0]);
         if (name == nullptr) {
             error(at, fmt::format("'{}' cannot be a label: a jump label is a name followed by ':'", sourceText(operands[0])));
@@ -136,7 +136,7 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
     }
     if (operands.size() == 1) {
         ExprPtr e = expr(operands[0]);
-        if (c->ASSIGN() || c->TRY_ASSIGN() || c->EQ()) return nullptr;  // right side missing: reported
+        if (c->assign != nullptr || c->eq != nullptr) return nullptr;  // right side missing: reported
         if (e->kind != ExprKind::Call) {
             const bool comparison = e->kind == ExprKind::Binary && e->op == Op::Eq;
             Diagnostic& d = error(at, fmt::format("'{}' is not a statement: expected ':=' or a call with '(...)'{}",
@@ -151,7 +151,7 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
     }
 
     StmtKind kind = StmtKind::Assign;
-    if (c->TRY_ASSIGN()) {
+    if (c->assign != nullptr && c->assign->getType() == L::TRY_ASSIGN) {
         kind = StmtKind::TryAssign;
     } else if (c->identifier()) {
         // `x S= y` lexes as x, S, =, y: the word before '=' names the operator.

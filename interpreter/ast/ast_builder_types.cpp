@@ -31,7 +31,7 @@ VarSection sectionOf(size_t tokenType) {
 VarBlock AstBuilder::varBlock(P::VarBlockContext* c) {
     VarBlock out;
     out.loc = loc(c);
-    if (c->VAR_ACCESS()) out.section = VarSection::Access;
+    if (c->access != nullptr) out.section = VarSection::Access;
     else if (c->varSection()) out.section = sectionOf(c->varSection()->getStart()->getType());
     for (auto* q : c->varQualifier()) {
         switch (q->getStart()->getType()) {
@@ -64,7 +64,7 @@ VarDecl AstBuilder::accessDecl(P::AccessDeclContext* c) {
 
 VarDecl AstBuilder::varDecl(P::VarDeclContext* c, VarSection section) {
     VarDecl out;
-    if (c->SEMI() == nullptr && c->exception == nullptr && c->getStop() != nullptr && c->getStart() != nullptr)
+    if (c->semi == nullptr && c->exception == nullptr && c->getStop() != nullptr && c->getStart() != nullptr)
         reportMissingDeclarationSemicolon(errors_, &tokens_, c->getStart(), c->getStop());
     out.loc = loc(c);
     out.pragmas = pragmasBefore(c->getStart());
@@ -77,7 +77,7 @@ VarDecl AstBuilder::varDecl(P::VarDeclContext* c, VarSection section) {
         if (isPath && section != VarSection::Config && section != VarSection::Access)
             error(loc(n), "'" + out.names.back() + "' is not a simple name; paths are only allowed in VAR_CONFIG");
     }
-    if (c->DIRECT_ADDRESS()) out.address = c->DIRECT_ADDRESS()->getText();
+    if (c->address != nullptr) out.address = c->address->getText();
     out.type = typeSpec(c->typeSpec());
     if (c->initializer()) out.init = initializer(c->initializer());
     return out;
