@@ -254,7 +254,7 @@ private:
     std::string text_;
     ScanResult scan_;
     ScannedTokenSource source_;
-    antlr4::CommonTokenStream tokens_;
+    ScannedTokenStream tokens_;
     P parser_;
     SyntaxErrorReporter reporter_;
     CompileLog& log_;

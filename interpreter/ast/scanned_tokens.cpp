@@ -22,7 +22,7 @@ size_t Utf8SourceStream::LA(ssize_t i) {
 ScannedTokenSource::ScannedTokenSource(std::string_view text, const std::vector<ScannedToken>& scanned)
     : stream_(text), scanned_(scanned) {}
 
-std::unique_ptr<antlr4::Token> ScannedTokenSource::nextToken() {
+std::unique_ptr<antlr4::CommonToken> ScannedTokenSource::next(size_t tokenIndex) {
     // Past the end the EOF token again, as a lexer would.
     const ScannedToken& t = scanned_[std::min(next_, scanned_.size() - 1)];
     if (next_ < scanned_.size()) ++next_;
@@ -30,7 +30,23 @@ std::unique_ptr<antlr4::Token> ScannedTokenSource::nextToken() {
     auto token = std::make_unique<antlr4::CommonToken>(std::make_pair(this, &stream_), t.type, t.channel, t.start, stop);
     token->setLine(t.line);
     token->setCharPositionInLine(t.column);
+    token->setTokenIndex(tokenIndex);
     return token;
+}
+
+size_t ScannedTokenStream::fetch(size_t n) {
+    if (_fetchedEOF) return 0;
+    if (_tokens.empty()) _tokens.reserve(source_->count());
+    size_t i = 0;
+    while (i < n) {
+        _tokens.push_back(source_->next(_tokens.size()));
+        ++i;
+        if (_tokens.back()->getType() == antlr4::Token::EOF) {
+            _fetchedEOF = true;
+            break;
+        }
+    }
+    return i;
 }
 
 size_t ScannedTokenSource::getLine() const {

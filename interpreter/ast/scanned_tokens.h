@@ -41,7 +41,10 @@ class ScannedTokenSource : public antlr4::TokenSource {
 public:
     // `text` must outlive this source; `scanned` ends with its EOF token.
     ScannedTokenSource(std::string_view text, const std::vector<ScannedToken>& scanned);
-    std::unique_ptr<antlr4::Token> nextToken() override;
+    std::unique_ptr<antlr4::Token> nextToken() override { return next(0); }
+    // The next token as a CommonToken, its index in the stream set.
+    std::unique_ptr<antlr4::CommonToken> next(size_t tokenIndex);
+    size_t count() const { return scanned_.size(); }
     size_t getLine() const override;
     size_t getCharPositionInLine() override;
     antlr4::CharStream* getInputStream() override { return &stream_; }
@@ -54,6 +57,20 @@ private:
     Utf8SourceStream stream_;
     const std::vector<ScannedToken>& scanned_;
     size_t next_ = 0;
+};
+
+// The token stream the parser reads: fills itself from a ScannedTokenSource
+// without the per-token virtual call and dynamic cast of the runtime's
+// generic fetch (a twentieth of `strun check` on a large file).
+class ScannedTokenStream : public antlr4::CommonTokenStream {
+public:
+    explicit ScannedTokenStream(ScannedTokenSource* source) : antlr4::CommonTokenStream(source), source_(source) {}
+
+protected:
+    size_t fetch(size_t n) override;
+
+private:
+    ScannedTokenSource* source_;
 };
 
 }  // namespace strun::ast
