@@ -58,6 +58,9 @@ private:
     TypeSpecPtr typeSpec(P::TypeSpecContext* c);
     TypeSpecPtr returnType(P::ReturnTypeContext* c);
     std::vector<Range> arrayRanges(const std::vector<P::ArrayRangeContext*>& ranges);
+    template <typename ArrayForm, typename PointerForm, typename ReferenceForm, typename StringForm, typename Context,
+              typename Element>
+    bool sharedTypeForm(Context* c, TypeSpec& out, Element&& element);
     TypeSpecPtr namedType(P::QualifiedNameContext* c);
     EnumValue enumValue(P::EnumValueContext* c);
     InitPtr initializer(P::InitializerContext* c);

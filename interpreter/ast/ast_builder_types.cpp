@@ -122,20 +122,9 @@ TypeSpecPtr AstBuilder::typeSpec(P::TypeSpecContext* c) {
             out->name = text(n->qualifiedName());
             out->initArgs = args(ia->argList());
         }
-    } else if (auto* a = dynamic_cast<P::ArrayTypeContext*>(c)) {
-        out->kind = TypeSpecKind::Array;
-        out->dims = arrayRanges(a->arrayRange());
-        out->elem = typeSpec(a->typeSpec());
-    } else if (auto* p = dynamic_cast<P::PointerTypeContext*>(c)) {
-        out->kind = TypeSpecKind::Pointer;
-        out->elem = typeSpec(p->typeSpec());
-    } else if (auto* r = dynamic_cast<P::ReferenceTypeContext*>(c)) {
-        out->kind = TypeSpecKind::Reference;
-        out->elem = typeSpec(r->typeSpec());
-    } else if (auto* s = dynamic_cast<P::StringTypeContext*>(c)) {
-        out->kind = TypeSpecKind::String;
-        out->wide = s->WSTRING() != nullptr;
-        if (s->expression()) out->length = expr(s->expression());
+    } else if (sharedTypeForm<P::ArrayTypeContext, P::PointerTypeContext, P::ReferenceTypeContext, P::StringTypeContext>(
+                   c, *out, [&](auto* form) { return typeSpec(form->typeSpec()); })) {
+        // ARRAY, POINTER TO, REFERENCE TO, STRING
     } else if (auto* st = dynamic_cast<P::StructTypeContext*>(c)) {
         out->kind = TypeSpecKind::Struct;
         for (auto* d : st->varDecl()) out->fields.push_back(varDecl(d, VarSection::Var));
@@ -149,6 +138,31 @@ TypeSpecPtr AstBuilder::typeSpec(P::TypeSpecContext* c) {
         if (e->qualifiedName()) out->elem = namedType(e->qualifiedName());
     }
     return out;
+}
+
+// The forms typeSpec and returnType share, for either rule's contexts;
+// `element` builds the type after OF or TO. False if `c` is none of them.
+template <typename ArrayForm, typename PointerForm, typename ReferenceForm, typename StringForm, typename Context,
+          typename Element>
+bool AstBuilder::sharedTypeForm(Context* c, TypeSpec& out, Element&& element) {
+    if (auto* a = dynamic_cast<ArrayForm*>(c)) {
+        out.kind = TypeSpecKind::Array;
+        out.dims = arrayRanges(a->arrayRange());
+        out.elem = element(a);
+    } else if (auto* p = dynamic_cast<PointerForm*>(c)) {
+        out.kind = TypeSpecKind::Pointer;
+        out.elem = element(p);
+    } else if (auto* r = dynamic_cast<ReferenceForm*>(c)) {
+        out.kind = TypeSpecKind::Reference;
+        out.elem = element(r);
+    } else if (auto* s = dynamic_cast<StringForm*>(c)) {
+        out.kind = TypeSpecKind::String;
+        out.wide = s->WSTRING() != nullptr;
+        if (s->expression()) out.length = expr(s->expression());
+    } else {
+        return false;
+    }
+    return true;
 }
 
 std::vector<Range> AstBuilder::arrayRanges(const std::vector<P::ArrayRangeContext*>& ranges) {
@@ -174,20 +188,9 @@ TypeSpecPtr AstBuilder::returnType(P::ReturnTypeContext* c) {
     if (auto* n = dynamic_cast<P::NamedReturnTypeContext*>(c)) {
         out->kind = TypeSpecKind::Named;
         out->name = text(n->qualifiedName());
-    } else if (auto* a = dynamic_cast<P::ArrayReturnTypeContext*>(c)) {
-        out->kind = TypeSpecKind::Array;
-        out->dims = arrayRanges(a->arrayRange());
-        out->elem = returnType(a->returnType());
-    } else if (auto* p = dynamic_cast<P::PointerReturnTypeContext*>(c)) {
-        out->kind = TypeSpecKind::Pointer;
-        out->elem = returnType(p->returnType());
-    } else if (auto* r = dynamic_cast<P::ReferenceReturnTypeContext*>(c)) {
-        out->kind = TypeSpecKind::Reference;
-        out->elem = returnType(r->returnType());
-    } else if (auto* s = dynamic_cast<P::StringReturnTypeContext*>(c)) {
-        out->kind = TypeSpecKind::String;
-        out->wide = s->WSTRING() != nullptr;
-        if (s->expression()) out->length = expr(s->expression());
+    } else {
+        sharedTypeForm<P::ArrayReturnTypeContext, P::PointerReturnTypeContext, P::ReferenceReturnTypeContext,
+                       P::StringReturnTypeContext>(c, *out, [&](auto* form) { return returnType(form->returnType()); });
     }
     return out;
 }

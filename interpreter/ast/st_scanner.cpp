@@ -208,19 +208,21 @@ private:
         return i - p;
     }
 
-    // [0-9] ('_'? [0-9])*
-    size_t decInt(size_t p) const {
-        if (!isDigit(at(p))) return 0;
-        size_t i = p + 1;
+    // Where `d ('_'? d)*` ends when its first digit ends at i.
+    template <typename IsDigit>
+    size_t restOfDigits(size_t i, IsDigit isDigitOf) const {
         for (;;) {
-            if (isDigit(at(i)))
+            if (isDigitOf(at(i)))
                 ++i;
-            else if (at(i) == '_' && isDigit(at(i + 1)))
+            else if (at(i) == '_' && isDigitOf(at(i + 1)))
                 i += 2;
             else
-                return i - p;
+                return i;
         }
     }
+
+    // [0-9] ('_'? [0-9])*
+    size_t decInt(size_t p) const { return isDigit(at(p)) ? restOfDigits(p + 1, isDigit) - p : 0; }
 
     // ('2' | '8' | '10' | '16') '#' '_'? hex ('_'? hex)*
     size_t basedInt(size_t p) const {
@@ -232,16 +234,7 @@ private:
         if (base == 0 || at(p + base) != '#') return 0;
         size_t i = p + base + 1;
         if (at(i) == '_') ++i;
-        if (!isHex(at(i))) return 0;
-        ++i;
-        for (;;) {
-            if (isHex(at(i)))
-                ++i;
-            else if (at(i) == '_' && isHex(at(i + 1)))
-                i += 2;
-            else
-                return i - p;
-        }
+        return isHex(at(i)) ? restOfDigits(i + 1, isHex) - p : 0;
     }
 
     // E ('+' | '-')? DEC_INT
