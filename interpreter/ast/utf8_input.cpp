@@ -37,6 +37,14 @@ std::string sanitizeUtf8(const std::string& bytes, size_t* firstInvalid, size_t*
     std::string out;
     out.reserve(bytes.size() - start);
     for (size_t i = start; i < bytes.size();) {
+        // ASCII, nearly all of a source file, is copied a run at a time.
+        size_t ascii = i;
+        while (ascii < bytes.size() && static_cast<unsigned char>(bytes[ascii]) < 0x80) ++ascii;
+        if (ascii > i) {
+            out.append(bytes, i, ascii - i);
+            i = ascii;
+            continue;
+        }
         const size_t len = validSequenceLength(bytes, i);
         if (len == 0) {
             if (count++ == 0 && firstInvalid != nullptr) *firstInvalid = out.size();
