@@ -152,7 +152,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
         }
     };
 
-    if (auto* prog = dynamic_cast<P::ProgramDeclContext*>(c)) {
+    if (auto* prog = exactly<P::ProgramDeclContext>(c)) {
         out->kind = PouKind::Program;
         out->name = text(prog->identifier());
         out->nameLoc = loc(prog->identifier());
@@ -160,7 +160,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
         stmtList(prog->stmtList(), out->body);
         for (auto* m : prog->memberDecl()) member(m, *out, false);
         out->endLoc = loc(prog->END_PROGRAM() ? prog->END_PROGRAM()->getSymbol() : c->getStop());
-    } else if (auto* fn = dynamic_cast<P::FunctionDeclContext*>(c)) {
+    } else if (auto* fn = exactly<P::FunctionDeclContext>(c)) {
         out->kind = PouKind::Function;
         out->name = text(fn->identifier());
         out->nameLoc = loc(fn->identifier());
@@ -168,7 +168,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
         for (auto* v : fn->varBlock()) out->vars.push_back(varBlock(v));
         stmtList(fn->stmtList(), out->body);
         out->endLoc = loc(fn->END_FUNCTION() ? fn->END_FUNCTION()->getSymbol() : c->getStop());
-    } else if (auto* fb = dynamic_cast<P::FunctionBlockDeclContext*>(c)) {
+    } else if (auto* fb = exactly<P::FunctionBlockDeclContext>(c)) {
         out->kind = PouKind::FunctionBlock;
         out->name = text(fb->identifier());
         out->nameLoc = loc(fb->identifier());
@@ -181,7 +181,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
         stmtList(fb->stmtList(), out->body);
         for (auto* m : fb->memberDecl()) member(m, *out, false);
         out->endLoc = loc(fb->END_FUNCTION_BLOCK() ? fb->END_FUNCTION_BLOCK()->getSymbol() : c->getStop());
-    } else if (auto* itf = dynamic_cast<P::InterfaceDeclContext*>(c)) {
+    } else if (auto* itf = exactly<P::InterfaceDeclContext>(c)) {
         out->kind = PouKind::Interface;
         out->name = text(itf->identifier());
         out->nameLoc = loc(itf->identifier());
@@ -276,10 +276,10 @@ Property AstBuilder::property(P::PropertyDeclContext* c, const std::string& name
     };
 
     for (auto* a : c->propertyAccessor()) {
-        if (auto* g = dynamic_cast<P::PropertyGetterContext*>(a)) {
+        if (auto* g = exactly<P::PropertyGetterContext>(a)) {
             if (out.getter) error(loc(g), "property '" + out.name + "' has more than one GET");
             out.getter = accessor(g, "GET", g->varBlock(), g->stmtList(), g->END_GET());
-        } else if (auto* s = dynamic_cast<P::PropertySetterContext*>(a)) {
+        } else if (auto* s = exactly<P::PropertySetterContext>(a)) {
             if (out.setter) error(loc(s), "property '" + out.name + "' has more than one SET");
             out.setter = accessor(s, "SET", s->varBlock(), s->stmtList(), s->END_SET());
         }
@@ -360,13 +360,13 @@ TaskDecl AstBuilder::task(P::TaskDeclContext* c) {
 ProgramConfig AstBuilder::programConfig(P::ProgramConfigContext* c) {
     ProgramConfig out;
     out.loc = loc(c);
-    if (auto* p = dynamic_cast<P::ProgramInstanceContext*>(c)) {
+    if (auto* p = exactly<P::ProgramInstanceContext>(c)) {
         out.isProgram = true;
         out.instance = text(p->identifier());
         out.task = text(p->anyName());
         out.typeName = text(p->qualifiedName());
         out.args = args(p->argList());
-    } else if (auto* b = dynamic_cast<P::FbTaskBindingContext*>(c)) {
+    } else if (auto* b = exactly<P::FbTaskBindingContext>(c)) {
         out.isProgram = false;
         out.instance = text(b->identifier());
         out.task = text(b->anyName());

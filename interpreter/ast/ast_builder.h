@@ -10,6 +10,7 @@
 #pragma once
 
 #include <string>
+#include <typeinfo>
 #include <vector>
 
 #include "grammar/STParser.h"
@@ -22,6 +23,17 @@ namespace strun::ast {
 // Deepest expression tree the builder produces (left-deep chains such as
 // `a + b + c ...` are parsed iteratively, so this is where they are capped).
 inline constexpr int kMaxExpressionDepth = 2000;
+
+// `c` as a T if it is exactly a T, else null. The contexts the generated
+// parser makes for labelled alternatives and plain rules have no subclasses,
+// so comparing the dynamic type is enough, and far cheaper than dynamic_cast's
+// walk of the class hierarchy (which compares type names with strcmp on every
+// miss; it was a fifth of the AST builder). Not for a rule's base context
+// with labelled alternatives (StatementContext, TypeSpecContext, ...).
+template <typename T, typename C>
+T* exactly(C* c) {
+    return c != nullptr && typeid(*c) == typeid(T) ? static_cast<T*>(c) : nullptr;
+}
 
 class AstBuilder {
 public:

@@ -140,10 +140,10 @@ ExprPtr AstBuilder::expr(P::ExpressionContext* c) {
 
 ExprPtr AstBuilder::unary(P::UnaryExprContext* c) {
     if (c == nullptr) return placeholder(Loc{file_, 0, 0});
-    if (auto* p = dynamic_cast<P::PostfixExpressionContext*>(c)) return postfix(p);
-    if (auto* l = dynamic_cast<P::LiteralExpressionContext*>(c)) return literal(l->value);
+    if (auto* p = exactly<P::PostfixExpressionContext>(c)) return postfix(p);
+    if (auto* l = exactly<P::LiteralExpressionContext>(c)) return literal(l->value);
     const Loc at = loc(c);
-    if (auto* u = dynamic_cast<P::UnaryExpressionContext*>(c)) {
+    if (auto* u = exactly<P::UnaryExpressionContext>(c)) {
         DepthScope scope(exprDepth_);
         if (exprDepth_ > kMaxExpressionDepth) {
             if (!depthReported_)
@@ -166,7 +166,7 @@ const antlr4::Token* AstBuilder::bareName(P::ExpressionContext* c) {
 }
 
 const antlr4::Token* AstBuilder::bareName(P::UnaryExprContext* c) {
-    auto* p = dynamic_cast<P::PostfixExpressionContext*>(c);
+    auto* p = exactly<P::PostfixExpressionContext>(c);
     if (p == nullptr || p->name == nullptr || !p->postfixOp().empty()) return nullptr;
     return p->name;
 }
@@ -186,22 +186,22 @@ ExprPtr AstBuilder::postfix(P::PostfixExpressionContext* c) {
     }
     for (auto* op : ops) {
         ExprPtr next;
-        if (auto* m = dynamic_cast<P::MemberOpContext*>(op)) {
+        if (auto* m = exactly<P::MemberOpContext>(op)) {
             next = makeExpr(ExprKind::Member, at);
             if (m->member != nullptr) {
                 next->name = m->member->getText();
                 next->nameLoc = loc(m->member);
             }
-        } else if (auto* i = dynamic_cast<P::IndexOpContext*>(op)) {
+        } else if (auto* i = exactly<P::IndexOpContext>(op)) {
             next = makeExpr(ExprKind::Index, at);
             next->kids.push_back(std::move(current));
             if (i->expressionList())
                 for (auto* sub : i->expressionList()->expression()) next->kids.push_back(expr(sub));
             current = std::move(next);
             continue;
-        } else if (dynamic_cast<P::DerefOpContext*>(op)) {
+        } else if (exactly<P::DerefOpContext>(op)) {
             next = makeExpr(ExprKind::Deref, at);
-        } else if (auto* call = dynamic_cast<P::CallOpContext*>(op)) {
+        } else if (auto* call = exactly<P::CallOpContext>(op)) {
             next = makeExpr(ExprKind::Call, at);
             next->args = args(call->argList());
         } else {
@@ -276,7 +276,7 @@ std::vector<Arg> AstBuilder::args(P::ArgListContext* c) {
         const antlr4::Token* name = parts.empty() ? nullptr : bareName(parts[0]);
         if (name == nullptr && arg.output && !parts.empty() && parts[0]->ops.empty() && parts[0]->unaryExpr().size() == 1) {
             // NOT name => variable: the output negated
-            auto* u = dynamic_cast<P::UnaryExpressionContext*>(parts[0]->unaryExpr(0));
+            auto* u = exactly<P::UnaryExpressionContext>(parts[0]->unaryExpr(0));
             if (u != nullptr && u->op != nullptr && u->op->getType() == L::NOT) {
                 name = bareName(u->unaryExpr());
                 arg.negated = name != nullptr;

@@ -36,9 +36,9 @@ void AstBuilder::stmtList(P::StmtListContext* c, StmtList& out) {
 
 StmtPtr AstBuilder::stmt(P::StatementContext* c) {
     const Loc at = loc(c);
-    if (auto* e = dynamic_cast<P::ExprStmtContext*>(c)) return exprStmt(e);
+    if (auto* e = exactly<P::ExprStmtContext>(c)) return exprStmt(e);
 
-    if (auto* i = dynamic_cast<P::IfStmtContext*>(c)) {
+    if (auto* i = exactly<P::IfStmtContext>(c)) {
         auto s = makeStmt(StmtKind::If, at);
         auto conds = i->expression();
         auto blocks = i->stmtList();
@@ -53,7 +53,7 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
         }
         return s;
     }
-    if (auto* cs = dynamic_cast<P::CaseStmtContext*>(c)) {
+    if (auto* cs = exactly<P::CaseStmtContext>(c)) {
         auto s = makeStmt(StmtKind::Case, at);
         s->expr = cs->expression() ? expr(cs->expression()) : placeholder(at);
         for (auto* b : cs->caseBranch()) {
@@ -77,7 +77,7 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
         }
         return s;
     }
-    if (auto* f = dynamic_cast<P::ForStmtContext*>(c)) {
+    if (auto* f = exactly<P::ForStmtContext>(c)) {
         auto s = makeStmt(StmtKind::For, at);
         s->name = text(f->identifier());
         s->nameLoc = loc(f->identifier());
@@ -87,28 +87,28 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
         stmtList(f->stmtList(), s->body);
         return s;
     }
-    if (auto* w = dynamic_cast<P::WhileStmtContext*>(c)) {
+    if (auto* w = exactly<P::WhileStmtContext>(c)) {
         auto s = makeStmt(StmtKind::While, at);
         s->expr = w->expression() ? expr(w->expression()) : placeholder(at);
         stmtList(w->stmtList(), s->body);
         return s;
     }
-    if (auto* r = dynamic_cast<P::RepeatStmtContext*>(c)) {
+    if (auto* r = exactly<P::RepeatStmtContext>(c)) {
         auto s = makeStmt(StmtKind::Repeat, at);
         stmtList(r->stmtList(), s->body);
         s->expr = r->expression() ? expr(r->expression()) : placeholder(at);
         return s;
     }
-    if (dynamic_cast<P::ExitStmtContext*>(c)) return makeStmt(StmtKind::Exit, at);
-    if (dynamic_cast<P::ContinueStmtContext*>(c)) return makeStmt(StmtKind::Continue, at);
-    if (dynamic_cast<P::ReturnStmtContext*>(c)) return makeStmt(StmtKind::Return, at);
-    if (auto* j = dynamic_cast<P::JmpStmtContext*>(c)) {
+    if (exactly<P::ExitStmtContext>(c)) return makeStmt(StmtKind::Exit, at);
+    if (exactly<P::ContinueStmtContext>(c)) return makeStmt(StmtKind::Continue, at);
+    if (exactly<P::ReturnStmtContext>(c)) return makeStmt(StmtKind::Return, at);
+    if (auto* j = exactly<P::JmpStmtContext>(c)) {
         auto s = makeStmt(StmtKind::Jmp, at);
         s->name = text(j->identifier());
         s->nameLoc = loc(j->identifier());
         return s;
     }
-    if (dynamic_cast<P::EmptyStmtContext*>(c)) {
+    if (exactly<P::EmptyStmtContext>(c)) {
         // `END_IF;`: the ';' belongs to the statement before, not a statement of its own.
         const antlr4::Token* before = previousOnChannel(c->getStart());
         if (before != nullptr) switch (before->getType()) {

@@ -104,35 +104,35 @@ TypeSpecPtr AstBuilder::typeSpec(P::TypeSpecContext* c) {
     out->loc = loc(c);
     if (c == nullptr) return out;  // missing after a syntax error: an unnamed Named type
 
-    if (auto* n = dynamic_cast<P::NamedTypeContext*>(c)) {
+    if (auto* n = exactly<P::NamedTypeContext>(c)) {
         out->kind = TypeSpecKind::Named;
         P::TypeArgumentsContext* arguments = n->typeArguments();
         if (arguments == nullptr) {
             out->name = text(n->qualifiedName());
-        } else if (auto* sr = dynamic_cast<P::SubrangeArgsContext*>(arguments)) {
+        } else if (auto* sr = exactly<P::SubrangeArgsContext>(arguments)) {
             out->kind = TypeSpecKind::Subrange;
             if (n->qualifiedName()) out->elem = namedType(n->qualifiedName());
             out->lo = sr->expression(0) ? expr(sr->expression(0)) : placeholder(out->loc);
             out->hi = sr->expression(1) ? expr(sr->expression(1)) : placeholder(out->loc);
-        } else if (auto* te = dynamic_cast<P::EnumArgsContext*>(arguments)) {
+        } else if (auto* te = exactly<P::EnumArgsContext>(arguments)) {
             out->kind = TypeSpecKind::Enum;
             for (auto* v : te->enumValue()) out->enumValues.push_back(enumValue(v));
             if (n->qualifiedName()) out->elem = namedType(n->qualifiedName());
-        } else if (auto* ia = dynamic_cast<P::InstanceArgsContext*>(arguments)) {
+        } else if (auto* ia = exactly<P::InstanceArgsContext>(arguments)) {
             out->name = text(n->qualifiedName());
             out->initArgs = args(ia->argList());
         }
     } else if (sharedTypeForm<P::ArrayTypeContext, P::PointerTypeContext, P::ReferenceTypeContext, P::StringTypeContext>(
                    c, *out, [&](auto* form) { return typeSpec(form->typeSpec()); })) {
         // ARRAY, POINTER TO, REFERENCE TO, STRING
-    } else if (auto* st = dynamic_cast<P::StructTypeContext*>(c)) {
+    } else if (auto* st = exactly<P::StructTypeContext>(c)) {
         out->kind = TypeSpecKind::Struct;
         for (auto* d : st->varDecl()) out->fields.push_back(varDecl(d, VarSection::Var));
-    } else if (auto* un = dynamic_cast<P::UnionTypeContext*>(c)) {
+    } else if (auto* un = exactly<P::UnionTypeContext>(c)) {
         out->kind = TypeSpecKind::Struct;
         out->isUnion = true;
         for (auto* d : un->varDecl()) out->fields.push_back(varDecl(d, VarSection::Var));
-    } else if (auto* e = dynamic_cast<P::EnumTypeContext*>(c)) {
+    } else if (auto* e = exactly<P::EnumTypeContext>(c)) {
         out->kind = TypeSpecKind::Enum;
         for (auto* v : e->enumValue()) out->enumValues.push_back(enumValue(v));
         if (e->qualifiedName()) out->elem = namedType(e->qualifiedName());
@@ -145,17 +145,17 @@ TypeSpecPtr AstBuilder::typeSpec(P::TypeSpecContext* c) {
 template <typename ArrayForm, typename PointerForm, typename ReferenceForm, typename StringForm, typename Context,
           typename Element>
 bool AstBuilder::sharedTypeForm(Context* c, TypeSpec& out, Element&& element) {
-    if (auto* a = dynamic_cast<ArrayForm*>(c)) {
+    if (auto* a = exactly<ArrayForm>(c)) {
         out.kind = TypeSpecKind::Array;
         out.dims = arrayRanges(a->arrayRange());
         out.elem = element(a);
-    } else if (auto* p = dynamic_cast<PointerForm*>(c)) {
+    } else if (auto* p = exactly<PointerForm>(c)) {
         out.kind = TypeSpecKind::Pointer;
         out.elem = element(p);
-    } else if (auto* r = dynamic_cast<ReferenceForm*>(c)) {
+    } else if (auto* r = exactly<ReferenceForm>(c)) {
         out.kind = TypeSpecKind::Reference;
         out.elem = element(r);
-    } else if (auto* s = dynamic_cast<StringForm*>(c)) {
+    } else if (auto* s = exactly<StringForm>(c)) {
         out.kind = TypeSpecKind::String;
         out.wide = s->WSTRING() != nullptr;
         if (s->expression()) out.length = expr(s->expression());
@@ -185,7 +185,7 @@ TypeSpecPtr AstBuilder::returnType(P::ReturnTypeContext* c) {
     auto out = std::make_unique<TypeSpec>();
     out->loc = loc(c);
     if (c == nullptr) return out;
-    if (auto* n = dynamic_cast<P::NamedReturnTypeContext*>(c)) {
+    if (auto* n = exactly<P::NamedReturnTypeContext>(c)) {
         out->kind = TypeSpecKind::Named;
         out->name = text(n->qualifiedName());
     } else {
@@ -202,7 +202,7 @@ InitPtr AstBuilder::initializer(P::InitializerContext* c) {
         out->expr = placeholder(out->loc);
         return out;
     }
-    if (auto* a = dynamic_cast<P::ArrayInitContext*>(c)) {
+    if (auto* a = exactly<P::ArrayInitContext>(c)) {
         out->kind = InitKind::Array;
         for (auto* item : a->arrayInitItem()) {
             ArrayInitItem built;
@@ -219,7 +219,7 @@ InitPtr AstBuilder::initializer(P::InitializerContext* c) {
             }
             out->items.push_back(std::move(built));
         }
-    } else if (auto* s = dynamic_cast<P::StructInitContext*>(c)) {
+    } else if (auto* s = exactly<P::StructInitContext>(c)) {
         out->kind = InitKind::Struct;
         for (auto* item : s->structInitItem()) {
             StructInitItem built;
@@ -228,7 +228,7 @@ InitPtr AstBuilder::initializer(P::InitializerContext* c) {
             built.value = initializer(item->initializer());
             out->fields.push_back(std::move(built));
         }
-    } else if (auto* e = dynamic_cast<P::ExprInitContext*>(c)) {
+    } else if (auto* e = exactly<P::ExprInitContext>(c)) {
         out->kind = InitKind::Expr;
         out->expr = expr(e->expression());
     } else {
