@@ -192,11 +192,12 @@ varQualifier
 
 // `a, b AT %IX0.0 : INT := 5;` — also the looser form of VAR_CONFIG
 // (`prog.x AT %QW1 : INT;`). Tokens the AST builder asks about have labels
-// (semi=, address=, and colon=, assign=, eq= in exprStmt): a label is a
-// field, the generated accessor a search of the children.
+// (semi=, address=, init=, and colon=, assign=, eq=, setOperator= in
+// exprStmt; operands+= and suffixes+= in expressions): a label is a field,
+// the generated accessor a search of the children.
 varDecl
     : varName (COMMA varName)* (AT address=DIRECT_ADDRESS)? COLON
-        typeSpec (ASSIGN initializer)? semi=SEMI?   // a missing ';' is reported by the AST builder
+        typeSpec (ASSIGN init=initializer)? semi=SEMI?   // a missing ';' is reported by the AST builder
     ;
 
 accessDecl
@@ -262,7 +263,7 @@ stmtList
 // needed adaptive prediction on every statement. The ';' after END_IF and
 // the like is an empty statement for the same reason (the builder drops it).
 statement
-    : expression (((assign=(ASSIGN | TRY_ASSIGN) expression | identifier eq=EQ expression)? SEMI) | colon=COLON)   # exprStmt
+    : expression (((assign=(ASSIGN | TRY_ASSIGN) expression | setOperator=identifier eq=EQ expression)? SEMI) | colon=COLON)   # exprStmt
     | IF expression THEN stmtList (ELSIF expression THEN stmtList)* (ELSE stmtList)? END_IF  # ifStmt
     | CASE expression OF caseBranch* (ELSE stmtList)? END_CASE                   # caseStmt
     | FOR identifier ASSIGN expression TO expression (BY expression)? DO stmtList END_FOR  # forStmt
@@ -303,8 +304,8 @@ caseLabel
 // LL(1): the parser predicts from one token instead of running ANTLR's
 // adaptive prediction (decision 0158).
 expression
-    : unaryExpr (ops+=(POW | STAR | SLASH | MOD | PLUS | MINUS | LT_OP | GT_OP | LE | GE | EQ | NE
-                     | AND | AMP | AND_THEN | XOR | OR | OR_ELSE) unaryExpr)*
+    : operands+=unaryExpr (ops+=(POW | STAR | SLASH | MOD | PLUS | MINUS | LT_OP | GT_OP | LE | GE | EQ | NE
+                     | AND | AMP | AND_THEN | XOR | OR | OR_ELSE) operands+=unaryExpr)*
     ;
 
 // An operand. Names, the primaries and the literals are tokens of this rule
@@ -322,7 +323,7 @@ unaryExpr
       | SUPER
       | DIRECT_ADDRESS
       | LPAREN expression RPAREN
-      ) postfixOp*                                                        # postfixExpression
+      ) suffixes+=postfixOp*                                              # postfixExpression
     ;
 
 postfixOp

@@ -107,7 +107,7 @@ ExprPtr AstBuilder::expr(P::ExpressionContext* c) {
     if (c == nullptr) return placeholder(Loc{file_, 0, 0});
     const Loc at = loc(c);
     DepthScope scope(exprDepth_);
-    const std::vector<P::UnaryExprContext*> operands = c->unaryExpr();
+    const std::vector<P::UnaryExprContext*>& operands = c->operands;
     if (operands.empty()) return placeholder(at);
     // The depth of the tree the chain makes, before making it: a chain
     // `1 + 1 + ...` 100 000 long must be refused, not built and then
@@ -161,13 +161,13 @@ ExprPtr AstBuilder::unary(P::UnaryExprContext* c) {
 }
 
 const antlr4::Token* AstBuilder::bareName(P::ExpressionContext* c) {
-    if (c == nullptr || !c->ops.empty() || c->unaryExpr().size() != 1) return nullptr;
-    return bareName(c->unaryExpr(0));
+    if (c == nullptr || !c->ops.empty() || c->operands.size() != 1) return nullptr;
+    return bareName(c->operands[0]);
 }
 
 const antlr4::Token* AstBuilder::bareName(P::UnaryExprContext* c) {
     auto* p = exactly<P::PostfixExpressionContext>(c);
-    if (p == nullptr || p->name == nullptr || !p->postfixOp().empty()) return nullptr;
+    if (p == nullptr || p->name == nullptr || !p->suffixes.empty()) return nullptr;
     return p->name;
 }
 
@@ -177,7 +177,7 @@ ExprPtr AstBuilder::postfix(P::PostfixExpressionContext* c) {
     const Loc at = loc(c);
     if (c == nullptr) return placeholder(at);
     ExprPtr current = primary(c);
-    const auto ops = c->postfixOp();
+    const std::vector<P::PostfixOpContext*>& ops = c->suffixes;
     if (static_cast<int>(ops.size()) + exprDepth_ > kMaxExpressionDepth) {
         if (!depthReported_)
             error(at, fmt::format("expression too complex: more than {} nested operations", kMaxExpressionDepth));
@@ -274,9 +274,9 @@ std::vector<Arg> AstBuilder::args(P::ArgListContext* c) {
         }
         arg.output = a->op->getType() == L::ARROW;
         const antlr4::Token* name = parts.empty() ? nullptr : bareName(parts[0]);
-        if (name == nullptr && arg.output && !parts.empty() && parts[0]->ops.empty() && parts[0]->unaryExpr().size() == 1) {
+        if (name == nullptr && arg.output && !parts.empty() && parts[0]->ops.empty() && parts[0]->operands.size() == 1) {
             // NOT name => variable: the output negated
-            auto* u = exactly<P::UnaryExpressionContext>(parts[0]->unaryExpr(0));
+            auto* u = exactly<P::UnaryExpressionContext>(parts[0]->operands[0]);
             if (u != nullptr && u->op != nullptr && u->op->getType() == L::NOT) {
                 name = bareName(u->unaryExpr());
                 arg.negated = name != nullptr;

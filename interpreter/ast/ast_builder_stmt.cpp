@@ -153,14 +153,14 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
     StmtKind kind = StmtKind::Assign;
     if (c->assign != nullptr && c->assign->getType() == L::TRY_ASSIGN) {
         kind = StmtKind::TryAssign;
-    } else if (c->identifier()) {
+    } else if (c->setOperator != nullptr) {
         // `x S= y` lexes as x, S, =, y: the word before '=' names the operator.
-        const std::string op = upper(text(c->identifier()));
+        const std::string op = upper(text(c->setOperator));
         if (op == "S") kind = StmtKind::SetAssign;
         else if (op == "R") kind = StmtKind::ResetAssign;
         else if (op == "REF") kind = StmtKind::RefAssign;
         else {
-            error(loc(c->identifier()), "unknown assignment operator '" + text(c->identifier()) +
+            error(loc(c->setOperator), "unknown assignment operator '" + text(c->setOperator) +
                                             "=', expected ':=', 'S=', 'R=', 'REF=' or '?='");
             return nullptr;
         }

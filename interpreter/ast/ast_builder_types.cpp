@@ -79,7 +79,7 @@ VarDecl AstBuilder::varDecl(P::VarDeclContext* c, VarSection section) {
     }
     if (c->address != nullptr) out.address = c->address->getText();
     out.type = typeSpec(c->typeSpec());
-    if (c->initializer()) out.init = initializer(c->initializer());
+    if (c->init != nullptr) out.init = initializer(c->init);
     return out;
 }
 
