@@ -1,8 +1,9 @@
 // The scanner strun runs (interpreter/ast/st_scanner.h) against the lexer
-// ANTLR generates from grammar/STLexer.g4, the definition of the tokens: both
-// must produce the same tokens (type, channel, text, line, column) on every
-// source file of the repository and on generated input built from the
-// fragments where lexing rules meet (decision 0157).
+// ANTLR generates from grammar/STLexer.g4, the definition of the tokens
+// (tests/fuzz/scanner_oracle.h): both must produce the same tokens (type,
+// channel, text, line, column) on every source file of the repository and on
+// generated input built from the fragments where lexing rules meet (decision
+// 0157). The fuzz target compares them on every input it tries.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -10,67 +11,15 @@
 #include <random>
 #include <sstream>
 
-#include <antlr4-runtime.h>
-
-#include "grammar/STLexer.h"
-#include "interpreter/ast/st_scanner.h"
 #include "interpreter/ast/utf8_input.h"
+#include "tests/fuzz/scanner_oracle.h"
 
 namespace {
 
-struct Lexed {
-    size_t type, channel, line, column;
-    std::string text;
-    bool operator==(const Lexed& o) const {
-        return type == o.type && channel == o.channel && line == o.line && column == o.column && text == o.text;
-    }
-};
-
-std::ostream& operator<<(std::ostream& out, const Lexed& t) {
-    return out << "type " << static_cast<long long>(t.type) << " channel " << t.channel << " at " << t.line << ":"
-               << t.column << " '" << t.text << "'";
-}
-
-// The generated lexer reports keywords as IDENTIFIER: the scanner's table
-// tells them apart, so the reference's words go through the same table.
-std::vector<Lexed> reference(const std::string& text) {
-    antlr4::ANTLRInputStream input(text);
-    strun_grammar::STLexer lexer(&input);
-    lexer.removeErrorListeners();
-    antlr4::CommonTokenStream tokens(&lexer);
-    tokens.fill();
-    std::vector<Lexed> out;
-    for (antlr4::Token* t : tokens.getTokens()) {
-        size_t type = t->getType();
-        const std::string tokenText = type == antlr4::Token::EOF ? "" : t->getText();
-        if (type == strun_grammar::STLexer::IDENTIFIER) type = strun::ast::keywordOrIdentifier(tokenText);
-        out.push_back({type, t->getChannel(), t->getLine(), t->getCharPositionInLine(), tokenText});
-    }
-    return out;
-}
-
-std::vector<Lexed> scanned(const std::string& text) {
-    std::vector<Lexed> out;
-    for (const strun::ast::ScannedToken& t : strun::ast::scanSource(text, 100000000).tokens) {
-        const std::string tokenText = t.type == antlr4::Token::EOF ? "" : text.substr(t.start, t.stop + 1 - t.start);
-        out.push_back({t.type, t.channel, t.line, t.column, tokenText});
-    }
-    return out;
-}
-
-// Compares the two token lists; on a difference, reports the first one.
 void requireSameTokens(const std::string& rawSource, const std::string& what) {
-    const std::string text = strun::ast::sanitizeUtf8(rawSource);
-    const std::vector<Lexed> expected = reference(text), actual = scanned(text);
-    const size_t common = std::min(expected.size(), actual.size());
-    for (size_t i = 0; i < common; ++i) {
-        if (expected[i] == actual[i]) continue;
-        INFO(what << ": token " << i << " differs");
-        CHECK(actual[i] == expected[i]);
-        return;
-    }
-    INFO(what);
-    CHECK(actual.size() == expected.size());
+    const auto difference = strun::fuzz::scannerDifference(strun::ast::sanitizeUtf8(rawSource));
+    INFO(what << ": " << difference.value_or(""));
+    CHECK_FALSE(difference.has_value());
 }
 
 }  // namespace
