@@ -105,7 +105,7 @@ private:
                 ++line;
                 col = 1;
             } else if ((c & 0xC0) != 0x80) {
-                ++col;  // count code points, as the lexer does
+                ++col;  // count code points, as the scanner does
             }
         }
         log_.warning(Loc{fileIndex_, line, col},

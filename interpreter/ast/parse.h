@@ -1,5 +1,6 @@
-// Source text -> AST for one file: runs the ANTLR lexer/parser generated from
-// grammar/*.g4 and converts the parse tree (ast_builder). Syntax errors go to
+// Source text -> AST for one file: the scanner (st_scanner.h) makes the
+// tokens, the parser generated from grammar/STParser.g4 the parse tree, and
+// ast_builder the AST. Syntax errors go to
 // the CompileLog with file:line:col and what was expected; parsing recovers
 // and reports further errors. Never throws.
 #pragma once

@@ -127,7 +127,7 @@ std::string FriendlyErrorStrategy::message(antlr4::Parser* parser, antlr4::Token
 
 namespace {
 
-// Columns are code points, as the lexer counts them.
+// Columns are code points, as the scanner counts them.
 size_t codePoints(const std::string& text) {
     size_t n = 0;
     for (unsigned char c : text)
