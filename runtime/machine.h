@@ -40,14 +40,13 @@ enum class DiagCode {
 };
 const char* diagCodeName(DiagCode code);
 
-// The process image of direct addresses (%I, %Q, %M). CODESYS addressing:
-// %IX3.2 = bit 2 of byte 3, %IB3 = byte 3, %IW3 = bytes 6..7, %ID3 = bytes
-// 12..15, %IL3 = bytes 24..31 (the index counts units of the access size).
 // Zero-filled memory straight from the system (anonymous mmap): the five
 // 64 KiB areas of the image cost nothing (no memset, no page touched) until
 // a program addresses them. Value-initialisation in std::vector, or calloc
-// of heap memory, would write every byte (5 % of a one-line run).
-// Zeroed memory of `bytes` (throws std::bad_alloc), and its release.
+// of heap memory, would write every byte (5 % of a one-line run). For
+// buffers of a fixed size: construct() leaves bytes as they are, so a vector
+// shrunk and grown again would not be zeroed.
+// Zeroed memory of `bytes` (throws std::bad_alloc), and its release:
 void* allocateZeroedPages(size_t bytes);
 void freeZeroedPages(void* p, size_t bytes);
 
@@ -68,6 +67,9 @@ struct ZeroedAllocator {
 };
 using ImageArea = std::vector<uint8_t, ZeroedAllocator<uint8_t>>;
 
+// The process image of direct addresses (%I, %Q, %M). CODESYS addressing:
+// %IX3.2 = bit 2 of byte 3, %IB3 = byte 3, %IW3 = bytes 6..7, %ID3 = bytes
+// 12..15, %IL3 = bytes 24..31 (the index counts units of the access size).
 struct ProcessImage {
     static constexpr size_t kSize = 65536;  // bytes per area
     ImageArea inputs = ImageArea(kSize);   // %I as the program sees it

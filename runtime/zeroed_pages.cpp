@@ -3,7 +3,6 @@
 // one system call and no memory.
 #include <sys/mman.h>
 
-#include <cstdlib>
 #include <new>
 
 #include "runtime/machine.h"

@@ -93,6 +93,7 @@ private:
     ExprPtr literal(const antlr4::Token* token);
     std::vector<Arg> args(P::ArgListContext* c);
     ExprPtr placeholder(const Loc& at);  // stands in for what a syntax error left out
+    ExprPtr tooComplex(const Loc& at);  // an expression deeper than kMaxExpressionDepth: reported once
 
     // ---- helpers
     Loc loc(const antlr4::Token* token) const;

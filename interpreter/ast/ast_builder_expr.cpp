@@ -103,6 +103,14 @@ ExprPtr AstBuilder::placeholder(const Loc& at) {
     return e;
 }
 
+// Past kMaxExpressionDepth: one error per file, and a placeholder.
+ExprPtr AstBuilder::tooComplex(const Loc& at) {
+    if (!depthReported_)
+        error(at, fmt::format("expression too complex: more than {} nested operations", kMaxExpressionDepth));
+    depthReported_ = true;
+    return placeholder(at);
+}
+
 ExprPtr AstBuilder::expr(P::ExpressionContext* c) {
     if (c == nullptr) return placeholder(Loc{file_, 0, 0});
     const Loc at = loc(c);
@@ -112,15 +120,11 @@ ExprPtr AstBuilder::expr(P::ExpressionContext* c) {
     // The depth of the tree the chain makes, before making it: a chain
     // `1 + 1 + ...` 100 000 long must be refused, not built and then
     // destroyed recursively.
-    const int depth = climb<int>(
-        operands.size(), c->ops, [](size_t) { return 0; },
-        [](int lhs, antlr4::Token*, int rhs) { return 1 + std::max(lhs, rhs); });
-    if (exprDepth_ + depth > kMaxExpressionDepth) {
-        if (!depthReported_)
-            error(at, fmt::format("expression too complex: more than {} nested operations", kMaxExpressionDepth));
-        depthReported_ = true;
-        return placeholder(at);
-    }
+    // (A lone operand, the most common expression, needs no count.)
+    const int depth = c->ops.empty() ? 0
+                                     : climb<int>(operands.size(), c->ops, [](size_t) { return 0; },
+                                                  [](int lhs, antlr4::Token*, int rhs) { return 1 + std::max(lhs, rhs); });
+    if (exprDepth_ + depth > kMaxExpressionDepth) return tooComplex(at);
     if (operands.size() == 1) return unary(operands[0]);
     struct Operand {
         ExprPtr expr;
@@ -145,12 +149,7 @@ ExprPtr AstBuilder::unary(P::UnaryExprContext* c) {
     const Loc at = loc(c);
     if (auto* u = exactly<P::UnaryExpressionContext>(c)) {
         DepthScope scope(exprDepth_);
-        if (exprDepth_ > kMaxExpressionDepth) {
-            if (!depthReported_)
-                error(at, fmt::format("expression too complex: more than {} nested operations", kMaxExpressionDepth));
-            depthReported_ = true;
-            return placeholder(at);
-        }
+        if (exprDepth_ > kMaxExpressionDepth) return tooComplex(at);
         auto e = makeExpr(ExprKind::Unary, at);
         const size_t type = u->op ? u->op->getType() : static_cast<size_t>(L::MINUS);
         e->op = type == L::NOT ? Op::Not : type == L::PLUS ? Op::Plus : Op::Neg;
@@ -178,12 +177,7 @@ ExprPtr AstBuilder::postfix(P::PostfixExpressionContext* c) {
     if (c == nullptr) return placeholder(at);
     ExprPtr current = primary(c);
     const std::vector<P::PostfixOpContext*>& ops = c->suffixes;
-    if (static_cast<int>(ops.size()) + exprDepth_ > kMaxExpressionDepth) {
-        if (!depthReported_)
-            error(at, fmt::format("expression too complex: more than {} nested operations", kMaxExpressionDepth));
-        depthReported_ = true;
-        return placeholder(at);
-    }
+    if (static_cast<int>(ops.size()) + exprDepth_ > kMaxExpressionDepth) return tooComplex(at);
     for (auto* op : ops) {
         ExprPtr next;
         if (auto* m = exactly<P::MemberOpContext>(op)) {

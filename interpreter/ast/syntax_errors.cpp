@@ -45,7 +45,7 @@ std::string phraseForRule(size_t ruleIndex) {
             return "a statement";
         case P::RuleTypeSpec: case P::RuleTypeArguments: case P::RuleReturnType:
             return "a type";
-        case P::RuleVarDecl: case P::RuleVarName: case P::RuleVarBlock:
+        case P::RuleVarDecl: case P::RuleAccessDecl: case P::RuleVarName: case P::RuleVarBlock:
             return "a variable declaration";
         case P::RuleCompilationUnit: case P::RuleTopLevelItem: case P::RuleNamespaceDecl:
             return "a declaration (PROGRAM, FUNCTION, FUNCTION_BLOCK, INTERFACE, TYPE, VAR_GLOBAL, CONFIGURATION)";
