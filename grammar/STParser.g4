@@ -3,6 +3,12 @@
 // S=/R=/?=/REF=, pointers, references). The tree is converted into the AST of
 // interpreter/ast/ast.h by interpreter/ast/ast_builder.cpp; the grammar is kept
 // permissive where the builder can give a clearer message than the parser.
+//
+// Every rule reference and token the AST builder reads has a label (name=,
+// items+=, ...): the parser builds no parse tree (decision 0159), so the
+// labels, the start and stop tokens of each context are all there is. The
+// generated accessors (identifier(), END_IF(), ...) search a context's
+// children and find nothing.
 parser grammar STParser;
 
 options { tokenVocab = STLexer; }
@@ -29,6 +35,28 @@ options { tokenVocab = STLexer; }
     }
     return false;
   }
+  // Parser::exitRule of ANTLR 4.9, without its dynamic_cast of the parent
+  // (a generated parser's contexts are all ParserRuleContexts): a rule's
+  // generated code calls exitRule() unqualified, so this one hides the
+  // base's. The dynamic_cast compared type names with strcmp on every rule
+  // exit: 3 % of `strun check` (decision 0159).
+  void exitRule() {
+    _ctx->stop = _matchedEOF ? _input->LT(1) : _input->LT(-1);
+    if (!_parseListeners.empty()) triggerExitRuleEvent();
+    setState(_ctx->invokingState);
+    _ctx = static_cast<antlr4::ParserRuleContext*>(_ctx->parent);
+  }
+  // The generated `auto onExit = finally([=] { exitRule(); });` of every
+  // rule finds this before antlrcpp::finally, which wraps the lambda in a
+  // std::function (an allocation-free but indirect call, 2 % of a check).
+  template <typename Action>
+  struct OnExit {
+    Action action;
+    ~OnExit() { action(); }
+  };
+  template <typename Action>
+  static OnExit<Action> finally(Action action) { return OnExit<Action>{std::move(action)}; }
+
   static bool isNameToken(size_t type) {
     return type == IDENTIFIER || type == GET || type == SET || type == TASK || type == ON ||
            type == WITH || type == READ_ONLY || type == READ_WRITE || type == ACTION;
@@ -38,49 +66,49 @@ options { tokenVocab = STLexer; }
 // ================================================================= files
 
 compilationUnit
-    : topLevelItem* EOF
+    : items+=topLevelItem* EOF
     ;
 
 topLevelItem
-    : pouDecl
-    | methodDecl
-    | actionDecl              // CODESYS: an ACTION after the POU it belongs to
-    | typeDecl
-    | varBlock                // a top-level VAR_GLOBAL list (GVL)
-    | configuration
-    | namespaceDecl
-    | usingDirective
+    : pou=pouDecl
+    | method=methodDecl
+    | action=actionDecl       // CODESYS: an ACTION after the POU it belongs to
+    | types=typeDecl
+    | globals=varBlock        // a top-level VAR_GLOBAL list (GVL)
+    | config=configuration
+    | space=namespaceDecl
+    | uses=usingDirective
     ;
 
 namespaceDecl
-    : NAMESPACE qualifiedName topLevelItem* END_NAMESPACE
+    : NAMESPACE name=qualifiedName items+=topLevelItem* END_NAMESPACE
     ;
 
 usingDirective
-    : USING qualifiedName (COMMA qualifiedName)* SEMI
+    : USING names+=qualifiedName (COMMA names+=qualifiedName)* SEMI
     ;
 
 // ================================================================= POUs
 
 pouDecl
-    : PROGRAM identifier pouElement* stmtList memberDecl* END_PROGRAM                     # programDecl
-    | FUNCTION identifier (COLON returnType)? varBlock* stmtList END_FUNCTION             # functionDecl
-    | FUNCTION_BLOCK modifier* identifier
-        (EXTENDS qualifiedName)? (IMPLEMENTS qualifiedName (COMMA qualifiedName)*)?
-        pouElement* stmtList memberDecl* END_FUNCTION_BLOCK                               # functionBlockDecl
-    | INTERFACE identifier (EXTENDS qualifiedName (COMMA qualifiedName)*)?
-        memberDecl* END_INTERFACE                                                         # interfaceDecl
+    : PROGRAM name=identifier elements+=pouElement* body=stmtList members+=memberDecl* end=END_PROGRAM   # programDecl
+    | FUNCTION name=identifier (COLON result=returnType)? vars+=varBlock* body=stmtList end=END_FUNCTION # functionDecl
+    | FUNCTION_BLOCK modifiers+=modifier* name=identifier
+        (EXTENDS base=qualifiedName)? (IMPLEMENTS interfaces+=qualifiedName (COMMA interfaces+=qualifiedName)*)?
+        elements+=pouElement* body=stmtList members+=memberDecl* end=END_FUNCTION_BLOCK                # functionBlockDecl
+    | INTERFACE name=identifier (EXTENDS bases+=qualifiedName (COMMA bases+=qualifiedName)*)?
+        members+=memberDecl* end=END_INTERFACE                                                         # interfaceDecl
     ;
 
 pouElement
-    : varBlock
-    | memberDecl
+    : vars=varBlock
+    | member=memberDecl
     ;
 
 memberDecl
-    : methodDecl
-    | propertyDecl
-    | actionDecl
+    : method=methodDecl
+    | property=propertyDecl
+    | action=actionDecl
     ;
 
 modifier
@@ -88,51 +116,51 @@ modifier
     ;
 
 methodDecl
-    : METHOD modifier* identifier (COLON returnType)? varBlock* stmtList END_METHOD
+    : METHOD modifiers+=modifier* name=identifier (COLON result=returnType)? vars+=varBlock* body=stmtList end=END_METHOD
     ;
 
 // CODESYS/TwinCAT action: code of a PROGRAM or FUNCTION_BLOCK working on its
 // variables, called as inst.Name() (or Name() inside the POU).
 actionDecl
-    : ACTION identifier COLON? stmtList END_ACTION SEMI?
+    : ACTION name=identifier COLON? body=stmtList end=END_ACTION SEMI?
     ;
 
 propertyDecl
-    : PROPERTY modifier* identifier COLON typeSpec propertyAccessor* END_PROPERTY
+    : PROPERTY modifiers+=modifier* name=identifier COLON type=typeSpec accessors+=propertyAccessor* END_PROPERTY
     ;
 
 propertyAccessor
-    : GET varBlock* stmtList END_GET      # propertyGetter
-    | SET varBlock* stmtList END_SET      # propertySetter
+    : GET vars+=varBlock* body=stmtList end=END_GET      # propertyGetter
+    | SET vars+=varBlock* body=stmtList end=END_SET      # propertySetter
     ;
 
 // ================================================================= types
 
 typeDecl
-    : TYPE typeEntry* END_TYPE
+    : TYPE entries+=typeEntry* END_TYPE
     ;
 
 typeEntry
-    : identifier (EXTENDS qualifiedName)? COLON typeSpec (ASSIGN initializer)? SEMI?
+    : name=identifier (EXTENDS base=qualifiedName)? COLON type=typeSpec (ASSIGN init=initializer)? SEMI?
     ;
 
 typeSpec
-    : ARRAY LBRACK arrayRange (COMMA arrayRange)* RBRACK OF typeSpec        # arrayType
-    | (POINTER TO | REF_TO) typeSpec                                         # pointerType
-    | REFERENCE TO typeSpec                                                  # referenceType
-    | (STRING | WSTRING) (LBRACK expression RBRACK | LPAREN expression RPAREN)?   # stringType
-    | STRUCT varDecl* END_STRUCT                                             # structType
-    | UNION varDecl* END_UNION                                               # unionType   // CODESYS: members share storage
-    | LPAREN enumValue (COMMA enumValue)* RPAREN qualifiedName?              # enumType
-    | qualifiedName typeArguments?                                           # namedType
+    : ARRAY LBRACK ranges+=arrayRange (COMMA ranges+=arrayRange)* RBRACK OF element=typeSpec   # arrayType
+    | (POINTER TO | REF_TO) element=typeSpec                                 # pointerType
+    | REFERENCE TO element=typeSpec                                          # referenceType
+    | kind=(STRING | WSTRING) (LBRACK length=expression RBRACK | LPAREN length=expression RPAREN)?   # stringType
+    | STRUCT fields+=varDecl* END_STRUCT                                     # structType
+    | UNION fields+=varDecl* END_UNION                                       # unionType   // CODESYS: members share storage
+    | LPAREN values+=enumValue (COMMA values+=enumValue)* RPAREN base=qualifiedName?   # enumType
+    | name=qualifiedName arguments=typeArguments?                            # namedType
     ;
 
 // After a type name: `INT (0..100)` (subrange), `INT (Red, Green)` (enumeration
 // with a base type), `FB(1, x)` / `R_TRIG()` (CODESYS FB_init arguments).
 typeArguments
-    : LPAREN expression DOTDOT expression RPAREN                             # subrangeArgs
-    | LPAREN enumValue (COMMA enumValue)* RPAREN                             # enumArgs
-    | LPAREN argList? RPAREN                                                 # instanceArgs
+    : LPAREN lo=expression DOTDOT hi=expression RPAREN                       # subrangeArgs
+    | LPAREN values+=enumValue (COMMA values+=enumValue)* RPAREN             # enumArgs
+    | LPAREN args=argList? RPAREN                                            # instanceArgs
     ;
 
 // The result type of a FUNCTION or METHOD: the forms of typeSpec that fit
@@ -140,35 +168,35 @@ typeArguments
 // with '(' after it; with typeSpec here, the choice after every type name
 // (are arguments next?) needed more than one token of lookahead.
 returnType
-    : ARRAY LBRACK arrayRange (COMMA arrayRange)* RBRACK OF returnType      # arrayReturnType
-    | (POINTER TO | REF_TO) returnType                                       # pointerReturnType
-    | REFERENCE TO returnType                                                # referenceReturnType
-    | (STRING | WSTRING) (LBRACK expression RBRACK | LPAREN expression RPAREN)?   # stringReturnType
-    | qualifiedName                                                          # namedReturnType
+    : ARRAY LBRACK ranges+=arrayRange (COMMA ranges+=arrayRange)* RBRACK OF element=returnType   # arrayReturnType
+    | (POINTER TO | REF_TO) element=returnType                               # pointerReturnType
+    | REFERENCE TO element=returnType                                        # referenceReturnType
+    | kind=(STRING | WSTRING) (LBRACK length=expression RBRACK | LPAREN length=expression RPAREN)?   # stringReturnType
+    | name=qualifiedName                                                     # namedReturnType
     ;
 
 arrayRange
-    : expression DOTDOT expression
-    | STAR
+    : lo=expression DOTDOT hi=expression
+    | star=STAR
     ;
 
 enumValue
-    : identifier (ASSIGN expression)?
+    : name=identifier (ASSIGN value=expression)?
     ;
 
 initializer
-    : LBRACK arrayInitItem (COMMA arrayInitItem)* RBRACK                     # arrayInit
-    | LPAREN structInitItem (COMMA structInitItem)* RPAREN                   # structInit
-    | expression                                                             # exprInit
+    : LBRACK items+=arrayInitItem (COMMA items+=arrayInitItem)* RBRACK       # arrayInit
+    | LPAREN fields+=structInitItem (COMMA fields+=structInitItem)* RPAREN   # structInit
+    | value=expression                                                       # exprInit
     ;
 
 arrayInitItem
-    : INTEGER LPAREN initializer? RPAREN
-    | initializer
+    : count=INTEGER LPAREN value=initializer? RPAREN
+    | value=initializer
     ;
 
 structInitItem
-    : identifier ASSIGN initializer
+    : name=identifier ASSIGN value=initializer
     ;
 
 // ================================================================= variables
@@ -177,8 +205,8 @@ structInitItem
 // with its path and access mode in every declaration, the choice after each
 // name and after each type needed more than one token of lookahead.
 varBlock
-    : varSection varQualifier* varDecl* END_VAR
-    | access=VAR_ACCESS varQualifier* accessDecl* END_VAR
+    : section=varSection qualifiers+=varQualifier* decls+=varDecl* END_VAR
+    | access=VAR_ACCESS qualifiers+=varQualifier* accessDecls+=accessDecl* END_VAR
     ;
 
 varSection
@@ -191,17 +219,14 @@ varQualifier
     ;
 
 // `a, b AT %IX0.0 : INT := 5;` — also the looser form of VAR_CONFIG
-// (`prog.x AT %QW1 : INT;`). Tokens the AST builder asks about have labels
-// (semi=, address=, init=, and colon=, assign=, eq=, setOperator= in
-// exprStmt; operands+= and suffixes+= in expressions): a label is a field,
-// the generated accessor a search of the children.
+// (`prog.x AT %QW1 : INT;`).
 varDecl
-    : varName (COMMA varName)* (AT address=DIRECT_ADDRESS)? COLON
-        typeSpec (ASSIGN init=initializer)? semi=SEMI?   // a missing ';' is reported by the AST builder
+    : names+=varName (COMMA names+=varName)* (AT address=DIRECT_ADDRESS)? COLON
+        type=typeSpec (ASSIGN init=initializer)? semi=SEMI?   // a missing ';' is reported by the AST builder
     ;
 
 accessDecl
-    : varName COLON accessPath COLON typeSpec (READ_ONLY | READ_WRITE)? SEMI
+    : name=varName COLON path=accessPath COLON type=typeSpec accessMode=(READ_ONLY | READ_WRITE)? SEMI
     ;
 
 varName
@@ -217,44 +242,44 @@ accessPath
 // ================================================================= configuration
 
 configuration
-    : CONFIGURATION identifier configElement* END_CONFIGURATION
+    : CONFIGURATION name=identifier elements+=configElement* END_CONFIGURATION
     ;
 
 configElement
-    : varBlock
-    | resource
-    | taskDecl
-    | programConfig
+    : vars=varBlock
+    | res=resource
+    | task=taskDecl
+    | program=programConfig
     ;
 
 resource
-    : RESOURCE identifier (ON qualifiedName)? resourceElement* END_RESOURCE
+    : RESOURCE name=identifier (ON target=qualifiedName)? elements+=resourceElement* END_RESOURCE
     ;
 
 resourceElement
-    : varBlock
-    | taskDecl
-    | programConfig
+    : vars=varBlock
+    | task=taskDecl
+    | program=programConfig
     ;
 
 taskDecl
-    : TASK anyName LPAREN (taskParam (COMMA taskParam)*)? RPAREN SEMI
+    : TASK name=anyName LPAREN (params+=taskParam (COMMA params+=taskParam)*)? RPAREN SEMI
     ;
 
 taskParam
-    : anyName ASSIGN expression
+    : name=anyName ASSIGN value=expression
     ;
 
 programConfig
-    : PROGRAM (RETAIN | NON_RETAIN)? identifier (WITH anyName)? COLON qualifiedName
-        (LPAREN argList? RPAREN)? SEMI                                           # programInstance
-    | identifier WITH anyName SEMI                                              # fbTaskBinding
+    : PROGRAM (RETAIN | NON_RETAIN)? name=identifier (WITH task=anyName)? COLON type=qualifiedName
+        (LPAREN args=argList? RPAREN)? SEMI                                      # programInstance
+    | name=identifier WITH task=anyName SEMI                                    # fbTaskBinding
     ;
 
 // ================================================================= statements
 
 stmtList
-    : statement*
+    : statements+=statement*
     ;
 
 // `name:` (a jump label) is an expression statement ending in ':' for the
@@ -263,35 +288,37 @@ stmtList
 // needed adaptive prediction on every statement. The ';' after END_IF and
 // the like is an empty statement for the same reason (the builder drops it).
 statement
-    : expression (((assign=(ASSIGN | TRY_ASSIGN) expression | setOperator=identifier eq=EQ expression)? SEMI) | colon=COLON)   # exprStmt
-    | IF expression THEN stmtList (ELSIF expression THEN stmtList)* (ELSE stmtList)? END_IF  # ifStmt
-    | CASE expression OF caseBranch* (ELSE stmtList)? END_CASE                   # caseStmt
-    | FOR identifier ASSIGN expression TO expression (BY expression)? DO stmtList END_FOR  # forStmt
-    | WHILE expression DO stmtList END_WHILE                                     # whileStmt
-    | REPEAT stmtList UNTIL expression END_REPEAT                                # repeatStmt
+    : parts+=expression (((assign=(ASSIGN | TRY_ASSIGN) parts+=expression | setOperator=identifier eq=EQ parts+=expression)? SEMI)
+                         | colon=COLON)                                          # exprStmt
+    | IF conds+=expression THEN blocks+=stmtList (ELSIF conds+=expression THEN blocks+=stmtList)*
+        (ELSE elseBlock=stmtList)? END_IF                                        # ifStmt
+    | CASE selector=expression OF branches+=caseBranch* (ELSE elseBlock=stmtList)? END_CASE   # caseStmt
+    | FOR var=identifier ASSIGN from=expression TO to=expression (by=BY step=expression)? DO body=stmtList END_FOR  # forStmt
+    | WHILE cond=expression DO body=stmtList END_WHILE                           # whileStmt
+    | REPEAT body=stmtList UNTIL cond=expression END_REPEAT                      # repeatStmt
     | EXIT SEMI                                                                  # exitStmt
     | CONTINUE SEMI                                                              # continueStmt
     | RETURN SEMI                                                                # returnStmt
-    | JMP identifier SEMI                                                        # jmpStmt
+    | JMP target=identifier SEMI                                                 # jmpStmt
     | SEMI                                                                       # emptyStmt
     ;
 
 // Inside CASE, `IDENT :` starts a new case label, so a branch body cannot
 // contain a jump label at its top level.
 caseBranch
-    : caseLabel (COMMA caseLabel)* COLON caseBody
+    : labels+=caseLabel (COMMA labels+=caseLabel)* COLON body=caseBody
     ;
 
 caseBody
-    : caseStatement*
+    : statements+=caseStatement*
     ;
 
 caseStatement
-    : {!isCaseLabelAhead()}? statement
+    : {!isCaseLabelAhead()}? stmt=statement
     ;
 
 caseLabel
-    : expression (DOTDOT expression)?
+    : lo=expression (dots=DOTDOT hi=expression)?
     ;
 
 // ================================================================= expressions
@@ -314,39 +341,37 @@ expression
 // and operands are most of a program (decision 0158). The name tokens are
 // those of `identifier`.
 unaryExpr
-    : op=(MINUS | PLUS | NOT) unaryExpr                                   # unaryExpression
+    : op=(MINUS | PLUS | NOT) operand=unaryExpr                           # unaryExpression
     | value=(INTEGER | BASED_INTEGER | REAL_LITERAL | TRUE | FALSE | STRING_LITERAL | WSTRING_LITERAL
             | DURATION_LITERAL | DATE_LITERAL | TOD_LITERAL | DT_LITERAL | TYPED_LITERAL)   # literalExpression
     | ( name=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION)
       | keywordFunction=(MOD | AND | OR | XOR)   // MOD(a, b), AND(a, b, c): the standard functions named like operators
-      | THIS
-      | SUPER
-      | DIRECT_ADDRESS
-      | LPAREN expression RPAREN
+      | special=(THIS | SUPER | DIRECT_ADDRESS)
+      | LPAREN inner=expression RPAREN
       ) suffixes+=postfixOp*                                              # postfixExpression
     ;
 
 postfixOp
     : DOT member=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION
                  | INTEGER | PARTIAL_ACCESS)   # memberOp   // a name (the tokens of `identifier`), a bit number, %X3
-    | LBRACK expressionList RBRACK        # indexOp
-    | CARET                               # derefOp
-    | LPAREN argList? RPAREN              # callOp
+    | LBRACK indexes=expressionList RBRACK   # indexOp
+    | CARET                                  # derefOp
+    | LPAREN args=argList? RPAREN            # callOp
     ;
 
 expressionList
-    : expression (COMMA expression)*
+    : items+=expression (COMMA items+=expression)*
     ;
 
 argList
-    : arg (COMMA arg)*
+    : items+=arg (COMMA items+=arg)*
     ;
 
 // `name := value`, `name => variable` (`NOT name => variable`), `value`:
 // one shape for the parser, told apart by the AST builder, so that the
 // choice needs one token of lookahead.
 arg
-    : expression (op=(ASSIGN | ARROW) expression?)?
+    : parts+=expression (op=(ASSIGN | ARROW) parts+=expression?)?
     ;
 
 // ================================================================= names

@@ -94,26 +94,26 @@ CompilationUnit AstBuilder::build(P::CompilationUnitContext* tree) {
     CompilationUnit unit;
     unit.file = file_;
     if (tree == nullptr) return unit;
-    for (auto* item : tree->topLevelItem()) topLevelItem(item, "", unit);
+    for (auto* item : tree->items) topLevelItem(item, "", unit);
     return unit;
 }
 
 void AstBuilder::topLevelItem(P::TopLevelItemContext* c, const std::string& nameSpace, CompilationUnit& unit) {
-    if (auto* p = c->pouDecl()) {
+    if (auto* p = c->pou) {
         if (auto built = pou(p, nameSpace)) unit.pous.push_back(std::move(built));
-    } else if (auto* m = c->methodDecl()) {
+    } else if (auto* m = c->method) {
         unit.pous.push_back(method(m, nameSpace, false));
-    } else if (auto* a = c->actionDecl()) {
+    } else if (auto* a = c->action) {
         // CODESYS writes an ACTION after the POU it belongs to.
         Pou* owner = unit.pous.empty() ? nullptr : unit.pous.back().get();
         if (!owner || (owner->kind != PouKind::Program && owner->kind != PouKind::FunctionBlock)) {
-            error(loc(a), "ACTION '" + text(a->identifier()) + "' must follow the PROGRAM or FUNCTION_BLOCK it belongs to");
+            error(loc(a), "ACTION '" + text(a->name) + "' must follow the PROGRAM or FUNCTION_BLOCK it belongs to");
             return;
         }
         owner->methods.push_back(action(a, owner->nameSpace));
-    } else if (auto* t = c->typeDecl()) {
+    } else if (auto* t = c->types) {
         typeDecl(t, nameSpace, unit);
-    } else if (auto* v = c->varBlock()) {
+    } else if (auto* v = c->globals) {
         VarBlock block = varBlock(v);
         if (block.section != VarSection::Global) {
             error(block.loc, "only VAR_GLOBAL is allowed outside a POU, found " + v->getStart()->getText());
@@ -125,14 +125,14 @@ void AstBuilder::topLevelItem(P::TopLevelItemContext* c, const std::string& name
         list.pragmas = pragmasBefore(v->getStart());
         list.blocks.push_back(std::move(block));
         unit.globals.push_back(std::move(list));
-    } else if (auto* cfg = c->configuration()) {
+    } else if (auto* cfg = c->config) {
         unit.configurations.push_back(configuration(cfg));
-    } else if (auto* ns = c->namespaceDecl()) {
-        const std::string inner = text(ns->qualifiedName());
+    } else if (auto* ns = c->space) {
+        const std::string inner = text(ns->name);
         const std::string path = nameSpace.empty() ? inner : nameSpace + "." + inner;
-        for (auto* item : ns->topLevelItem()) topLevelItem(item, path, unit);
-    } else if (auto* u = c->usingDirective()) {
-        for (auto* name : u->qualifiedName()) unit.usings.push_back(UsingDirective{loc(name), text(name)});
+        for (auto* item : ns->items) topLevelItem(item, path, unit);
+    } else if (auto* u = c->uses) {
+        for (auto* name : u->names) unit.usings.push_back(UsingDirective{loc(name), text(name)});
     }
 }
 
@@ -147,49 +147,47 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
 
     auto addElements = [&](const std::vector<P::PouElementContext*>& elements) {
         for (auto* e : elements) {
-            if (auto* v = e->varBlock()) out->vars.push_back(varBlock(v));
-            else if (auto* m = e->memberDecl()) member(m, *out, false);
+            if (auto* v = e->vars) out->vars.push_back(varBlock(v));
+            else if (auto* m = e->member) member(m, *out, false);
         }
     };
 
     if (auto* prog = exactly<P::ProgramDeclContext>(c)) {
         out->kind = PouKind::Program;
-        out->name = text(prog->identifier());
-        out->nameLoc = loc(prog->identifier());
-        addElements(prog->pouElement());
-        stmtList(prog->stmtList(), out->body);
-        for (auto* m : prog->memberDecl()) member(m, *out, false);
-        out->endLoc = loc(prog->END_PROGRAM() ? prog->END_PROGRAM()->getSymbol() : c->getStop());
+        out->name = text(prog->name);
+        out->nameLoc = loc(prog->name);
+        addElements(prog->elements);
+        stmtList(prog->body, out->body);
+        for (auto* m : prog->members) member(m, *out, false);
+        out->endLoc = loc(prog->end ? prog->end : c->getStop());
     } else if (auto* fn = exactly<P::FunctionDeclContext>(c)) {
         out->kind = PouKind::Function;
-        out->name = text(fn->identifier());
-        out->nameLoc = loc(fn->identifier());
-        if (fn->returnType()) out->returnType = returnType(fn->returnType());
-        for (auto* v : fn->varBlock()) out->vars.push_back(varBlock(v));
-        stmtList(fn->stmtList(), out->body);
-        out->endLoc = loc(fn->END_FUNCTION() ? fn->END_FUNCTION()->getSymbol() : c->getStop());
+        out->name = text(fn->name);
+        out->nameLoc = loc(fn->name);
+        if (fn->result) out->returnType = returnType(fn->result);
+        for (auto* v : fn->vars) out->vars.push_back(varBlock(v));
+        stmtList(fn->body, out->body);
+        out->endLoc = loc(fn->end ? fn->end : c->getStop());
     } else if (auto* fb = exactly<P::FunctionBlockDeclContext>(c)) {
         out->kind = PouKind::FunctionBlock;
-        out->name = text(fb->identifier());
-        out->nameLoc = loc(fb->identifier());
-        modifiers(fb->modifier(), out->access, out->abstract, out->final);
-        auto names = fb->qualifiedName();
-        size_t next = 0;
-        if (fb->EXTENDS() && next < names.size()) out->extends = text(names[next++]);
-        for (; next < names.size(); ++next) out->implements.push_back(text(names[next]));
-        addElements(fb->pouElement());
-        stmtList(fb->stmtList(), out->body);
-        for (auto* m : fb->memberDecl()) member(m, *out, false);
-        out->endLoc = loc(fb->END_FUNCTION_BLOCK() ? fb->END_FUNCTION_BLOCK()->getSymbol() : c->getStop());
+        out->name = text(fb->name);
+        out->nameLoc = loc(fb->name);
+        modifiers(fb->modifiers, out->access, out->abstract, out->final);
+        if (fb->base) out->extends = text(fb->base);
+        for (auto* i : fb->interfaces) out->implements.push_back(text(i));
+        addElements(fb->elements);
+        stmtList(fb->body, out->body);
+        for (auto* m : fb->members) member(m, *out, false);
+        out->endLoc = loc(fb->end ? fb->end : c->getStop());
     } else if (auto* itf = exactly<P::InterfaceDeclContext>(c)) {
         out->kind = PouKind::Interface;
-        out->name = text(itf->identifier());
-        out->nameLoc = loc(itf->identifier());
+        out->name = text(itf->name);
+        out->nameLoc = loc(itf->name);
         out->hasBody = false;
-        for (auto* base : itf->qualifiedName()) out->extendsList.push_back(text(base));
+        for (auto* base : itf->bases) out->extendsList.push_back(text(base));
         if (!out->extendsList.empty()) out->extends = out->extendsList.front();
-        for (auto* m : itf->memberDecl()) member(m, *out, true);
-        out->endLoc = loc(itf->END_INTERFACE() ? itf->END_INTERFACE()->getSymbol() : c->getStop());
+        for (auto* m : itf->members) member(m, *out, true);
+        out->endLoc = loc(itf->end ? itf->end : c->getStop());
     } else {
         return nullptr;  // nothing recognisable; the syntax error is reported
     }
@@ -197,12 +195,12 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
 }
 
 void AstBuilder::member(P::MemberDeclContext* c, Pou& owner, bool inInterface) {
-    if (auto* m = c->methodDecl()) owner.methods.push_back(method(m, owner.nameSpace, inInterface));
-    else if (auto* a = c->actionDecl()) {
+    if (auto* m = c->method) owner.methods.push_back(method(m, owner.nameSpace, inInterface));
+    else if (auto* a = c->action) {
         if (inInterface) error(loc(a), "an INTERFACE cannot have an ACTION");
         else owner.methods.push_back(action(a, owner.nameSpace));
     }
-    else if (auto* p = c->propertyDecl()) owner.properties.push_back(property(p, owner.nameSpace, inInterface));
+    else if (auto* p = c->property) owner.properties.push_back(property(p, owner.nameSpace, inInterface));
 }
 
 std::unique_ptr<Pou> AstBuilder::method(P::MethodDeclContext* c, const std::string& nameSpace, bool inInterface) {
@@ -211,12 +209,12 @@ std::unique_ptr<Pou> AstBuilder::method(P::MethodDeclContext* c, const std::stri
     out->loc = loc(c);
     out->nameSpace = nameSpace;
     out->pragmas = pragmasBefore(c->getStart());
-    out->name = text(c->identifier());
-    out->nameLoc = loc(c->identifier());
-    modifiers(c->modifier(), out->access, out->abstract, out->final);
-    if (c->returnType()) out->returnType = returnType(c->returnType());
-    for (auto* v : c->varBlock()) out->vars.push_back(varBlock(v));
-    stmtList(c->stmtList(), out->body);
+    out->name = text(c->name);
+    out->nameLoc = loc(c->name);
+    modifiers(c->modifiers, out->access, out->abstract, out->final);
+    if (c->result) out->returnType = returnType(c->result);
+    for (auto* v : c->vars) out->vars.push_back(varBlock(v));
+    stmtList(c->body, out->body);
     out->hasBody = !(inInterface || out->abstract);
     if (!out->hasBody && !out->body.empty()) {
         error(out->body.front()->loc, inInterface ? "a method of an INTERFACE has no body (statements found in '" +
@@ -224,7 +222,7 @@ std::unique_ptr<Pou> AstBuilder::method(P::MethodDeclContext* c, const std::stri
                                                   : "the ABSTRACT method '" + out->name + "' cannot have a body");
         out->body.clear();
     }
-    out->endLoc = loc(c->END_METHOD() ? c->END_METHOD()->getSymbol() : c->getStop());
+    out->endLoc = loc(c->end ? c->end : c->getStop());
     return out;
 }
 
@@ -236,25 +234,25 @@ std::unique_ptr<Pou> AstBuilder::action(P::ActionDeclContext* c, const std::stri
     out->loc = loc(c);
     out->nameSpace = nameSpace;
     out->pragmas = pragmasBefore(c->getStart());
-    out->name = text(c->identifier());
-    out->nameLoc = loc(c->identifier());
-    stmtList(c->stmtList(), out->body);
+    out->name = text(c->name);
+    out->nameLoc = loc(c->name);
+    stmtList(c->body, out->body);
     out->hasBody = true;
-    out->endLoc = loc(c->END_ACTION() ? c->END_ACTION()->getSymbol() : c->getStop());
+    out->endLoc = loc(c->end ? c->end : c->getStop());
     return out;
 }
 
 Property AstBuilder::property(P::PropertyDeclContext* c, const std::string& nameSpace, bool inInterface) {
     Property out;
     out.loc = loc(c);
-    out.name = text(c->identifier());
+    out.name = text(c->name);
     out.pragmas = pragmasBefore(c->getStart());
-    modifiers(c->modifier(), out.access, out.abstract, out.final);
-    if (c->typeSpec()) out.type = typeSpec(c->typeSpec());
+    modifiers(c->modifiers, out.access, out.abstract, out.final);
+    if (c->type) out.type = typeSpec(c->type);
     const bool prototype = inInterface || out.abstract;
 
     auto accessor = [&](antlr4::ParserRuleContext* ctx, const char* name, const std::vector<P::VarBlockContext*>& vars,
-                        P::StmtListContext* body, antlr4::tree::TerminalNode* end) {
+                        P::StmtListContext* body, const antlr4::Token* end) {
         auto pou = std::make_unique<Pou>();
         pou->kind = PouKind::Method;
         pou->name = name;
@@ -271,17 +269,17 @@ Property AstBuilder::property(P::PropertyDeclContext* c, const std::string& name
                                               "' cannot have a body here (interface or ABSTRACT)");
             pou->body.clear();
         }
-        pou->endLoc = loc(end ? end->getSymbol() : ctx->getStop());
+        pou->endLoc = loc(end ? end : ctx->getStop());
         return pou;
     };
 
-    for (auto* a : c->propertyAccessor()) {
+    for (auto* a : c->accessors) {
         if (auto* g = exactly<P::PropertyGetterContext>(a)) {
             if (out.getter) error(loc(g), "property '" + out.name + "' has more than one GET");
-            out.getter = accessor(g, "GET", g->varBlock(), g->stmtList(), g->END_GET());
+            out.getter = accessor(g, "GET", g->vars, g->body, g->end);
         } else if (auto* s = exactly<P::PropertySetterContext>(a)) {
             if (out.setter) error(loc(s), "property '" + out.name + "' has more than one SET");
-            out.setter = accessor(s, "SET", s->varBlock(), s->stmtList(), s->END_SET());
+            out.setter = accessor(s, "SET", s->vars, s->body, s->end);
         }
     }
     // An interface property written without accessor sections is read/write.
@@ -296,19 +294,19 @@ Property AstBuilder::property(P::PropertyDeclContext* c, const std::string& name
 
 void AstBuilder::typeDecl(P::TypeDeclContext* c, const std::string& nameSpace, CompilationUnit& unit) {
     bool first = true;
-    for (auto* e : c->typeEntry()) {
+    for (auto* e : c->entries) {
         TypeDecl decl;
         decl.loc = loc(e);
-        decl.name = text(e->identifier());
-        decl.nameLoc = loc(e->identifier());
+        decl.name = text(e->name);
+        decl.nameLoc = loc(e->name);
         decl.nameSpace = nameSpace;
-        if (e->qualifiedName()) decl.extends = text(e->qualifiedName());
+        if (e->base) decl.extends = text(e->base);
         // Pragmas in front of TYPE belong to its first entry.
         if (first) decl.pragmas = pragmasBefore(c->getStart());
         for (auto& p : pragmasBefore(e->getStart())) decl.pragmas.push_back(std::move(p));
         first = false;
-        decl.spec = typeSpec(e->typeSpec());
-        if (e->initializer()) decl.init = initializer(e->initializer());
+        decl.spec = typeSpec(e->type);
+        if (e->init) decl.init = initializer(e->init);
         if (!decl.extends.empty() && decl.spec && decl.spec->kind != TypeSpecKind::Struct)
             error(decl.loc, "EXTENDS in a TYPE is only allowed for a STRUCT ('" + decl.name + "')");
         unit.types.push_back(std::move(decl));
@@ -320,12 +318,12 @@ void AstBuilder::typeDecl(P::TypeDeclContext* c, const std::string& nameSpace, C
 Configuration AstBuilder::configuration(P::ConfigurationContext* c) {
     Configuration out;
     out.loc = loc(c);
-    out.name = text(c->identifier());
-    for (auto* e : c->configElement()) {
-        if (auto* v = e->varBlock()) out.globals.push_back(varBlock(v));
-        else if (auto* r = e->resource()) out.resources.push_back(resource(r));
-        else if (auto* t = e->taskDecl()) out.tasks.push_back(task(t));
-        else if (auto* p = e->programConfig()) out.programs.push_back(programConfig(p));
+    out.name = text(c->name);
+    for (auto* e : c->elements) {
+        if (auto* v = e->vars) out.globals.push_back(varBlock(v));
+        else if (auto* r = e->res) out.resources.push_back(resource(r));
+        else if (auto* t = e->task) out.tasks.push_back(task(t));
+        else if (auto* p = e->program) out.programs.push_back(programConfig(p));
     }
     return out;
 }
@@ -333,12 +331,12 @@ Configuration AstBuilder::configuration(P::ConfigurationContext* c) {
 Resource AstBuilder::resource(P::ResourceContext* c) {
     Resource out;
     out.loc = loc(c);
-    out.name = text(c->identifier());
-    out.on = text(c->qualifiedName());
-    for (auto* e : c->resourceElement()) {
-        if (auto* v = e->varBlock()) out.globals.push_back(varBlock(v));
-        else if (auto* t = e->taskDecl()) out.tasks.push_back(task(t));
-        else if (auto* p = e->programConfig()) out.programs.push_back(programConfig(p));
+    out.name = text(c->name);
+    out.on = text(c->target);
+    for (auto* e : c->elements) {
+        if (auto* v = e->vars) out.globals.push_back(varBlock(v));
+        else if (auto* t = e->task) out.tasks.push_back(task(t));
+        else if (auto* p = e->program) out.programs.push_back(programConfig(p));
     }
     return out;
 }
@@ -346,12 +344,12 @@ Resource AstBuilder::resource(P::ResourceContext* c) {
 TaskDecl AstBuilder::task(P::TaskDeclContext* c) {
     TaskDecl out;
     out.loc = loc(c);
-    out.name = text(c->anyName());
-    for (auto* p : c->taskParam()) {
+    out.name = text(c->name);
+    for (auto* p : c->params) {
         TaskParam param;
         param.loc = loc(p);
-        param.name = text(p->anyName());
-        param.value = p->expression() ? expr(p->expression()) : placeholder(param.loc);
+        param.name = text(p->name);
+        param.value = p->value ? expr(p->value) : placeholder(param.loc);
         out.params.push_back(std::move(param));
     }
     return out;
@@ -362,14 +360,14 @@ ProgramConfig AstBuilder::programConfig(P::ProgramConfigContext* c) {
     out.loc = loc(c);
     if (auto* p = exactly<P::ProgramInstanceContext>(c)) {
         out.isProgram = true;
-        out.instance = text(p->identifier());
-        out.task = text(p->anyName());
-        out.typeName = text(p->qualifiedName());
-        out.args = args(p->argList());
+        out.instance = text(p->name);
+        out.task = text(p->task);
+        out.typeName = text(p->type);
+        out.args = args(p->args);
     } else if (auto* b = exactly<P::FbTaskBindingContext>(c)) {
         out.isProgram = false;
-        out.instance = text(b->identifier());
-        out.task = text(b->anyName());
+        out.instance = text(b->name);
+        out.task = text(b->task);
     }
     return out;
 }

@@ -153,7 +153,7 @@ ExprPtr AstBuilder::unary(P::UnaryExprContext* c) {
         auto e = makeExpr(ExprKind::Unary, at);
         const size_t type = u->op ? u->op->getType() : static_cast<size_t>(L::MINUS);
         e->op = type == L::NOT ? Op::Not : type == L::PLUS ? Op::Plus : Op::Neg;
-        e->kids.push_back(unary(u->unaryExpr()));
+        e->kids.push_back(unary(u->operand));
         return e;
     }
     return placeholder(at);
@@ -189,15 +189,15 @@ ExprPtr AstBuilder::postfix(P::PostfixExpressionContext* c) {
         } else if (auto* i = exactly<P::IndexOpContext>(op)) {
             next = makeExpr(ExprKind::Index, at);
             next->kids.push_back(std::move(current));
-            if (i->expressionList())
-                for (auto* sub : i->expressionList()->expression()) next->kids.push_back(expr(sub));
+            if (i->indexes)
+                for (auto* sub : i->indexes->items) next->kids.push_back(expr(sub));
             current = std::move(next);
             continue;
         } else if (exactly<P::DerefOpContext>(op)) {
             next = makeExpr(ExprKind::Deref, at);
         } else if (auto* call = exactly<P::CallOpContext>(op)) {
             next = makeExpr(ExprKind::Call, at);
-            next->args = args(call->argList());
+            next->args = args(call->args);
         } else {
             continue;
         }
@@ -214,14 +214,17 @@ ExprPtr AstBuilder::primary(P::PostfixExpressionContext* c) {
         e->name = name->getText();
         return e;
     }
-    if (c->DIRECT_ADDRESS()) {
-        auto e = makeExpr(ExprKind::Name, at);
-        e->name = c->DIRECT_ADDRESS()->getText();
-        return e;
-    }
-    if (c->THIS()) return makeExpr(ExprKind::This, at);
-    if (c->SUPER()) return makeExpr(ExprKind::Super, at);
-    if (c->expression()) return expr(c->expression());
+    if (c->special != nullptr) switch (c->special->getType()) {
+            case L::DIRECT_ADDRESS: {
+                auto e = makeExpr(ExprKind::Name, at);
+                e->name = c->special->getText();
+                return e;
+            }
+            case L::THIS: return makeExpr(ExprKind::This, at);
+            case L::SUPER: return makeExpr(ExprKind::Super, at);
+            default: break;
+        }
+    if (c->inner) return expr(c->inner);
     return placeholder(at);
 }
 
@@ -257,10 +260,10 @@ ExprPtr AstBuilder::literal(const antlr4::Token* token) {
 std::vector<Arg> AstBuilder::args(P::ArgListContext* c) {
     std::vector<Arg> out;
     if (c == nullptr) return out;
-    for (auto* a : c->arg()) {
+    for (auto* a : c->items) {
         Arg arg;
         arg.loc = loc(a);
-        const std::vector<P::ExpressionContext*> parts = a->expression();
+        const std::vector<P::ExpressionContext*>& parts = a->parts;
         if (a->op == nullptr) {
             arg.value = parts.empty() ? placeholder(arg.loc) : expr(parts[0]);
             out.push_back(std::move(arg));
@@ -272,7 +275,7 @@ std::vector<Arg> AstBuilder::args(P::ArgListContext* c) {
             // NOT name => variable: the output negated
             auto* u = exactly<P::UnaryExpressionContext>(parts[0]->operands[0]);
             if (u != nullptr && u->op != nullptr && u->op->getType() == L::NOT) {
-                name = bareName(u->unaryExpr());
+                name = bareName(u->operand);
                 arg.negated = name != nullptr;
             }
         }

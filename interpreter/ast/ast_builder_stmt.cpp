@@ -30,7 +30,7 @@ StmtPtr makeStmt(StmtKind kind, const Loc& at) {
 
 void AstBuilder::stmtList(P::StmtListContext* c, StmtList& out) {
     if (c == nullptr) return;
-    for (auto* s : c->statement())
+    for (auto* s : c->statements)
         if (auto built = stmt(s)) out.push_back(std::move(built));
 }
 
@@ -40,63 +40,62 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
 
     if (auto* i = exactly<P::IfStmtContext>(c)) {
         auto s = makeStmt(StmtKind::If, at);
-        auto conds = i->expression();
-        auto blocks = i->stmtList();
+        const auto& conds = i->conds;
+        const auto& blocks = i->blocks;
         for (size_t k = 0; k < conds.size(); ++k) {
             s->conds.push_back(expr(conds[k]));
             s->blocks.emplace_back();
             if (k < blocks.size()) stmtList(blocks[k], s->blocks.back());
         }
-        if (i->ELSE() && blocks.size() > conds.size()) {
+        if (i->elseBlock != nullptr) {
             s->elseBlock.emplace();
-            stmtList(blocks.back(), *s->elseBlock);
+            stmtList(i->elseBlock, *s->elseBlock);
         }
         return s;
     }
     if (auto* cs = exactly<P::CaseStmtContext>(c)) {
         auto s = makeStmt(StmtKind::Case, at);
-        s->expr = cs->expression() ? expr(cs->expression()) : placeholder(at);
-        for (auto* b : cs->caseBranch()) {
+        s->expr = cs->selector ? expr(cs->selector) : placeholder(at);
+        for (auto* b : cs->branches) {
             CaseBranch branch;
             branch.loc = loc(b);
-            for (auto* label : b->caseLabel()) {
+            for (auto* label : b->labels) {
                 CaseLabel built;
-                built.lo = label->expression(0) ? expr(label->expression(0)) : placeholder(loc(label));
-                if (label->DOTDOT())
-                    built.hi = label->expression(1) ? expr(label->expression(1)) : placeholder(loc(label));
+                built.lo = label->lo ? expr(label->lo) : placeholder(loc(label));
+                if (label->dots) built.hi = label->hi ? expr(label->hi) : placeholder(loc(label));
                 branch.labels.push_back(std::move(built));
             }
-            if (b->caseBody())
-                for (auto* cst : b->caseBody()->caseStatement())
-                    if (auto built = stmt(cst->statement())) branch.body.push_back(std::move(built));
+            if (b->body)
+                for (auto* cst : b->body->statements)
+                    if (auto built = stmt(cst->stmt)) branch.body.push_back(std::move(built));
             s->cases.push_back(std::move(branch));
         }
-        if (cs->ELSE()) {
+        if (cs->elseBlock != nullptr) {
             s->elseBlock.emplace();
-            stmtList(cs->stmtList(), *s->elseBlock);
+            stmtList(cs->elseBlock, *s->elseBlock);
         }
         return s;
     }
     if (auto* f = exactly<P::ForStmtContext>(c)) {
         auto s = makeStmt(StmtKind::For, at);
-        s->name = text(f->identifier());
-        s->nameLoc = loc(f->identifier());
-        s->from = f->expression(0) ? expr(f->expression(0)) : placeholder(at);
-        s->to = f->expression(1) ? expr(f->expression(1)) : placeholder(at);
-        if (f->BY()) s->by = f->expression(2) ? expr(f->expression(2)) : placeholder(at);
-        stmtList(f->stmtList(), s->body);
+        s->name = text(f->var);
+        s->nameLoc = loc(f->var);
+        s->from = f->from ? expr(f->from) : placeholder(at);
+        s->to = f->to ? expr(f->to) : placeholder(at);
+        if (f->by) s->by = f->step ? expr(f->step) : placeholder(at);
+        stmtList(f->body, s->body);
         return s;
     }
     if (auto* w = exactly<P::WhileStmtContext>(c)) {
         auto s = makeStmt(StmtKind::While, at);
-        s->expr = w->expression() ? expr(w->expression()) : placeholder(at);
-        stmtList(w->stmtList(), s->body);
+        s->expr = w->cond ? expr(w->cond) : placeholder(at);
+        stmtList(w->body, s->body);
         return s;
     }
     if (auto* r = exactly<P::RepeatStmtContext>(c)) {
         auto s = makeStmt(StmtKind::Repeat, at);
-        stmtList(r->stmtList(), s->body);
-        s->expr = r->expression() ? expr(r->expression()) : placeholder(at);
+        stmtList(r->body, s->body);
+        s->expr = r->cond ? expr(r->cond) : placeholder(at);
         return s;
     }
     if (exactly<P::ExitStmtContext>(c)) return makeStmt(StmtKind::Exit, at);
@@ -104,8 +103,8 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
     if (exactly<P::ReturnStmtContext>(c)) return makeStmt(StmtKind::Return, at);
     if (auto* j = exactly<P::JmpStmtContext>(c)) {
         auto s = makeStmt(StmtKind::Jmp, at);
-        s->name = text(j->identifier());
-        s->nameLoc = loc(j->identifier());
+        s->name = text(j->target);
+        s->nameLoc = loc(j->target);
         return s;
     }
     if (exactly<P::EmptyStmtContext>(c)) {
@@ -122,7 +121,7 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
 
 StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
     const Loc at = loc(c);
-    auto operands = c->expression();
+    const auto& operands = c->parts;
     if (operands.empty()) return nullptr;
     if (c->colon != nullptr) {  // a jump label
         const antlr4::Token* name = bareName(operands[0]);

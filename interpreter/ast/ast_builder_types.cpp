@@ -32,8 +32,8 @@ VarBlock AstBuilder::varBlock(P::VarBlockContext* c) {
     VarBlock out;
     out.loc = loc(c);
     if (c->access != nullptr) out.section = VarSection::Access;
-    else if (c->varSection()) out.section = sectionOf(c->varSection()->getStart()->getType());
-    for (auto* q : c->varQualifier()) {
+    else if (c->section) out.section = sectionOf(c->section->getStart()->getType());
+    for (auto* q : c->qualifiers) {
         switch (q->getStart()->getType()) {
             case L::CONSTANT: out.constant = true; break;
             case L::RETAIN: out.retain = true; break;
@@ -42,8 +42,8 @@ VarBlock AstBuilder::varBlock(P::VarBlockContext* c) {
             default: break;
         }
     }
-    for (auto* d : c->varDecl()) out.vars.push_back(varDecl(d, out.section));
-    for (auto* d : c->accessDecl()) out.vars.push_back(accessDecl(d));
+    for (auto* d : c->decls) out.vars.push_back(varDecl(d, out.section));
+    for (auto* d : c->accessDecls) out.vars.push_back(accessDecl(d));
     return out;
 }
 
@@ -52,13 +52,13 @@ VarDecl AstBuilder::accessDecl(P::AccessDeclContext* c) {
     VarDecl out;
     out.loc = loc(c);
     out.pragmas = pragmasBefore(c->getStart());
-    if (c->varName()) {
-        out.names.push_back(text(c->varName()));
-        out.nameLocs.push_back(loc(c->varName()));
+    if (c->name) {
+        out.names.push_back(text(c->name));
+        out.nameLocs.push_back(loc(c->name));
     }
-    out.accessPath = text(c->accessPath());
-    out.readOnly = c->READ_ONLY() != nullptr;
-    out.type = typeSpec(c->typeSpec());
+    out.accessPath = text(c->path);
+    out.readOnly = c->accessMode != nullptr && c->accessMode->getType() == L::READ_ONLY;
+    out.type = typeSpec(c->type);
     return out;
 }
 
@@ -68,17 +68,17 @@ VarDecl AstBuilder::varDecl(P::VarDeclContext* c, VarSection section) {
         reportMissingDeclarationSemicolon(errors_, &tokens_, c->getStart(), c->getStop());
     out.loc = loc(c);
     out.pragmas = pragmasBefore(c->getStart());
-    for (auto* n : c->varName()) {
+    for (auto* n : c->names) {
         out.names.push_back(text(n));
         out.nameLocs.push_back(loc(n));
         // A path (prog.x, arr[1]) names something declared elsewhere: only
         // VAR_CONFIG (and VAR_ACCESS) refer to other declarations that way.
-        const bool isPath = n->children.size() > 1;
+        const bool isPath = n->getStart() != n->getStop();
         if (isPath && section != VarSection::Config && section != VarSection::Access)
             error(loc(n), "'" + out.names.back() + "' is not a simple name; paths are only allowed in VAR_CONFIG");
     }
     if (c->address != nullptr) out.address = c->address->getText();
-    out.type = typeSpec(c->typeSpec());
+    out.type = typeSpec(c->type);
     if (c->init != nullptr) out.init = initializer(c->init);
     return out;
 }
@@ -94,8 +94,8 @@ TypeSpecPtr AstBuilder::namedType(P::QualifiedNameContext* c) {
 EnumValue AstBuilder::enumValue(P::EnumValueContext* c) {
     EnumValue out;
     out.loc = loc(c);
-    out.name = text(c->identifier());
-    if (c->expression()) out.value = expr(c->expression());
+    out.name = text(c->name);
+    if (c->value) out.value = expr(c->value);
     return out;
 }
 
@@ -106,36 +106,36 @@ TypeSpecPtr AstBuilder::typeSpec(P::TypeSpecContext* c) {
 
     if (auto* n = exactly<P::NamedTypeContext>(c)) {
         out->kind = TypeSpecKind::Named;
-        P::TypeArgumentsContext* arguments = n->typeArguments();
+        P::TypeArgumentsContext* arguments = n->arguments;
         if (arguments == nullptr) {
-            out->name = text(n->qualifiedName());
+            out->name = text(n->name);
         } else if (auto* sr = exactly<P::SubrangeArgsContext>(arguments)) {
             out->kind = TypeSpecKind::Subrange;
-            if (n->qualifiedName()) out->elem = namedType(n->qualifiedName());
-            out->lo = sr->expression(0) ? expr(sr->expression(0)) : placeholder(out->loc);
-            out->hi = sr->expression(1) ? expr(sr->expression(1)) : placeholder(out->loc);
+            if (n->name) out->elem = namedType(n->name);
+            out->lo = sr->lo ? expr(sr->lo) : placeholder(out->loc);
+            out->hi = sr->hi ? expr(sr->hi) : placeholder(out->loc);
         } else if (auto* te = exactly<P::EnumArgsContext>(arguments)) {
             out->kind = TypeSpecKind::Enum;
-            for (auto* v : te->enumValue()) out->enumValues.push_back(enumValue(v));
-            if (n->qualifiedName()) out->elem = namedType(n->qualifiedName());
+            for (auto* v : te->values) out->enumValues.push_back(enumValue(v));
+            if (n->name) out->elem = namedType(n->name);
         } else if (auto* ia = exactly<P::InstanceArgsContext>(arguments)) {
-            out->name = text(n->qualifiedName());
-            out->initArgs = args(ia->argList());
+            out->name = text(n->name);
+            out->initArgs = args(ia->args);
         }
     } else if (sharedTypeForm<P::ArrayTypeContext, P::PointerTypeContext, P::ReferenceTypeContext, P::StringTypeContext>(
-                   c, *out, [&](auto* form) { return typeSpec(form->typeSpec()); })) {
+                   c, *out, [&](auto* form) { return typeSpec(form->element); })) {
         // ARRAY, POINTER TO, REFERENCE TO, STRING
     } else if (auto* st = exactly<P::StructTypeContext>(c)) {
         out->kind = TypeSpecKind::Struct;
-        for (auto* d : st->varDecl()) out->fields.push_back(varDecl(d, VarSection::Var));
+        for (auto* d : st->fields) out->fields.push_back(varDecl(d, VarSection::Var));
     } else if (auto* un = exactly<P::UnionTypeContext>(c)) {
         out->kind = TypeSpecKind::Struct;
         out->isUnion = true;
-        for (auto* d : un->varDecl()) out->fields.push_back(varDecl(d, VarSection::Var));
+        for (auto* d : un->fields) out->fields.push_back(varDecl(d, VarSection::Var));
     } else if (auto* e = exactly<P::EnumTypeContext>(c)) {
         out->kind = TypeSpecKind::Enum;
-        for (auto* v : e->enumValue()) out->enumValues.push_back(enumValue(v));
-        if (e->qualifiedName()) out->elem = namedType(e->qualifiedName());
+        for (auto* v : e->values) out->enumValues.push_back(enumValue(v));
+        if (e->base) out->elem = namedType(e->base);
     }
     return out;
 }
@@ -147,7 +147,7 @@ template <typename ArrayForm, typename PointerForm, typename ReferenceForm, type
 bool AstBuilder::sharedTypeForm(Context* c, TypeSpec& out, Element&& element) {
     if (auto* a = exactly<ArrayForm>(c)) {
         out.kind = TypeSpecKind::Array;
-        out.dims = arrayRanges(a->arrayRange());
+        out.dims = arrayRanges(a->ranges);
         out.elem = element(a);
     } else if (auto* p = exactly<PointerForm>(c)) {
         out.kind = TypeSpecKind::Pointer;
@@ -157,8 +157,8 @@ bool AstBuilder::sharedTypeForm(Context* c, TypeSpec& out, Element&& element) {
         out.elem = element(r);
     } else if (auto* s = exactly<StringForm>(c)) {
         out.kind = TypeSpecKind::String;
-        out.wide = s->WSTRING() != nullptr;
-        if (s->expression()) out.length = expr(s->expression());
+        out.wide = s->kind != nullptr && s->kind->getType() == L::WSTRING;
+        if (s->length) out.length = expr(s->length);
     } else {
         return false;
     }
@@ -169,11 +169,11 @@ std::vector<Range> AstBuilder::arrayRanges(const std::vector<P::ArrayRangeContex
     std::vector<Range> out;
     for (auto* r : ranges) {
         Range range;
-        if (r->STAR()) {
+        if (r->star) {
             range.star = true;
         } else {
-            range.lo = r->expression(0) ? expr(r->expression(0)) : placeholder(loc(r));
-            range.hi = r->expression(1) ? expr(r->expression(1)) : placeholder(loc(r));
+            range.lo = r->lo ? expr(r->lo) : placeholder(loc(r));
+            range.hi = r->hi ? expr(r->hi) : placeholder(loc(r));
         }
         out.push_back(std::move(range));
     }
@@ -187,10 +187,10 @@ TypeSpecPtr AstBuilder::returnType(P::ReturnTypeContext* c) {
     if (c == nullptr) return out;
     if (auto* n = exactly<P::NamedReturnTypeContext>(c)) {
         out->kind = TypeSpecKind::Named;
-        out->name = text(n->qualifiedName());
+        out->name = text(n->name);
     } else {
         sharedTypeForm<P::ArrayReturnTypeContext, P::PointerReturnTypeContext, P::ReferenceReturnTypeContext,
-                       P::StringReturnTypeContext>(c, *out, [&](auto* form) { return returnType(form->returnType()); });
+                       P::StringReturnTypeContext>(c, *out, [&](auto* form) { return returnType(form->element); });
     }
     return out;
 }
@@ -204,33 +204,33 @@ InitPtr AstBuilder::initializer(P::InitializerContext* c) {
     }
     if (auto* a = exactly<P::ArrayInitContext>(c)) {
         out->kind = InitKind::Array;
-        for (auto* item : a->arrayInitItem()) {
+        for (auto* item : a->items) {
             ArrayInitItem built;
-            if (item->LPAREN() && item->INTEGER()) {  // count(value)
+            if (item->count != nullptr) {  // count(value)
                 auto repeat = std::make_unique<Expr>();
                 repeat->kind = ExprKind::Literal;
                 repeat->lit = LitKind::Integer;
-                repeat->loc = loc(item->INTEGER()->getSymbol());
-                repeat->text = item->INTEGER()->getText();
+                repeat->loc = loc(item->count);
+                repeat->text = item->count->getText();
                 built.repeat = std::move(repeat);
-                if (item->initializer()) built.value = initializer(item->initializer());
+                if (item->value) built.value = initializer(item->value);
             } else {
-                built.value = initializer(item->initializer());
+                built.value = initializer(item->value);
             }
             out->items.push_back(std::move(built));
         }
     } else if (auto* s = exactly<P::StructInitContext>(c)) {
         out->kind = InitKind::Struct;
-        for (auto* item : s->structInitItem()) {
+        for (auto* item : s->fields) {
             StructInitItem built;
             built.loc = loc(item);
-            built.name = text(item->identifier());
-            built.value = initializer(item->initializer());
+            built.name = text(item->name);
+            built.value = initializer(item->value);
             out->fields.push_back(std::move(built));
         }
     } else if (auto* e = exactly<P::ExprInitContext>(c)) {
         out->kind = InitKind::Expr;
-        out->expr = expr(e->expression());
+        out->expr = expr(e->value);
     } else {
         out->expr = placeholder(out->loc);
     }

@@ -64,6 +64,9 @@ public:
           log_(log),
           fileIndex_(fileIndex) {
         parser_.removeErrorListeners();
+        // The AST builder reads the contexts' labels only (decision 0159):
+        // no terminal node per token, no child lists.
+        parser_.setBuildParseTree(false);
     }
 
     CompilationUnit run() {
@@ -243,6 +246,7 @@ private:
         }
         tokens_.seek(0);
         parser_.reset();
+        parser_.setBuildParseTree(false);
         simulator->setPredictionMode(antlr4::atn::PredictionMode::LL);
         parser_.setErrorHandler(std::make_shared<FriendlyErrorStrategy>(&reporter_));
         parser_.addErrorListener(&reporter_);
