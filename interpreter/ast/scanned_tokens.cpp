@@ -19,10 +19,27 @@ size_t Utf8SourceStream::LA(ssize_t i) {
     return static_cast<unsigned char>(text_[static_cast<size_t>(at)]);
 }
 
-ScannedTokenSource::ScannedTokenSource(std::string_view text, const std::vector<ScannedToken>& scanned)
-    : stream_(text), scanned_(scanned) {}
+std::string ScannedTokenView::getText() const {
+    const std::string_view text = source_->text();
+    if (token_->type == antlr4::Token::EOF || token_->start >= text.size()) return "<EOF>";  // as CommonToken
+    if (token_->stop < token_->start) return std::string();
+    return std::string(text.substr(token_->start, std::min<size_t>(token_->stop, text.size() - 1) + 1 - token_->start));
+}
 
-std::unique_ptr<antlr4::CommonToken> ScannedTokenSource::next(size_t tokenIndex) {
+antlr4::TokenSource* ScannedTokenView::getTokenSource() const { return source_; }
+
+antlr4::CharStream* ScannedTokenView::getInputStream() const { return source_->getInputStream(); }
+
+std::string ScannedTokenView::toString() const {
+    return "[@" + std::to_string(index_) + "," + std::to_string(getStartIndex()) + ":" +
+           std::to_string(static_cast<ssize_t>(getStopIndex())) + "='" + getText() + "',<" + std::to_string(getType()) +
+           ">," + std::to_string(getLine()) + ":" + std::to_string(getCharPositionInLine()) + "]";
+}
+
+ScannedTokenSource::ScannedTokenSource(std::string_view text, const std::vector<ScannedToken>& scanned)
+    : text_(text), stream_(text), scanned_(scanned) {}
+
+std::unique_ptr<antlr4::Token> ScannedTokenSource::nextToken() {
     // Past the end the EOF token again, as a lexer would.
     const ScannedToken& t = scanned_[std::min(next_, scanned_.size() - 1)];
     if (next_ < scanned_.size()) ++next_;
@@ -30,23 +47,7 @@ std::unique_ptr<antlr4::CommonToken> ScannedTokenSource::next(size_t tokenIndex)
     auto token = std::make_unique<antlr4::CommonToken>(std::make_pair(this, &stream_), t.type, t.channel, t.start, stop);
     token->setLine(t.line);
     token->setCharPositionInLine(t.column);
-    token->setTokenIndex(tokenIndex);
     return token;
-}
-
-size_t ScannedTokenStream::fetch(size_t n) {
-    if (_fetchedEOF) return 0;
-    if (_tokens.empty()) _tokens.reserve(source_->count());
-    size_t i = 0;
-    while (i < n) {
-        _tokens.push_back(source_->next(_tokens.size()));
-        ++i;
-        if (_tokens.back()->getType() == antlr4::Token::EOF) {
-            _fetchedEOF = true;
-            break;
-        }
-    }
-    return i;
 }
 
 size_t ScannedTokenSource::getLine() const {
@@ -55,6 +56,32 @@ size_t ScannedTokenSource::getLine() const {
 
 size_t ScannedTokenSource::getCharPositionInLine() {
     return next_ < scanned_.size() ? scanned_[next_].column : scanned_.back().column;
+}
+
+ScannedTokenStream::ScannedTokenStream(ScannedTokenSource* source) : antlr4::CommonTokenStream(source) {
+    const std::vector<ScannedToken>& scanned = source->scanned();
+    views_.reserve(scanned.size());  // never reallocated: _tokens points into it
+    for (size_t i = 0; i < scanned.size(); ++i) views_.emplace_back(scanned[i], i, source);
+}
+
+ScannedTokenStream::~ScannedTokenStream() {
+    for (auto& token : _tokens) (void)token.release();  // owned by views_
+}
+
+size_t ScannedTokenStream::fetch(size_t n) {
+    if (_fetchedEOF) return 0;
+    if (_tokens.empty()) _tokens.reserve(views_.size());
+    size_t i = 0;
+    while (i < n && _tokens.size() < views_.size()) {
+        ScannedTokenView& view = views_[_tokens.size()];
+        _tokens.emplace_back(&view);
+        ++i;
+        if (view.getType() == antlr4::Token::EOF) {
+            _fetchedEOF = true;
+            break;
+        }
+    }
+    return i;
 }
 
 }  // namespace strun::ast

@@ -37,14 +37,45 @@ private:
     size_t position_ = 0;
 };
 
+class ScannedTokenSource;
+
+// A scanned token as the parser sees it: a view of the ScannedToken and of
+// the source text. The stream keeps all of them in one array (one
+// allocation per file instead of a CommonToken per token, which was a
+// tenth of the parse with its destruction).
+class ScannedTokenView final : public antlr4::Token {
+public:
+    ScannedTokenView(const ScannedToken& token, size_t index, ScannedTokenSource* source)
+        : token_(&token), index_(index), source_(source) {}
+    std::string getText() const override;
+    size_t getType() const override { return token_->type; }
+    size_t getLine() const override { return token_->line; }
+    size_t getCharPositionInLine() const override { return token_->column; }
+    size_t getChannel() const override { return token_->channel; }
+    size_t getTokenIndex() const override { return index_; }
+    size_t getStartIndex() const override { return token_->start; }
+    // EOF is empty: it stops before it starts, as ANTLR's lexers make it.
+    size_t getStopIndex() const override {
+        return token_->type == antlr4::Token::EOF ? static_cast<size_t>(token_->start) - 1 : token_->stop;
+    }
+    antlr4::TokenSource* getTokenSource() const override;
+    antlr4::CharStream* getInputStream() const override;
+    std::string toString() const override;
+
+private:
+    const ScannedToken* token_;
+    size_t index_;
+    ScannedTokenSource* source_;
+};
+
 class ScannedTokenSource : public antlr4::TokenSource {
 public:
     // `text` must outlive this source; `scanned` ends with its EOF token.
     ScannedTokenSource(std::string_view text, const std::vector<ScannedToken>& scanned);
-    std::unique_ptr<antlr4::Token> nextToken() override { return next(0); }
-    // The next token as a CommonToken, its index in the stream set.
-    std::unique_ptr<antlr4::CommonToken> next(size_t tokenIndex);
-    size_t count() const { return scanned_.size(); }
+    // For ANTLR's generic use; the parser's stream reads views() instead.
+    std::unique_ptr<antlr4::Token> nextToken() override;
+    const std::vector<ScannedToken>& scanned() const { return scanned_; }
+    std::string_view text() const { return text_; }
     size_t getLine() const override;
     size_t getCharPositionInLine() override;
     antlr4::CharStream* getInputStream() override { return &stream_; }
@@ -54,23 +85,29 @@ public:
     }
 
 private:
+    std::string_view text_;
     Utf8SourceStream stream_;
     const std::vector<ScannedToken>& scanned_;
     size_t next_ = 0;
 };
 
-// The token stream the parser reads: fills itself from a ScannedTokenSource
-// without the per-token virtual call and dynamic cast of the runtime's
-// generic fetch (a twentieth of `strun check` on a large file).
+// The token stream the parser reads: the scanned tokens as views, all
+// fetched at once, without the per-token virtual call and dynamic cast of
+// the runtime's generic fetch. ANTLR's BufferedTokenStream holds tokens by
+// unique_ptr; here they point into views_, and the destructor releases
+// them before the base class would delete them.
 class ScannedTokenStream : public antlr4::CommonTokenStream {
 public:
-    explicit ScannedTokenStream(ScannedTokenSource* source) : antlr4::CommonTokenStream(source), source_(source) {}
+    explicit ScannedTokenStream(ScannedTokenSource* source);
+    ~ScannedTokenStream() override;
+    ScannedTokenStream(const ScannedTokenStream&) = delete;
+    ScannedTokenStream& operator=(const ScannedTokenStream&) = delete;
 
 protected:
     size_t fetch(size_t n) override;
 
 private:
-    ScannedTokenSource* source_;
+    std::vector<ScannedTokenView> views_;
 };
 
 }  // namespace strun::ast
