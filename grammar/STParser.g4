@@ -11,7 +11,11 @@
 // children and find nothing.
 parser grammar STParser;
 
-options { tokenVocab = STLexer; }
+options { tokenVocab = STLexer; contextSuperClass = ArenaRuleContext; }
+
+@parser::header {
+#include "grammar/arena_rule_context.h"
+}
 
 @parser::members {
   // Inside CASE: does a ':' come before anything that ends or starts a

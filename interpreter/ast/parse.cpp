@@ -77,6 +77,7 @@ public:
         if (!reportLexerErrors()) return emptyUnit();
         CompilationUnit unit = emptyUnit();
         runWithLargeStack([&] {
+            strun_grammar::RuleContextArena::Scope arena(contextArena_);  // the contexts of this parse
             try {
                 P::CompilationUnitContext* tree = parse();
                 AstBuilder builder(tokens_, reporter_, fileIndex_);
@@ -259,6 +260,7 @@ private:
     ScanResult scan_;
     ScannedTokenSource source_;
     ScannedTokenStream tokens_;
+    strun_grammar::RuleContextArena contextArena_;  // outlives parser_, which deletes the contexts
     P parser_;
     SyntaxErrorReporter reporter_;
     CompileLog& log_;
