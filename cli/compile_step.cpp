@@ -18,7 +18,7 @@ void compileCommandLine(const CommandLine& line, Compiled& out) {
         out.exitCode = kExitUsage;
         return;
     }
-    out.model = project::compileProject(out.sources, files, log, line.compile);
+    out.model = project::compileProject(out.sources, files, log, line.compile, nullptr, out.keepAst ? &out.ast : nullptr);
     // -Werror / -W CODE=error can turn a compiled project into one that does not compile.
     const bool errors = printDiagnostics(log, out.sources, line.diagnostics, std::cerr, stderrWantsColor(line.diagnostics.color));
     if (errors) out.model.reset();

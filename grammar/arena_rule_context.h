@@ -53,7 +53,7 @@ public:
 private:
     void grow(std::size_t bytes) {
         const std::size_t size = bytes > kBlock / 4 ? bytes : kBlock;
-        blocks_.push_back(std::make_unique<std::byte[]>(size));
+        blocks_.push_back(std::unique_ptr<std::byte[]>(new std::byte[size]));  // not zeroed: the contexts initialise themselves
         next_ = blocks_.back().get();
         end_ = next_ + size;
     }

@@ -28,7 +28,8 @@ std::unique_ptr<ParsedLibrary> parseLibrary(CompileLog& log) {
 }
 
 std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
-                                                   const sema::CompileOptions& options, ParsedLibrary* library) {
+                                                   const sema::CompileOptions& options, ParsedLibrary* library,
+                                                   std::vector<ast::CompilationUnit>* keepUnits) {
     std::vector<ast::CompilationUnit> units;
     std::set<int> libraryFiles;
     // Only the library files the project mentions (decision 0150), also when
@@ -63,6 +64,14 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
             for (size_t k = 0; k < borrowed.size() && k < units.size(); ++k) library->units[borrowed[k]] = std::move(units[k]);
         }
     } giveBack{library, units, borrowed};
+    // Hands the AST to the caller who keeps it, however this function ends.
+    struct Keep {
+        std::vector<ast::CompilationUnit>* out;
+        std::vector<ast::CompilationUnit>& units;
+        ~Keep() {
+            if (out) *out = std::move(units);
+        }
+    } keep{library == nullptr ? keepUnits : nullptr, units};
     for (int f : userFiles) units.push_back(ast::parseFile(sources, f, log));
     // After local syntax errors the recovered tree is still checked, so that
     // the later mistakes of the file are reported too (decision 0161).

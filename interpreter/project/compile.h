@@ -26,8 +26,11 @@ std::unique_ptr<ParsedLibrary> parseLibrary(CompileLog& log);
 
 // Returns null when the project does not compile (errors are in `log`).
 // With `library`, its parsed units are lent to the checker (which does not
-// change them) instead of parsing the standard library again.
+// change them) instead of parsing the standard library again. With
+// `keepUnits` (and no library), the AST ends up there instead of being
+// freed: a process that ends right after compiling need not free it.
 std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
-                                                   const sema::CompileOptions& options = {}, ParsedLibrary* library = nullptr);
+                                                   const sema::CompileOptions& options = {}, ParsedLibrary* library = nullptr,
+                                                   std::vector<ast::CompilationUnit>* keepUnits = nullptr);
 
 }  // namespace strun::project
