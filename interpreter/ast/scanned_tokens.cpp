@@ -62,6 +62,53 @@ ScannedTokenStream::ScannedTokenStream(ScannedTokenSource* source) : antlr4::Com
     const std::vector<ScannedToken>& scanned = source->scanned();
     views_.reserve(scanned.size());  // never reallocated: _tokens points into it
     for (size_t i = 0; i < scanned.size(); ++i) views_.emplace_back(scanned[i], i, source);
+    fill();
+    const size_t n = views_.size();
+    auto stopsHere = [&](size_t i) {
+        return views_[i].getChannel() == antlr4::Token::DEFAULT_CHANNEL || views_[i].getType() == antlr4::Token::EOF;
+    };
+    nextOnChannel_.resize(n);
+    previousOnChannel_.resize(n);
+    for (size_t i = n; i-- > 0;)  // the last token is EOF, where the search stops
+        nextOnChannel_[i] = static_cast<uint32_t>(stopsHere(i) || i + 1 == n ? i : nextOnChannel_[i + 1]);
+    for (size_t i = 0; i < n; ++i)
+        previousOnChannel_[i] = stopsHere(i) ? static_cast<int32_t>(i) : i == 0 ? -1 : previousOnChannel_[i - 1];
+}
+
+ssize_t ScannedTokenStream::lookahead(ssize_t k) const {
+    const size_t n = views_.size();
+    if (k == 0 || n == 0) return -1;
+    size_t i = _p;
+    if (k > 0) {
+        for (ssize_t step = 1; step < k; ++step)
+            if (i + 1 < n) i = nextOnChannel_[i + 1];
+        return static_cast<ssize_t>(i);
+    }
+    const size_t back = static_cast<size_t>(-k);
+    if (back > _p) return -1;
+    // As CommonTokenStream::LB: a search from before position 0 (its index
+    // wraps around as a size_t) lands on the last token, EOF.
+    ssize_t at = static_cast<ssize_t>(i);
+    for (size_t step = 0; step < back; ++step) at = at <= 0 ? static_cast<ssize_t>(n - 1) : previousOnChannel_[at - 1];
+    return at;
+}
+
+antlr4::Token* ScannedTokenStream::LT(ssize_t k) {
+    const ssize_t i = lookahead(k);
+    return i < 0 ? nullptr : &views_[static_cast<size_t>(i)];
+}
+
+antlr4::Token* ScannedTokenStream::LB(size_t k) { return LT(-static_cast<ssize_t>(k)); }
+
+size_t ScannedTokenStream::LA(ssize_t k) {
+    const ssize_t i = lookahead(k);
+    if (i < 0) throw antlr4::IllegalStateException("no token at lookahead 0");  // the base dereferences null here
+    return views_[static_cast<size_t>(i)].getType();
+}
+
+void ScannedTokenStream::consume() {
+    if (_p + 1 >= views_.size() && LA(1) == antlr4::Token::EOF) throw antlr4::IllegalStateException("cannot consume EOF");
+    if (_p + 1 < views_.size()) _p = nextOnChannel_[_p + 1];
 }
 
 ScannedTokenStream::~ScannedTokenStream() {

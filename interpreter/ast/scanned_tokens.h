@@ -92,10 +92,16 @@ private:
 };
 
 // The token stream the parser reads: the scanned tokens as views, all
-// fetched at once, without the per-token virtual call and dynamic cast of
-// the runtime's generic fetch. ANTLR's BufferedTokenStream holds tokens by
-// unique_ptr; here they point into views_, and the destructor releases
-// them before the base class would delete them.
+// fetched when it is made, without the per-token virtual call and dynamic
+// cast of the runtime's generic fetch. ANTLR's BufferedTokenStream holds
+// tokens by unique_ptr; here they point into views_, and the destructor
+// releases them before the base class would delete them.
+//
+// Lookahead (LT, LA, LB) and consume() give the results of
+// CommonTokenStream's, edge cases included, from two tables of the next
+// and previous default-channel token of each position instead of a walk
+// over the hidden tokens with a bounds check per step: the parser asks
+// for the next token several times per token (decision 0159).
 class ScannedTokenStream : public antlr4::CommonTokenStream {
 public:
     explicit ScannedTokenStream(ScannedTokenSource* source);
@@ -103,11 +109,21 @@ public:
     ScannedTokenStream(const ScannedTokenStream&) = delete;
     ScannedTokenStream& operator=(const ScannedTokenStream&) = delete;
 
+    antlr4::Token* LT(ssize_t k) override;
+    size_t LA(ssize_t i) override;
+    void consume() override;
+
 protected:
     size_t fetch(size_t n) override;
+    antlr4::Token* LB(size_t k) override;
 
 private:
+    // The position of the token LT(k) returns, or -1 where it returns null.
+    ssize_t lookahead(ssize_t k) const;
+
     std::vector<ScannedTokenView> views_;
+    std::vector<uint32_t> nextOnChannel_;      // BufferedTokenStream::nextTokenOnChannel(i, 0)
+    std::vector<int32_t> previousOnChannel_;   // BufferedTokenStream::previousTokenOnChannel(i, 0), -1 for none
 };
 
 }  // namespace strun::ast
