@@ -135,8 +135,9 @@ private:
     // parser's less helpful one on the same line (one error per line).
     void reportForeignOperators() {
         std::vector<antlr4::Token*> seen;
-        for (antlr4::Token* t : tokens_.getTokens())
-            if (t->getChannel() == antlr4::Token::DEFAULT_CHANNEL || t->getChannel() == L::ERRORS) seen.push_back(t);
+        seen.reserve(tokens_.views().size());
+        for (antlr4::Token& t : tokens_.views())
+            if (t.getChannel() == antlr4::Token::DEFAULT_CHANNEL || t.getChannel() == L::ERRORS) seen.push_back(&t);
         auto is = [](antlr4::Token* t, size_t type, const char* text = nullptr) {
             return t->getType() == type && (text == nullptr || t->getText() == text);
         };
@@ -145,7 +146,7 @@ private:
             antlr4::Token* b = i + 1 < seen.size() ? seen[i + 1] : nullptr;
             const bool pair = b != nullptr && b->getStartIndex() == a->getStopIndex() + 1;
             antlr4::Token* before = i > 0 ? seen[i - 1] : nullptr;
-            const std::string target = before != nullptr && P::isNameToken(before->getType()) ? before->getText() : "x";
+            auto target = [&] { return before != nullptr && P::isNameToken(before->getType()) ? before->getText() : "x"; };
             std::string op, help;
             if (pair && is(a, L::EQ) && is(b, L::EQ)) {
                 op = "==", help = "compare with a single '=': IF a = b THEN";
@@ -159,9 +160,9 @@ private:
                 op = "||", help = "write OR: IF a OR b THEN";
             } else if (pair && (is(a, L::PLUS) || is(a, L::MINUS)) && b->getType() == a->getType()) {
                 const std::string sign = a->getText();
-                op = sign + sign, help = "write '" + target + " := " + target + " " + sign + " 1;'";
+                op = sign + sign, help = "write '" + target() + " := " + target() + " " + sign + " 1;'";
             } else if (pair && (is(a, L::PLUS) || is(a, L::MINUS) || is(a, L::STAR) || is(a, L::SLASH)) && is(b, L::EQ)) {
-                op = a->getText() + "=", help = "write '" + target + " := " + target + " " + a->getText() + " ...;'";
+                op = a->getText() + "=", help = "write '" + target() + " := " + target() + " " + a->getText() + " ...;'";
             } else {
                 continue;
             }
@@ -189,7 +190,8 @@ private:
     // {warning 'text'} and {error 'text'} (CODESYS message pragmas): the text
     // as a warning (W0010) or an error (E0010) at the pragma.
     void reportMessagePragmas() {
-        for (antlr4::Token* t : tokens_.getTokens()) {
+        for (antlr4::Token& token : tokens_.views()) {
+            antlr4::Token* t = &token;
             if (t->getChannel() != L::PRAGMAS) continue;
             const std::string text = t->getText();
             if (text.size() > 4096 || !mayBeMessagePragma(text)) continue;
@@ -210,7 +212,9 @@ private:
     // not go ahead.
     bool reportLexerErrors() {
         std::vector<antlr4::Token*> onChannel;
-        for (antlr4::Token* token : tokens_.getTokens()) {
+        onChannel.reserve(tokens_.views().size());
+        for (antlr4::Token& each : tokens_.views()) {
+            antlr4::Token* token = &each;
             if (token->getChannel() == L::ERRORS) {
                 reporter_.report(token->getLine(), token->getCharPositionInLine(), lexerErrorMessage(*token),
                                  token->getType() != L::ERROR_CHAR);

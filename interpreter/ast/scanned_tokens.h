@@ -109,6 +109,9 @@ public:
     ScannedTokenStream(const ScannedTokenStream&) = delete;
     ScannedTokenStream& operator=(const ScannedTokenStream&) = delete;
 
+    // Every token, hidden ones included, in order (what getTokens() copies).
+    std::vector<ScannedTokenView>& views() { return views_; }
+
     antlr4::Token* LT(ssize_t k) override;
     size_t LA(ssize_t i) override;
     void consume() override;
