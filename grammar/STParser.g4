@@ -63,7 +63,7 @@ options { tokenVocab = STLexer; contextSuperClass = ArenaRuleContext; }
 
   static bool isNameToken(size_t type) {
     return type == IDENTIFIER || type == GET || type == SET || type == TASK || type == ON ||
-           type == WITH || type == READ_ONLY || type == READ_WRITE || type == ACTION;
+           type == WITH || type == READ_ONLY || type == READ_WRITE;
   }
 }
 
@@ -95,11 +95,11 @@ usingDirective
 // ================================================================= POUs
 
 pouDecl
-    : PROGRAM name=identifier elements+=pouElement* body=stmtList members+=memberDecl* end=END_PROGRAM   # programDecl
+    : PROGRAM name=identifier elements+=pouElement* (body=pouBody members+=memberDecl*)? end=END_PROGRAM   # programDecl
     | FUNCTION name=identifier (COLON result=returnType)? vars+=varBlock* body=stmtList end=END_FUNCTION # functionDecl
     | FUNCTION_BLOCK modifiers+=modifier* name=identifier
         (EXTENDS base=qualifiedName)? (IMPLEMENTS interfaces+=qualifiedName (COMMA interfaces+=qualifiedName)*)?
-        elements+=pouElement* body=stmtList members+=memberDecl* end=END_FUNCTION_BLOCK                # functionBlockDecl
+        elements+=pouElement* (body=pouBody members+=memberDecl*)? end=END_FUNCTION_BLOCK              # functionBlockDecl
     | INTERFACE name=identifier (EXTENDS bases+=qualifiedName (COMMA bases+=qualifiedName)*)?
         members+=memberDecl* end=END_INTERFACE                                                         # interfaceDecl
     ;
@@ -107,6 +107,14 @@ pouDecl
 pouElement
     : vars=varBlock
     | member=memberDecl
+    ;
+
+// The statements of a PROGRAM or FUNCTION_BLOCK, with methods, properties
+// and actions before or after them. Not empty: with an empty body allowed
+// between the members before and after it, which of the two lists a METHOD
+// belongs to needed adaptive prediction after every member.
+pouBody
+    : statements+=statement+
     ;
 
 memberDecl
@@ -234,12 +242,12 @@ accessDecl
     ;
 
 varName
-    : identifier (DOT member=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION
+    : identifier (DOT member=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE
                              | INTEGER | PARTIAL_ACCESS) | LBRACK expressionList RBRACK)*
     ;
 
 accessPath
-    : identifier (DOT member=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION
+    : identifier (DOT member=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE
                              | INTEGER | PARTIAL_ACCESS) | LBRACK expressionList RBRACK)*
     ;
 
@@ -348,7 +356,7 @@ unaryExpr
     : op=(MINUS | PLUS | NOT) operand=unaryExpr                           # unaryExpression
     | value=(INTEGER | BASED_INTEGER | REAL_LITERAL | TRUE | FALSE | STRING_LITERAL | WSTRING_LITERAL
             | DURATION_LITERAL | DATE_LITERAL | TOD_LITERAL | DT_LITERAL | TYPED_LITERAL)   # literalExpression
-    | ( name=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION)
+    | ( name=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE)
       | keywordFunction=(MOD | AND | OR | XOR)   // MOD(a, b), AND(a, b, c): the standard functions named like operators
       | special=(THIS | SUPER | DIRECT_ADDRESS)
       | LPAREN inner=expression RPAREN
@@ -356,7 +364,7 @@ unaryExpr
     ;
 
 postfixOp
-    : DOT member=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION
+    : DOT member=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE
                  | INTEGER | PARTIAL_ACCESS)   # memberOp   // a name (the tokens of `identifier`), a bit number, %X3
     | LBRACK indexes=expressionList RBRACK   # indexOp
     | CARET                                  # derefOp
@@ -383,13 +391,15 @@ arg
 // A dotted name: its parts are tokens (those of `identifier`), not rules,
 // as every type name of a declaration is one (decision 0158).
 qualifiedName
-    : (IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION)
-      (DOT (IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION))*
+    : (IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE)
+      (DOT (IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE))*
     ;
 
 // Soft keywords: words with a meaning in one place that stay usable as names.
+// (`action` is one too, but resolved before parsing: see
+// interpreter/ast/action_keyword.h.)
 identifier
-    : IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE | ACTION
+    : IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE
     ;
 
 // Task names and task parameter names: any word, keywords included

@@ -157,7 +157,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
         out->name = text(prog->name);
         out->nameLoc = loc(prog->name);
         addElements(prog->elements);
-        stmtList(prog->body, out->body);
+        if (prog->body) statements(prog->body->statements, out->body);
         for (auto* m : prog->members) member(m, *out, false);
         out->endLoc = loc(prog->end ? prog->end : c->getStop());
     } else if (auto* fn = exactly<P::FunctionDeclContext>(c)) {
@@ -176,7 +176,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
         if (fb->base) out->extends = text(fb->base);
         for (auto* i : fb->interfaces) out->implements.push_back(text(i));
         addElements(fb->elements);
-        stmtList(fb->body, out->body);
+        if (fb->body) statements(fb->body->statements, out->body);
         for (auto* m : fb->members) member(m, *out, false);
         out->endLoc = loc(fb->end ? fb->end : c->getStop());
     } else if (auto* itf = exactly<P::InterfaceDeclContext>(c)) {

@@ -79,6 +79,7 @@ private:
 
     // ---- statements (ast_builder_stmt.cpp)
     void stmtList(P::StmtListContext* c, StmtList& out);
+    void statements(const std::vector<P::StatementContext*>& list, StmtList& out);
     StmtPtr stmt(P::StatementContext* c);
     StmtPtr exprStmt(P::ExprStmtContext* c);
 

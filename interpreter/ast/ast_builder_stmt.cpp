@@ -29,8 +29,11 @@ StmtPtr makeStmt(StmtKind kind, const Loc& at) {
 }  // namespace
 
 void AstBuilder::stmtList(P::StmtListContext* c, StmtList& out) {
-    if (c == nullptr) return;
-    for (auto* s : c->statements)
+    if (c != nullptr) statements(c->statements, out);
+}
+
+void AstBuilder::statements(const std::vector<P::StatementContext*>& list, StmtList& out) {
+    for (auto* s : list)
         if (auto built = stmt(s)) out.push_back(std::move(built));
 }
 

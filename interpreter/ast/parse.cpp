@@ -20,6 +20,7 @@
 
 #include "grammar/STLexer.h"
 #include "grammar/STParser.h"
+#include "interpreter/ast/action_keyword.h"
 #include "interpreter/ast/ast_builder.h"
 #include "interpreter/ast/large_stack.h"
 #include "interpreter/ast/nesting_guard.h"
@@ -52,11 +53,17 @@ std::string lexerErrorMessage(const antlr4::Token& token) {
     return "unexpected character '" + text + "'";
 }
 
+ScanResult scanWithActionKeyword(std::string_view text) {
+    ScanResult scan = scanSource(text, kMaxTokensPerFile);
+    resolveActionKeyword(scan.tokens);
+    return scan;
+}
+
 class FileParser {
 public:
     FileParser(const SourceSet& sources, int fileIndex, CompileLog& log)
         : text_(sanitizeUtf8(sources.file(fileIndex).text, &firstInvalidByte_, &invalidBytes_)),
-          scan_(scanSource(text_, kMaxTokensPerFile)),
+          scan_(scanWithActionKeyword(text_)),
           source_(text_, scan_.tokens),
           tokens_(&source_),
           parser_(&tokens_),

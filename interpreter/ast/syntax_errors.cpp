@@ -101,10 +101,8 @@ std::string FriendlyErrorStrategy::message(antlr4::Parser* parser, antlr4::Token
     const auto& vocabulary = parser->getVocabulary();
     std::vector<std::string> names;
     std::vector<std::string> structural;
-    // ACTION is also a name: it reads as 'ACTION' only where no identifier could stand.
-    const bool nameExpected = expected.contains(static_cast<size_t>(L::IDENTIFIER));
     for (size_t type : expected.toList()) {
-        std::string name = type == L::ACTION && !nameExpected ? "'ACTION'" : describeTokenType(type, vocabulary);
+        std::string name = describeTokenType(type, vocabulary);
         if (std::find(names.begin(), names.end(), name) != names.end()) continue;
         names.push_back(name);
         if (type != antlr4::Token::EOF && isStructuralKeyword(vocabulary.getSymbolicName(type)))
