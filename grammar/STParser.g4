@@ -18,27 +18,6 @@ options { tokenVocab = STLexer; contextSuperClass = ArenaRuleContext; }
 }
 
 @parser::members {
-  // Inside CASE: does a ':' come before anything that ends or starts a
-  // statement? Then the tokens up to it are the labels of the next branch
-  // (`3:`, `1, 2:`, `5..9:`, `Color.Red:`), and a `name:` there is such a
-  // label, not a jump label inside the current branch. A statement has no
-  // ':' of its own before its ';' except as a jump label.
-  bool isCaseLabelAhead() {
-    for (ssize_t i = 1; i < 100000; ++i) {
-      switch (_input->LA(i)) {
-        case COLON: return true;
-        case SEMI: case ASSIGN: case TRY_ASSIGN: case ARROW: case antlr4::Token::EOF:
-        case THEN: case DO: case OF: case ELSE: case ELSIF: case UNTIL:
-        case IF: case CASE: case FOR: case WHILE: case REPEAT: case EXIT: case CONTINUE: case RETURN: case JMP:
-        case END_IF: case END_CASE: case END_FOR: case END_WHILE: case END_REPEAT:
-        case END_PROGRAM: case END_FUNCTION: case END_FUNCTION_BLOCK: case END_METHOD: case END_ACTION:
-        case END_GET: case END_SET: case METHOD: case PROPERTY:
-          return false;
-        default: break;
-      }
-    }
-    return false;
-  }
   // Parser::exitRule of ANTLR 4.9, without its dynamic_cast of the parent
   // (a generated parser's contexts are all ParserRuleContexts): a rule's
   // generated code calls exitRule() unqualified, so this one hides the
@@ -294,17 +273,20 @@ stmtList
     : statements+=statement*
     ;
 
-// `name:` (a jump label) is an expression statement ending in ':' for the
-// parser and a label for the AST builder, which checks that it is a name:
-// as two alternatives starting with the same name, the choice between them
-// needed adaptive prediction on every statement. The ';' after END_IF and
-// the like is an empty statement for the same reason (the builder drops it).
+// `name:` (a jump label) and the labels of a CASE branch (`3:`, `1, 2:`,
+// `5..9:`, `Color.Red:`) are an expression statement ending in ':' for the
+// parser; the AST builder makes a jump label of it (a name) or, directly
+// in a CASE, the start of the next branch. As alternatives of their own,
+// each starting with an expression like the statement after it, the
+// choice needed adaptive prediction on every statement (and a look ahead
+// to the ':' in CASE). The ';' after END_IF and the like is an empty
+// statement for the same reason (the builder drops it).
 statement
     : parts+=expression (((assign=(ASSIGN | TRY_ASSIGN) parts+=expression | setOperator=identifier eq=EQ parts+=expression)? SEMI)
-                         | colon=COLON)                                          # exprStmt
+                         | (dots=DOTDOT hi=expression)? (COMMA moreLabels+=caseLabel)* colon=COLON)   # exprStmt
     | IF conds+=expression THEN blocks+=stmtList (ELSIF conds+=expression THEN blocks+=stmtList)*
         (ELSE elseBlock=stmtList)? END_IF                                        # ifStmt
-    | CASE selector=expression OF branches+=caseBranch* (ELSE elseBlock=stmtList)? END_CASE   # caseStmt
+    | CASE selector=expression OF body=stmtList (ELSE elseBlock=stmtList)? END_CASE   # caseStmt
     | FOR var=identifier ASSIGN from=expression TO to=expression (by=BY step=expression)? DO body=stmtList END_FOR  # forStmt
     | WHILE cond=expression DO body=stmtList END_WHILE                           # whileStmt
     | REPEAT body=stmtList UNTIL cond=expression END_REPEAT                      # repeatStmt
@@ -315,20 +297,7 @@ statement
     | SEMI                                                                       # emptyStmt
     ;
 
-// Inside CASE, `IDENT :` starts a new case label, so a branch body cannot
-// contain a jump label at its top level.
-caseBranch
-    : labels+=caseLabel (COMMA labels+=caseLabel)* COLON body=caseBody
-    ;
-
-caseBody
-    : statements+=caseStatement*
-    ;
-
-caseStatement
-    : {!isCaseLabelAhead()}? stmt=statement
-    ;
-
+// A CASE label after the first of a list (`1, 5..9, 12:`).
 caseLabel
     : lo=expression (dots=DOTDOT hi=expression)?
     ;

@@ -82,6 +82,7 @@ private:
     void statements(const std::vector<P::StatementContext*>& list, StmtList& out);
     StmtPtr stmt(P::StatementContext* c);
     StmtPtr exprStmt(P::ExprStmtContext* c);
+    void caseBranches(const std::vector<P::StatementContext*>& items, Stmt& out);
 
     // ---- expressions (ast_builder_expr.cpp)
     ExprPtr expr(P::ExpressionContext* c);

@@ -59,20 +59,7 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
     if (auto* cs = exactly<P::CaseStmtContext>(c)) {
         auto s = makeStmt(StmtKind::Case, at);
         s->expr = cs->selector ? expr(cs->selector) : placeholder(at);
-        for (auto* b : cs->branches) {
-            CaseBranch branch;
-            branch.loc = loc(b);
-            for (auto* label : b->labels) {
-                CaseLabel built;
-                built.lo = label->lo ? expr(label->lo) : placeholder(loc(label));
-                if (label->dots) built.hi = label->hi ? expr(label->hi) : placeholder(loc(label));
-                branch.labels.push_back(std::move(built));
-            }
-            if (b->body)
-                for (auto* cst : b->body->statements)
-                    if (auto built = stmt(cst->stmt)) branch.body.push_back(std::move(built));
-            s->cases.push_back(std::move(branch));
-        }
+        if (cs->body) caseBranches(cs->body->statements, *s);
         if (cs->elseBlock != nullptr) {
             s->elseBlock.emplace();
             stmtList(cs->elseBlock, *s->elseBlock);
@@ -122,10 +109,43 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
     return nullptr;  // a statement the parser could not make sense of (already reported)
 }
 
+// The statements of a CASE: a label statement (`1, 5..9:`) starts the
+// next branch, the others belong to the branch before them.
+void AstBuilder::caseBranches(const std::vector<P::StatementContext*>& items, Stmt& out) {
+    for (auto* item : items) {
+        auto* labels = exactly<P::ExprStmtContext>(item);
+        if (labels != nullptr && labels->colon != nullptr) {
+            CaseBranch branch;
+            branch.loc = loc(labels);
+            CaseLabel first;
+            first.lo = labels->parts.empty() ? placeholder(branch.loc) : expr(labels->parts[0]);
+            if (labels->dots) first.hi = labels->hi ? expr(labels->hi) : placeholder(branch.loc);
+            branch.labels.push_back(std::move(first));
+            for (auto* label : labels->moreLabels) {
+                CaseLabel built;
+                built.lo = label->lo ? expr(label->lo) : placeholder(loc(label));
+                if (label->dots) built.hi = label->hi ? expr(label->hi) : placeholder(loc(label));
+                branch.labels.push_back(std::move(built));
+            }
+            out.cases.push_back(std::move(branch));
+            continue;
+        }
+        if (out.cases.empty()) {
+            error(loc(item), "expected a CASE label ('value:') before the first statement of a CASE");
+            continue;
+        }
+        if (auto built = stmt(item)) out.cases.back().body.push_back(std::move(built));
+    }
+}
+
 StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
     const Loc at = loc(c);
     const auto& operands = c->parts;
     if (operands.empty()) return nullptr;
+    if (c->colon != nullptr && (c->dots != nullptr || !c->moreLabels.empty())) {
+        error(at, fmt::format("'{}' are CASE labels outside a CASE: a jump label is a name followed by ':'", sourceText(c)));
+        return nullptr;
+    }
     if (c->colon != nullptr) {  // a jump label
         const antlr4::Token* name = bareName(operands[0]);
         if (name == nullptr) {

@@ -41,7 +41,7 @@ std::string phraseForRule(size_t ruleIndex) {
         case P::RuleExpression: case P::RuleUnaryExpr:
         case P::RuleCaseLabel: case P::RuleExpressionList: case P::RuleArrayRange:
             return "an expression";
-        case P::RuleStatement: case P::RuleStmtList: case P::RuleCaseBody: case P::RuleCaseStatement:
+        case P::RuleStatement: case P::RuleStmtList:
             return "a statement";
         case P::RuleTypeSpec: case P::RuleTypeArguments: case P::RuleReturnType:
             return "a type";
@@ -270,6 +270,16 @@ void FriendlyErrorStrategy::reportAt(antlr4::Parser* parser, antlr4::Token* foun
     }
     if (found != nullptr && orphanCloser_ != 0 && found->getType() == orphanCloser_) {
         orphanCloser_ = 0;
+        return;
+    }
+    // `1 y := 2` (a CASE label without its ':'): the word after the
+    // expression was taken for the S of `x S= y`, and '=' is missing after
+    // it. The mistake is the word itself.
+    if (auto* statement = dynamic_cast<P::ExprStmtContext*>(parser->getContext());
+        statement != nullptr && statement->setOperator != nullptr && statement->eq == nullptr &&
+        expected.contains(static_cast<size_t>(L::EQ)) && statement->setOperator->getStart() != nullptr) {
+        antlr4::Token* word = statement->setOperator->getStart();
+        parser->notifyErrorListeners(word, "unexpected " + describeFoundToken(word) + ", expected ':=', ';' or ':'", nullptr);
         return;
     }
     parser->notifyErrorListeners(found, message(parser, found, expected), nullptr);

@@ -80,6 +80,24 @@ TEST_CASE("statements: labels, CASE labels and the ';' after END_xxx", "[parser]
     CHECK(stmts("f(1):") == "ERRORS: 2:1: syntax error: 'f(1)' cannot be a label: a jump label is a name followed by ':'\n");
 }
 
+// Since decision 0159 the labels of a CASE branch are a statement ending in
+// ':' too (with `..` and `,`), and the builder splits the CASE's statement
+// list into branches at them.
+TEST_CASE("statements: CASE labels are statements the builder groups", "[parser][stmt]") {
+    CHECK(stmts("CASE x OF 1..2, 5: a := 1; b := 2; 3: ; 4: END_CASE") ==
+          "{(case x [1..2,5: {(:= a 1) (:= b 2)}] [3: {;}] [4: {}])}");
+    CHECK(stmts("CASE x OF lbl: y := 1; END_CASE") == "{(case x [lbl: {(:= y 1)}])}");  // a label of the CASE, not a jump label
+    CHECK(stmts("CASE x OF y := 1; 1: y := 2; END_CASE") ==
+          "ERRORS: 2:11: syntax error: expected a CASE label ('value:') before the first statement of a CASE\n");
+    CHECK(stmts("1, 2: y := 1;") ==
+          "ERRORS: 2:1: syntax error: '1, 2:' are CASE labels outside a CASE: a jump label is a name followed by ':'\n");
+    CHECK(stmts("5..9: y := 1;") ==
+          "ERRORS: 2:1: syntax error: '5..9:' are CASE labels outside a CASE: a jump label is a name followed by ':'\n");
+    // The word after a label without its ':' reads as the S of `x S= y`: the message names the word.
+    CHECK(stmts("CASE x OF 1 y := 2; END_CASE") == "ERRORS: 2:13: syntax error: unexpected 'y', expected ':=', ';' or ':'\n");
+    CHECK(stmts("x y;") == "ERRORS: 2:3: syntax error: unexpected 'y', expected ':=', ';' or ':'\n");
+}
+
 TEST_CASE("statements: locations", "[parser][stmt]") {
     auto p = parse("PROGRAM P\nIF a THEN\n    x := 1;\nELSIF b THEN\n  y := 2;\nEND_IF\nEND_PROGRAM");
     REQUIRE(p->errors() == "");
