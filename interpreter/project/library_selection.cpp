@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <string>
 #include <cstdint>
 #include <unordered_map>
@@ -85,7 +86,19 @@ std::vector<Declared> declaredWithKeyword(std::string_view text) {
 struct LibraryIndex {
     std::vector<std::vector<Declared>> declares;                         // parallel to embeddedSources()
     std::unordered_map<std::string, std::vector<size_t>> filesDeclaring;  // upper-case name -> files
-    size_t shortestName = SIZE_MAX, longestName = 0;
+    // Bit L of [c]: some name of length L (< 64) starts (ends) with the
+    // letter c in either case. Most words of a program fail this test, and
+    // then need no upper-casing and hashing.
+    uint64_t lengthsByFirst[256] = {};
+    uint64_t lengthsByLast[256] = {};
+
+    bool mayBeName(std::string_view w) const {
+        if (w.size() >= 64) return true;  // not in the masks: looked up
+        if (w.empty()) return false;
+        const uint64_t bit = uint64_t{1} << w.size();
+        return (lengthsByFirst[static_cast<unsigned char>(w.front())] & bit) != 0 &&
+               (lengthsByLast[static_cast<unsigned char>(w.back())] & bit) != 0;
+    }
 };
 
 const LibraryIndex& libraryIndex() {
@@ -97,8 +110,14 @@ const LibraryIndex& libraryIndex() {
             for (const Declared& d : built.declares.back()) {
                 std::vector<size_t>& files = built.filesDeclaring[upper(d.name)];
                 if (files.empty() || files.back() != i) files.push_back(i);
-                built.shortestName = std::min(built.shortestName, d.name.size());
-                built.longestName = std::max(built.longestName, d.name.size());
+                if (d.name.empty() || d.name.size() >= 64) continue;  // such words are always looked up
+                const uint64_t bit = uint64_t{1} << d.name.size();
+                for (int c : {std::toupper(static_cast<unsigned char>(d.name.front())),
+                              std::tolower(static_cast<unsigned char>(d.name.front()))})
+                    built.lengthsByFirst[static_cast<unsigned char>(c)] |= bit;
+                for (int c : {std::toupper(static_cast<unsigned char>(d.name.back())),
+                              std::tolower(static_cast<unsigned char>(d.name.back()))})
+                    built.lengthsByLast[static_cast<unsigned char>(c)] |= bit;
             }
         }
         return built;
@@ -116,7 +135,7 @@ std::vector<const stdlib::EmbeddedSource*> embeddedSourcesFor(const std::vector<
     std::string folded;
     auto scan = [&](std::string_view text) {
         forEachWord(text, [&](std::string_view w) {
-            if (w.size() < index.shortestName || w.size() > index.longestName) return;
+            if (!index.mayBeName(w)) return;
             const auto it = index.filesDeclaring.find(upperInto(w, folded));
             if (it == index.filesDeclaring.end()) return;
             for (size_t file : it->second)
