@@ -16,4 +16,10 @@ inline constexpr std::size_t kParserStackBytes = std::size_t{256} << 20;
 // calling thread if such a thread cannot be created. `work` must not throw.
 void runWithLargeStack(const std::function<void()>& work, std::size_t stackBytes = kParserStackBytes);
 
+// Runs `a` and `b` at the same time, each on a thread with a large stack,
+// and returns when both are done (one after the other on the calling
+// thread's helpers if a thread cannot be created). Neither may throw.
+void runInParallelWithLargeStacks(const std::function<void()>& a, const std::function<void()>& b,
+                                  std::size_t stackBytes = kParserStackBytes);
+
 }  // namespace strun::ast

@@ -8,7 +8,9 @@
 // (4) parse with SLL prediction and bail out on the first error, then, only if
 // that failed, parse again with full LL and error recovery, so that valid
 // files take the fast path and invalid ones get the best messages;
-// (5) build the AST. Stages 4 and 5 run on a thread with a large stack.
+// (5) build the AST. Stages 4 and 5 run on a thread with a large stack; a
+// large file that parses cleanly is parsed in two halves on two threads
+// (ast/parse_in_halves.h).
 #include "interpreter/ast/parse.h"
 
 #include <cctype>
@@ -61,8 +63,9 @@ ScanResult scanWithActionKeyword(std::string_view text) {
 
 class FileParser {
 public:
-    FileParser(const SourceSet& sources, int fileIndex, CompileLog& log)
-        : text_(sanitizeUtf8(sources.file(fileIndex).text, &firstInvalidByte_, &invalidBytes_)),
+    FileParser(const SourceSet& sources, int fileIndex, CompileLog& log, size_t halvesFrom)
+        : halvesFrom_(halvesFrom),
+          text_(sanitizeUtf8(sources.file(fileIndex).text, &firstInvalidByte_, &invalidBytes_)),
           scan_(scanWithActionKeyword(text_)),
           source_(text_, scan_.tokens),
           tokens_(&source_),
@@ -82,6 +85,8 @@ public:
         reportForeignOperators();
         reportMessagePragmas();
         if (!reportLexerErrors()) return emptyUnit();
+        if (scan_.tokens.size() >= halvesFrom_)
+            if (auto halves = parseInHalves(text_, scan_.tokens, fileIndex_)) return std::move(*halves);
         CompilationUnit unit = emptyUnit();
         runWithLargeStack([&] {
             strun_grammar::RuleContextArena::Scope arena(contextArena_);  // the contexts of this parse
@@ -265,6 +270,7 @@ private:
         return parser_.compilationUnit();
     }
 
+    size_t halvesFrom_;
     size_t firstInvalidByte_ = 0;
     size_t invalidBytes_ = 0;
     std::string text_;
@@ -280,9 +286,9 @@ private:
 
 }  // namespace
 
-CompilationUnit parseFile(const SourceSet& sources, int fileIndex, CompileLog& log) {
+CompilationUnit parseFile(const SourceSet& sources, int fileIndex, CompileLog& log, size_t halvesFrom) {
     try {
-        FileParser parser(sources, fileIndex, log);
+        FileParser parser(sources, fileIndex, log, halvesFrom);
         return parser.run();
     } catch (const std::exception& e) {
         log.error(Loc{fileIndex, 1, 1}, std::string("internal parser error: ") + e.what());

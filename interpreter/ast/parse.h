@@ -8,6 +8,7 @@
 #include <cstddef>
 
 #include "interpreter/ast/ast.h"
+#include "interpreter/ast/parse_in_halves.h"
 #include "interpreter/source/source_set.h"
 
 namespace strun::ast {
@@ -16,6 +17,9 @@ namespace strun::ast {
 // rejected with an error (docs/limits.md).
 inline constexpr std::size_t kMaxTokensPerFile = 2000000;
 
-CompilationUnit parseFile(const SourceSet& sources, int fileIndex, CompileLog& log);
+// A file of at least `halvesFrom` tokens that parses cleanly is parsed in
+// two halves on two threads (parse_in_halves.h); the result is the same.
+CompilationUnit parseFile(const SourceSet& sources, int fileIndex, CompileLog& log,
+                          std::size_t halvesFrom = kTokensToParseInHalves);
 
 }  // namespace strun::ast
