@@ -90,6 +90,9 @@ int main(int argc, char** argv) {
     // path allocates, so the real-clock threads lose nothing by sharing
     // (decision 0156).
     mallopt(M_ARENA_MAX, 2);
+    mallopt(M_TOP_PAD, 4 << 20);
+    mallopt(M_TRIM_THRESHOLD, 64 << 20);
+    mallopt(M_MMAP_THRESHOLD, 8 << 20);
     try {
         leave(runMain(argc, argv));
     } catch (const std::bad_alloc&) {

@@ -6,7 +6,12 @@ namespace strun::ast {
 
 namespace {
 
+// Set on the threads this file starts: work for a large stack then runs
+// where it is, without a thread of its own.
+thread_local bool onLargeStack = false;
+
 void* trampoline(void* arg) {
+    onLargeStack = true;
     (*static_cast<const std::function<void()>*>(arg))();
     return nullptr;
 }
@@ -25,6 +30,10 @@ bool startWithLargeStack(const std::function<void()>& work, std::size_t stackByt
 }  // namespace
 
 void runWithLargeStack(const std::function<void()>& work, std::size_t stackBytes) {
+    if (onLargeStack) {
+        work();
+        return;
+    }
     pthread_t thread;
     if (startWithLargeStack(work, stackBytes, thread))
         pthread_join(thread, nullptr);

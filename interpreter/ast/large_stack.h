@@ -13,7 +13,8 @@ inline constexpr std::size_t kParserStackBytes = std::size_t{256} << 20;
 
 // Runs `work` to completion on a thread whose stack is `stackBytes` (the
 // memory is reserved, and only committed as it is used). Falls back to the
-// calling thread if such a thread cannot be created. `work` must not throw.
+// calling thread if such a thread cannot be created, and runs there
+// directly when that is a thread this file started. `work` must not throw.
 void runWithLargeStack(const std::function<void()>& work, std::size_t stackBytes = kParserStackBytes);
 
 // Runs `a` and `b` at the same time, each on a thread with a large stack,

@@ -13,6 +13,7 @@
 // (ast/parse_in_halves.h).
 #include "interpreter/ast/parse.h"
 
+#include <atomic>
 #include <cctype>
 #include <exception>
 #include <regex>
@@ -298,6 +299,24 @@ CompilationUnit parseFile(const SourceSet& sources, int fileIndex, CompileLog& l
     CompilationUnit unit;
     unit.file = fileIndex;
     return unit;
+}
+
+std::vector<CompilationUnit> parseFiles(const SourceSet& sources, const std::vector<int>& files, CompileLog& log) {
+    std::vector<CompilationUnit> units(files.size());
+    if (files.size() < 2) {
+        for (size_t i = 0; i < files.size(); ++i) units[i] = parseFile(sources, files[i], log);
+        return units;
+    }
+    // Each worker takes the next file not yet taken; each file has its own
+    // log until both are done.
+    std::vector<CompileLog> logs(files.size());
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+        for (size_t i = next++; i < files.size(); i = next++) units[i] = parseFile(sources, files[i], logs[i]);
+    };
+    runInParallelWithLargeStacks(worker, worker);
+    for (CompileLog& fileLog : logs) log.append(std::move(fileLog));
+    return units;
 }
 
 }  // namespace strun::ast

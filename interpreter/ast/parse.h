@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "interpreter/ast/ast.h"
 #include "interpreter/ast/parse_in_halves.h"
@@ -21,5 +22,10 @@ inline constexpr std::size_t kMaxTokensPerFile = 2000000;
 // two halves on two threads (parse_in_halves.h); the result is the same.
 CompilationUnit parseFile(const SourceSet& sources, int fileIndex, CompileLog& log,
                           std::size_t halvesFrom = kTokensToParseInHalves);
+
+// parseFile of each of `files`, two at a time on two threads; the units and
+// the messages come in the order of `files`, as from one parseFile after
+// the other.
+std::vector<CompilationUnit> parseFiles(const SourceSet& sources, const std::vector<int>& files, CompileLog& log);
 
 }  // namespace strun::ast

@@ -47,13 +47,16 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
             units.push_back(std::move(library->units[i]));
             libraryFiles.insert(static_cast<int>(i));
         }
-    } else {
+    }
+    std::vector<int> toParse;  // the library files (unless lent), then the user's
+    if (!library) {
         for (const stdlib::EmbeddedSource* src : wanted) {
             int index = sources.add(std::string(src->path), std::string(src->text));
             libraryFiles.insert(index);
-            units.push_back(ast::parseFile(sources, index, log));
+            toParse.push_back(index);
         }
     }
+    toParse.insert(toParse.end(), userFiles.begin(), userFiles.end());
     // Hands the lent library units back however this function ends.
     struct GiveBack {
         ParsedLibrary* library;
@@ -72,7 +75,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
             if (out) *out = std::move(units);
         }
     } keep{library == nullptr ? keepUnits : nullptr, units};
-    for (int f : userFiles) units.push_back(ast::parseFile(sources, f, log));
+    for (ast::CompilationUnit& unit : ast::parseFiles(sources, toParse, log)) units.push_back(std::move(unit));
     // After local syntax errors the recovered tree is still checked, so that
     // the later mistakes of the file are reported too (decision 0161).
     const SyntaxDamage damage = assessSyntaxErrors(log);

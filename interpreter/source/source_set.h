@@ -75,6 +75,17 @@ public:
         }));
     }
     size_t droppedCount() const { return dropped_; }
+    // Appends the messages of `other` (a log filled on another thread), in
+    // order and within this log's cap.
+    void append(CompileLog&& other) {
+        for (Diagnostic& d : other.messages_) {
+            Diagnostic& added = add(d.severity, d.loc, std::string());
+            if (&added != &overflow_) added = std::move(d);
+        }
+        dropped_ += other.dropped_;
+        errors_ += other.errors_ - static_cast<size_t>(std::count_if(other.messages_.begin(), other.messages_.end(),
+                                                                     [](const Diagnostic& d) { return d.severity == Severity::Error; }));
+    }
 
     // FILE:LINE:COL: error: MESSAGE, one per line, in the order reported.
     void print(std::ostream& out, const SourceSet& sources) const {
