@@ -2,8 +2,11 @@
 # Start-up benchmark: what a user waits for before the first cycle runs.
 #   one_line  `strun run --virtual --cycles 1` of a one-statement program
 #             (against `lua5.4 -e` of one statement)
-#   check_20k `strun check` of a generated 20 000-line project (200 function
+#   check_20k `strun check` of a generated 20 000-line project (290 function
 #             blocks with their functions, one program calling them)
+#   check_30k the same with 435 blocks: 30 000 lines (issue 11's size of
+#             a large library such as OSCAT BASIC)
+#   check_files  check_20k's project as 291 files in one directory
 # Prints the best wall-clock time of each (BENCH_REPEATS runs, default 5) and,
 # when valgrind is installed, the instructions callgrind counts for one run
 # (repeatable where wall times are noisy; BENCH_INSTRUCTIONS=0 skips them).
@@ -40,13 +43,11 @@ best_ms() {  # best_ms CMD...: the fastest of $repeats runs in ms (exit 1 if a r
 
 printf 'PROGRAM Main VAR x : INT; END_VAR x := x + 1; END_PROGRAM\n' >"$scratch/one_line.st"
 
-# A generated project of about 20 000 lines: each FB and function is ~50 lines
-# of ordinary PLC code (declarations, IF/CASE/FOR, arithmetic, calls).
-blocks=290
-gen="$scratch/check_20k.st"
-{
-    for (( k = 0; k < blocks; k++ )); do
-        cat <<ST
+# A generated project: each FB and function is ~50 lines of ordinary PLC
+# code (declarations, IF/CASE/FOR, arithmetic, calls).
+block() {  # block K: function block BlockK and function ScaleK
+    local k=$1
+    cat <<ST
 FUNCTION_BLOCK Block$k
 VAR_INPUT
     enable : BOOL;
@@ -114,18 +115,32 @@ END_IF;
 END_FUNCTION
 
 ST
-    done
+}
+
+main_program() {  # main_program BLOCKS: the program calling them all
     echo "PROGRAM Main"
     echo "VAR"
-    for (( k = 0; k < blocks; k++ )); do echo "    b$k : Block$k;"; done
+    for (( k = 0; k < $1; k++ )); do echo "    b$k : Block$k;"; done
     echo "    total : DINT;"
     echo "END_VAR"
-    for (( k = 0; k < blocks; k++ )); do
+    for (( k = 0; k < $1; k++ )); do
         echo "b$k(enable := TRUE, setpoint := Scale$k(raw := total, low := 0, high := 1000));"
         echo "total := total + b$k.out;"
     done
     echo "END_PROGRAM"
-} >"$gen"
+}
+
+project() {  # project BLOCKS FILE
+    { for (( k = 0; k < $1; k++ )); do block $k; done; main_program $1; } >"$2"
+}
+
+gen="$scratch/check_20k.st"
+project 290 "$gen"
+gen30="$scratch/check_30k.st"
+project 435 "$gen30"
+mkdir "$scratch/files"
+for (( k = 0; k < 290; k++ )); do block $k >"$scratch/files/block$k.st"; done
+main_program 290 >"$scratch/files/main.st"
 lines=$(wc -l <"$gen")
 
 echo "strun: $strun   best of $repeats runs each (wall ms); instructions of one run (callgrind)"
@@ -141,3 +156,10 @@ printf '%-12s %10s %10s %12s %12s\n' "one_line" "$one" "$lua_one" "$one_i" "$lua
 chk=$(best_ms "$strun" check "$gen") || exit 1
 chk_i=$(instructions "$strun" check "$gen")
 printf '%-12s %10s %10s %12s %12s   (%d lines, %.0f lines/s)\n' "check_20k" "$chk" "-" "$chk_i" "-" "$lines" "$(awk -v l="$lines" -v ms="$chk" 'BEGIN { print l / (ms / 1000) }')"
+lines30=$(wc -l <"$gen30")
+chk30=$(best_ms "$strun" check "$gen30") || exit 1
+chk30_i=$(instructions "$strun" check "$gen30")
+printf '%-12s %10s %10s %12s %12s   (%d lines, %.0f lines/s)\n' "check_30k" "$chk30" "-" "$chk30_i" "-" "$lines30" "$(awk -v l="$lines30" -v ms="$chk30" 'BEGIN { print l / (ms / 1000) }')"
+chkf=$(best_ms "$strun" check "$scratch/files") || exit 1
+chkf_i=$(instructions "$strun" check "$scratch/files")
+printf '%-12s %10s %10s %12s %12s   (%d files)\n' "check_files" "$chkf" "-" "$chkf_i" "-" "$(ls "$scratch/files" | wc -l)"
