@@ -19,11 +19,13 @@ namespace strun::project {
 
 std::unique_ptr<ParsedLibrary> parseLibrary(CompileLog& log) {
     auto library = std::make_unique<ParsedLibrary>();
+    std::vector<int> files;
     for (const auto& src : stdlib::embeddedSources()) {
         int index = library->sources.add(std::string(src.path), std::string(src.text));
         library->files.insert(index);
-        library->units.push_back(ast::parseFile(library->sources, index, log));
+        files.push_back(index);
     }
+    library->units = ast::parseFiles(library->sources, files, log);
     return library;
 }
 
