@@ -318,7 +318,7 @@ expression
 
 // An operand. Names, the primaries and the literals are tokens of this rule
 // rather than rules of their own (`identifier`, `literal`): every rule a
-// parse enters costs a context object, two dynamic casts and a destructor,
+// parse enters costs a context object, its entry and exit and a destructor,
 // and operands are most of a program (decision 0158). The name tokens are
 // those of `identifier`.
 unaryExpr

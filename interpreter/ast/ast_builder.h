@@ -1,8 +1,9 @@
-// Parse tree (generated from grammar/STParser.g4) -> AST (ast.h).
-// Walks the typed contexts of the generated parser; every node gets the
-// location of its first character. Robust against the partial trees ANTLR
-// leaves behind after a syntax error (any child may be missing): it then
-// builds what it can, the error has already been reported.
+// Parse (generated from grammar/STParser.g4) -> AST (ast.h).
+// Walks the typed contexts of the generated parser through their labels and
+// start/stop tokens only (the parser keeps no child lists: decision 0159);
+// every node gets the location of its first character. Robust against the
+// partial contexts ANTLR leaves behind after a syntax error (any label may
+// be null): it then builds what it can, the error has already been reported.
 //
 // Also the place for checks the grammar keeps permissive on purpose so that
 // the message can be specific: `x S= 1` with an operator other than S/R/REF,
