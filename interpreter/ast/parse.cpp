@@ -1,9 +1,9 @@
-// parseFile: source text -> tokens -> parse tree -> AST, with every problem
+// parseFile: source text -> tokens -> parse -> AST, with every problem
 // reported to the CompileLog and nothing thrown.
 //
-// Stages: (1) make the bytes valid UTF-8; (2) scan everything (ast/st_scanner.h),
-// reporting the error tokens (unterminated comments/strings/pragmas, stray
-// characters) at their exact location;
+// Stages: (1) make the bytes valid UTF-8; (2) scan everything (ast/st_scanner.h,
+// then ast/action_keyword.h), reporting the error tokens (unterminated
+// comments/strings/pragmas, stray characters) at their exact location;
 // (3) refuse pathological nesting before the recursive parser sees it;
 // (4) parse with SLL prediction and bail out on the first error, then, only if
 // that failed, parse again with full LL and error recovery, so that valid
@@ -56,6 +56,8 @@ std::string lexerErrorMessage(const antlr4::Token& token) {
     return "unexpected character '" + text + "'";
 }
 
+// The scanner's tokens with ACTION kept only where an action declaration
+// starts (ast/action_keyword.h).
 ScanResult scanWithActionKeyword(std::string_view text) {
     ScanResult scan = scanSource(text, kMaxTokensPerFile);
     resolveActionKeyword(scan.tokens);
