@@ -84,6 +84,7 @@ private:
     StmtPtr stmt(P::StatementContext* c);
     StmtPtr exprStmt(P::ExprStmtContext* c);
     void caseBranches(const std::vector<P::StatementContext*>& items, Stmt& out);
+    CaseLabel caseLabel(P::ExpressionContext* lo, const antlr4::Token* dots, P::ExpressionContext* hi, const Loc& at);
 
     // ---- expressions (ast_builder_expr.cpp)
     ExprPtr expr(P::ExpressionContext* c);

@@ -109,6 +109,15 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
     return nullptr;  // a statement the parser could not make sense of (already reported)
 }
 
+// `lo` or `lo..hi` (with `dots` the '..'); a placeholder at `at` for what a
+// syntax error left out.
+CaseLabel AstBuilder::caseLabel(P::ExpressionContext* lo, const antlr4::Token* dots, P::ExpressionContext* hi, const Loc& at) {
+    CaseLabel out;
+    out.lo = lo ? expr(lo) : placeholder(at);
+    if (dots) out.hi = hi ? expr(hi) : placeholder(at);
+    return out;
+}
+
 // The statements of a CASE: a label statement (`1, 5..9:`) starts the
 // next branch, the others belong to the branch before them.
 void AstBuilder::caseBranches(const std::vector<P::StatementContext*>& items, Stmt& out) {
@@ -117,16 +126,10 @@ void AstBuilder::caseBranches(const std::vector<P::StatementContext*>& items, St
         if (labels != nullptr && labels->colon != nullptr) {
             CaseBranch branch;
             branch.loc = loc(labels);
-            CaseLabel first;
-            first.lo = labels->parts.empty() ? placeholder(branch.loc) : expr(labels->parts[0]);
-            if (labels->dots) first.hi = labels->hi ? expr(labels->hi) : placeholder(branch.loc);
-            branch.labels.push_back(std::move(first));
-            for (auto* label : labels->moreLabels) {
-                CaseLabel built;
-                built.lo = label->lo ? expr(label->lo) : placeholder(loc(label));
-                if (label->dots) built.hi = label->hi ? expr(label->hi) : placeholder(loc(label));
-                branch.labels.push_back(std::move(built));
-            }
+            branch.labels.push_back(caseLabel(labels->parts.empty() ? nullptr : labels->parts[0], labels->dots,
+                                              labels->hi, branch.loc));
+            for (auto* label : labels->moreLabels)
+                branch.labels.push_back(caseLabel(label->lo, label->dots, label->hi, loc(label)));
             out.cases.push_back(std::move(branch));
             continue;
         }

@@ -43,8 +43,7 @@ std::unique_ptr<antlr4::Token> ScannedTokenSource::nextToken() {
     // Past the end the EOF token again, as a lexer would.
     const ScannedToken& t = scanned_[std::min(next_, scanned_.size() - 1)];
     if (next_ < scanned_.size()) ++next_;
-    const size_t stop = t.type == antlr4::Token::EOF ? static_cast<size_t>(t.start) - 1 : t.stop;
-    auto token = std::make_unique<antlr4::CommonToken>(std::make_pair(this, &stream_), t.type, t.channel, t.start, stop);
+    auto token = std::make_unique<antlr4::CommonToken>(std::make_pair(this, &stream_), t.type, t.channel, t.start, stopIndex(t));
     token->setLine(t.line);
     token->setCharPositionInLine(t.column);
     return token;

@@ -39,6 +39,12 @@ private:
 
 class ScannedTokenSource;
 
+// ANTLR's stop index of a scanned token. EOF is empty: it stops before it
+// starts, as ANTLR's lexers make it (and as a size_t, also at offset 0).
+inline size_t stopIndex(const ScannedToken& token) {
+    return token.type == antlr4::Token::EOF ? static_cast<size_t>(token.start) - 1 : token.stop;
+}
+
 // A scanned token as the parser sees it: a view of the ScannedToken and of
 // the source text. The stream keeps all of them in one array (one
 // allocation per file instead of a CommonToken per token, which was a
@@ -54,10 +60,7 @@ public:
     size_t getChannel() const override { return token_->channel; }
     size_t getTokenIndex() const override { return index_; }
     size_t getStartIndex() const override { return token_->start; }
-    // EOF is empty: it stops before it starts, as ANTLR's lexers make it.
-    size_t getStopIndex() const override {
-        return token_->type == antlr4::Token::EOF ? static_cast<size_t>(token_->start) - 1 : token_->stop;
-    }
+    size_t getStopIndex() const override { return stopIndex(*token_); }
     antlr4::TokenSource* getTokenSource() const override;
     antlr4::CharStream* getInputStream() const override;
     std::string toString() const override;

@@ -41,6 +41,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     for (int f : userFiles) userTexts.push_back(sources.file(f).text);
     const std::vector<const stdlib::EmbeddedSource*> wanted = embeddedSourcesFor(userTexts);
     std::vector<size_t> borrowed;  // indices into library->units, parallel to the first units
+    std::vector<int> toParse;      // the library files (unless lent), then the user's
     if (library) {
         const auto& all = stdlib::embeddedSources();
         for (size_t i = 0; i < all.size() && i < library->units.size(); ++i) {
@@ -49,9 +50,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
             units.push_back(std::move(library->units[i]));
             libraryFiles.insert(static_cast<int>(i));
         }
-    }
-    std::vector<int> toParse;  // the library files (unless lent), then the user's
-    if (!library) {
+    } else {
         for (const stdlib::EmbeddedSource* src : wanted) {
             int index = sources.add(std::string(src->path), std::string(src->text));
             libraryFiles.insert(index);

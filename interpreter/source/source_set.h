@@ -78,13 +78,13 @@ public:
     // Appends the messages of `other` (a log filled on another thread), in
     // order and within this log's cap.
     void append(CompileLog&& other) {
+        const size_t errors = errors_ + other.errors_;  // add() below counts only the messages other kept
         for (Diagnostic& d : other.messages_) {
             Diagnostic& added = add(d.severity, d.loc, std::string());
             if (&added != &overflow_) added = std::move(d);
         }
         dropped_ += other.dropped_;
-        errors_ += other.errors_ - static_cast<size_t>(std::count_if(other.messages_.begin(), other.messages_.end(),
-                                                                     [](const Diagnostic& d) { return d.severity == Severity::Error; }));
+        errors_ = errors;
     }
 
     // FILE:LINE:COL: error: MESSAGE, one per line, in the order reported.
