@@ -27,7 +27,7 @@ const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
   });
   try {
     const page = await browser.newPage();
-    await page.setViewport({ width: 1400, height: 1000 });
+    await page.setViewport({ width: 1400, height: 1050 });
     await page.goto(url, { waitUntil: "load" });
     await page.waitForSelector('tr[data-path="gLevel"] .btn-edit');
     await page.click('tr[data-path="gLevel"] .btn-edit');
@@ -35,7 +35,8 @@ const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
     await page.click('tr[data-path="Trend.maxLevel"] .btn-edit');
     await page.click('tr[data-path="Trend.maxLevel"] .btn-trend');
     await sleep(7000);
-    await page.click('tr[data-path="Ctl.stuckFrom"] .btn-edit').catch(() => {});
+    await page.evaluate(() => { document.activeElement.blur(); window.scrollTo(0, 0); });
+    await sleep(300);
     await page.screenshot({ path: out });
   } finally {
     await browser.close();
