@@ -2,7 +2,7 @@
 # Debian packages the build needs when they are missing, then build into build/.
 BUILD ?= build
 JOBS ?= $(shell nproc)
-DEBIAN_PACKAGES = cmake make g++ antlr4 default-jre-headless libantlr4-runtime-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev dpkg-dev libpugixml-dev libcpp-httplib-dev libmodbus-dev
+DEBIAN_PACKAGES = cmake make g++ antlr4 default-jre-headless libantlr4-runtime-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev dpkg-dev libpugixml-dev libcpp-httplib-dev libmodbus-dev python3-pymodbus python3-serial-asyncio
 EXAMPLE ?= programs/bottle_counter.st
 RUN_ARGS ?= --virtual --cycles 2000 --dump
 

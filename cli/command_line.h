@@ -35,6 +35,8 @@ struct CommandLine {
     std::string retainFile;                  // --retain FILE
     bool cold = false;                       // --cold
     std::optional<int64_t> retainEvery;      // --retain-every, ns
+    std::string modbusServe;                 // --modbus [ADDR:]PORT (cli/modbus_options.cpp)
+    std::string modbusClientFile;            // --modbus-client FILE
 };
 
 }  // namespace strun::cli

@@ -737,7 +737,8 @@ void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::stri
     switch (code) {
     case DiagCode::DivByZero:
     case DiagCode::Overrun:
-    case DiagCode::Watchdog: return;  // recorded; execution goes on
+    case DiagCode::Watchdog:
+    case DiagCode::IoFault: return;  // recorded; execution goes on
     case DiagCode::ArrayBounds:
     case DiagCode::NullPointer:
         // A program error inside the program-error task itself stops the PLC,
