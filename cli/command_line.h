@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/diagnostic_options.h"
+#include "cli/live_options.h"
 #include "interpreter/sema/compile_options.h"
 
 namespace strun::cli {
@@ -35,7 +36,8 @@ struct CommandLine {
     std::string retainFile;                  // --retain FILE
     bool cold = false;                       // --cold
     std::optional<int64_t> retainEvery;      // --retain-every, ns
-    std::string modbusServe;                 // --modbus [ADDR:]PORT (cli/modbus_options.cpp)
+    LiveOptions live;                        // --force, --paused, --serve, --serve-token (cli/live_options.h)
+    std::string modbusServe;                 // --modbus [ADDR:]PORT (cli/modbus_options.h)
     std::string modbusClientFile;            // --modbus-client FILE
 };
 

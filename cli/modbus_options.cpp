@@ -3,19 +3,24 @@
 #include <fstream>
 #include <sstream>
 
+#include "live/control_plane.h"
 #include "live/modbus_client.h"
+#include "live/modbus_plane.h"
 #include "live/modbus_server.h"
 #include "runtime/plc_profile.h"
 
 namespace strun::cli {
 
 void addModbusOptions(CLI::App& run, CommandLine& line) {
+    // Either option needs the live control plane (cli/live_options.h).
     run.add_option("--modbus", line.modbusServe,
                    "serve the process image over Modbus TCP on ADDR (default 127.0.0.1) and PORT (0: any free port); real clock only")
-        ->type_name("[ADDR:]PORT");
+        ->type_name("[ADDR:]PORT")
+        ->each([&line](const std::string&) { line.live.modbus = true; });
     run.add_option("--modbus-client", line.modbusClientFile,
                    "poll the Modbus TCP devices of the JSON mapping FILE into the process image; real clock only")
-        ->type_name("FILE");
+        ->type_name("FILE")
+        ->each([&line](const std::string&) { line.live.modbus = true; });
 }
 
 namespace {
@@ -78,7 +83,13 @@ bool prepareModbus(const CommandLine& line, ModbusSetup& setup, std::string& err
 ModbusRun::ModbusRun() = default;
 ModbusRun::~ModbusRun() { stop(); }
 
-bool ModbusRun::start(const ModbusSetup& setup, live::ModbusPlc& plc, std::ostream& log, std::string& error) {
+bool ModbusRun::start(const ModbusSetup& setup, live::ControlPlane& control, rt::RunOptions& run, std::ostream& log,
+                      std::string& error) {
+    if (!setup.any()) return true;
+    plane_ = std::make_unique<live::ModbusPlane>(control, *run.live);
+    if (setup.serve) plane_->requireServedTable();
+    if (setup.client) plane_->requireMapped(*setup.client);
+    live::ModbusPlc& plc = *plane_;
     if (setup.serve) {
         server_ = std::make_unique<live::ModbusServer>(plc);
         if (!server_->listen(setup.host, setup.port, error)) {
@@ -93,6 +104,7 @@ bool ModbusRun::start(const ModbusSetup& setup, live::ModbusPlc& plc, std::ostre
         client_ = std::make_unique<live::ModbusClient>(plc, *setup.client);
         client_->start();
     }
+    run.live = plane_.get();
     return true;
 }
 

@@ -12,11 +12,13 @@
 
 #include "cli/command_line.h"
 #include "live/modbus_map.h"
-#include "live/modbus_plc.h"
+#include "runtime/scheduler.h"
 
 namespace strun::live {
-class ModbusServer;
+class ControlPlane;
 class ModbusClient;
+class ModbusPlane;
+class ModbusServer;
 }  // namespace strun::live
 
 namespace strun::cli {
@@ -36,18 +38,22 @@ struct ModbusSetup {
 // the project is compiled. False with the one-line usage `error` (exit 2).
 bool prepareModbus(const CommandLine& line, ModbusSetup& setup, std::string& error);
 
-// The running server and client: started on `plc` before the scheduler
-// runs, stopped (threads joined) when destroyed or by stop().
+// The running server and client on the live run's control plane: started
+// before the scheduler runs, stopped (threads joined) by stop() or when
+// destroyed.
 class ModbusRun {
 public:
     ModbusRun();
     ~ModbusRun();
-    // Listens and starts the threads; prints `strun: serving modbus tcp://HOST:PORT` on `log`.
-    // False with `error` when the server cannot listen.
-    bool start(const ModbusSetup& setup, live::ModbusPlc& plc, std::ostream& log, std::string& error);
+    // Puts itself between the scheduler and the control plane (`run.live`,
+    // which the live session set), listens and starts the threads; prints
+    // `strun: serving modbus tcp://HOST:PORT/` on `log`. False with `error`
+    // when the server cannot listen.
+    bool start(const ModbusSetup& setup, live::ControlPlane& control, rt::RunOptions& run, std::ostream& log, std::string& error);
     void stop();
 
 private:
+    std::unique_ptr<live::ModbusPlane> plane_;
     std::unique_ptr<live::ModbusServer> server_;
     std::unique_ptr<live::ModbusClient> client_;
 };

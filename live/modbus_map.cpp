@@ -247,8 +247,9 @@ private:
         }
         const Json& v = o[key];
         if (!v.is_number_integer()) throw Invalid{f, "must be a whole number " + std::to_string(lo) + ".." + std::to_string(hi) + ", not " + describe(v)};
-        if (v.is_number_unsigned() ? v.get<uint64_t>() > uint64_t(hi) : (v.get<int64_t>() < lo || v.get<int64_t>() > hi))
-            throw Invalid{f, describe(v) + " is outside " + std::to_string(lo) + ".." + std::to_string(hi)};
+        bool inside = v.is_number_unsigned() ? v.get<uint64_t>() <= uint64_t(hi) && int64_t(v.get<uint64_t>()) >= lo
+                                             : v.get<int64_t>() >= lo && v.get<int64_t>() <= hi;
+        if (!inside) throw Invalid{f, describe(v) + " is outside " + std::to_string(lo) + ".." + std::to_string(hi)};
         return v.get<int64_t>();
     }
 

@@ -17,23 +17,28 @@
 
 namespace strun::live {
 
-// One activation's image: all four areas from the same published snapshot.
+// One activation's image: all three areas from the same published snapshot.
+// Bytes past an area's size read as 0.
 struct ImageView {
     const uint8_t* inputs = nullptr;   // %I as the program saw it
     const uint8_t* outputs = nullptr;  // %Q as the activation left it (what the outputs received)
     const uint8_t* memory = nullptr;   // %M
-    size_t size = 0;                   // bytes of each area in the view
+    size_t inputBytes = 0, outputBytes = 0, memoryBytes = 0;
+
     uint8_t bit(rt::DirectAddress::Area area, size_t byte, int bit) const {
-        const uint8_t* a = base(area);
-        return byte < size ? (a[byte] >> bit) & 1 : 0;
+        return byte < bytes(area) ? (base(area)[byte] >> bit) & 1 : 0;
     }
     // The little-endian word at `byte` (the image's %xW).
     uint16_t word(rt::DirectAddress::Area area, size_t byte) const {
         const uint8_t* a = base(area);
-        return byte + 1 < size ? uint16_t(a[byte] | (a[byte + 1] << 8)) : 0;
+        size_t n = bytes(area);
+        return uint16_t((byte < n ? a[byte] : 0) | ((byte + 1 < n ? a[byte + 1] : 0) << 8));
     }
     const uint8_t* base(rt::DirectAddress::Area area) const {
         return area == rt::DirectAddress::Area::Input ? inputs : area == rt::DirectAddress::Area::Output ? outputs : memory;
+    }
+    size_t bytes(rt::DirectAddress::Area area) const {
+        return area == rt::DirectAddress::Area::Input ? inputBytes : area == rt::DirectAddress::Area::Output ? outputBytes : memoryBytes;
     }
 };
 

@@ -135,6 +135,19 @@ bool readAccepted(const Request::Range& r) {
     return r.count >= 1 && r.count <= max;
 }
 
+// Reads exactly `n` bytes, each within `timeoutMs` of the previous one.
+bool readRest(int fd, uint8_t* into, size_t n, int timeoutMs) {
+    while (n > 0) {
+        pollfd p{fd, POLLIN, 0};
+        if (poll(&p, 1, timeoutMs) <= 0) return false;
+        ssize_t got = recv(fd, into, n, 0);
+        if (got <= 0) return false;
+        into += got;
+        n -= size_t(got);
+    }
+    return true;
+}
+
 }  // namespace
 
 struct ModbusServer::Connection {
@@ -256,8 +269,16 @@ void ModbusServer::serve(Connection& c) {
         int rc = modbus_receive(ctx, query.data());
         if (rc < 0) break;   // closed, a frame cut short, too long or not Modbus
         if (rc == 0) continue;  // not for this server (libmodbus filtered it)
-        // MBAP: protocol 0 and a length that is what came: anything else is not a frame we can trust.
-        if (rc < header + 1 || be16(&query[2]) != 0 || be16(&query[4]) != rc - 6) break;
+        // MBAP: protocol 0 and a length no shorter than what came: anything
+        // else is not a frame we can trust. libmodbus reads only the function
+        // code of a function it does not know; the rest of that frame (by its
+        // MBAP length) is read here, so that it gets its exception answer and
+        // the stream stays in step.
+        if (rc < header + 1 || be16(&query[2]) != 0) break;
+        int length = be16(&query[4]) + 6;
+        if (length < rc || length > MODBUS_TCP_MAX_ADU_LENGTH) break;
+        if (length > rc && !readRest(c.fd, &query[size_t(rc)], size_t(length - rc), limits_.byteTimeoutMs)) break;
+        rc = length;
         lastRequest = Clock::now();
 
         tokens = std::min<double>(limits_.burst, tokens + std::chrono::duration<double>(lastRequest - refilled).count() * limits_.requestsPerSecond);

@@ -115,7 +115,7 @@ struct PlainPlc : ModbusPlc {
     std::vector<std::string> faults;
     void readImage(const std::function<void(const ImageView&)>& read) override {
         std::lock_guard<std::mutex> lock(m);
-        read(ImageView{inputs.data(), outputs.data(), memory.data(), 4096});
+        read(ImageView{inputs.data(), outputs.data(), memory.data(), 4096, 4096, 4096});
     }
     void write(std::span<const ImageWrite> writes) override {
         std::lock_guard<std::mutex> lock(m);
@@ -179,8 +179,9 @@ TEST_CASE("the client polls a device, and reports its outage once", "[modbus]") 
     std::string mapping = R"({"devices": [{"name": "dev", "host": "127.0.0.1", "port": )" + std::to_string(port) +
                           R"(, "period": "T#10ms", "timeout": "T#100ms",
         "read": [{"table": "input_registers", "start": 5, "count": 1, "to": "%IW8"}],
-        "write": [{"table": "holding_registers", "start": 100, "count": 2, "from": "%QW0"}]})" "}]}";
+        "write": [{"table": "holding_registers", "start": 100, "count": 2, "from": "%QW0"}]})" "]}";
     auto config = parseModbusClientConfig(mapping, "m.json", rt::defaultProfile(), error);
+    INFO(error);
     REQUIRE(config);
     PlainPlc plc;
     plc.outputs[0] = 1;

@@ -335,6 +335,8 @@ def case_config():
          r"devices\[0\]\.perod: unknown field", "an unknown field"),
         ('{"devices": [{"name": "p", "host": "h", "port": 5020, "read": [{"table": "coils", "start": 65535, "count": 2, "to": "%IX0.0"}]}]}',
          r"devices\[0\]\.read\[0\]\.count", "start + count past 65535"),
+        ('{"devices": [{"name": "p", "host": "h", "port": 5020, "read": [{"table": "coils", "start": 0, "count": 0, "to": "%IX0.0"}]}]}',
+         r"devices\[0\]\.read\[0\]\.count", "a count of 0"),
     ]
     for text, pattern, what in cases:
         code, err = strun(["--modbus-client", mapping(text)])
@@ -342,7 +344,30 @@ def case_config():
         check(err.count("\n") == 1, what + ": one line")
 
 
-{"server": case_server, "client": case_client, "hostile": case_hostile, "config": case_config}[CASE]()
+# ---------------------------------------------------------------- bench
+def case_bench():
+    """programs/modbus_bench: the tank device and its controller, on a free port."""
+    bench = os.path.join(HERE, "..", "..", "programs", "modbus_bench")
+    port = free_port()
+    mapping = json.load(open(os.path.join(bench, "mapping.json")))
+    mapping["devices"][0]["port"] = port
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        json.dump(mapping, f)
+    plant = subprocess.Popen([sys.executable, os.path.join(bench, "plant.py"), str(port)], stdout=subprocess.PIPE,
+                             stderr=subprocess.DEVNULL, text=True)
+    check(plant.stdout.readline().startswith("plant:"), "the plant starts")
+    run = Strun(["--for", "12s", "--modbus-client", f.name, os.path.join(bench, "tank_control.st")], serve=False)
+    dump = run.finish()
+    plant.kill()
+    tank = dump["programs"]["Tank"]
+    print("pumpStarts", tank["pumpStarts"], "minLevel", tank["minLevel"], "maxLevel", tank["maxLevel"])
+    check(tank["pumpStarts"] >= 1, "the controller started the pump")
+    check(35.0 <= tank["minLevel"] and tank["maxLevel"] <= 65.0, "the level stayed in the 40..60 % band (give or take a poll)")
+    check(not [d for d in dump["diagnostics"] if d["code"] == "IO_FAULT"], "no IO_FAULT")
+    os.unlink(f.name)
+
+
+{"bench": case_bench, "server": case_server, "client": case_client, "hostile": case_hostile, "config": case_config}[CASE]()
 if failures:
     print("%d failure(s)" % len(failures))
     sys.exit(1)
