@@ -4,7 +4,7 @@
 # 8 clients polling 10 holding registers at 100 Hz, (c) with 16 clients as
 # fast as they are answered. For each: the task's start latency (p50, p99,
 # max, from --trace), overruns, and the requests per second answered.
-#   sh tests/modbus/measure.sh build/strun build/tests/modbus/modbus_load [SECONDS]
+#   [STRUN_ARGS=--realtime] sh tests/modbus/measure.sh build/strun build/tests/modbus/modbus_load [SECONDS]
 strun=$1
 load=$2
 seconds=${3:-10}
@@ -12,7 +12,7 @@ dir=$(dirname "$0")
 port=15502
 tmp=$(mktemp -d)
 for case in alone 8x100Hz 16xmax; do
-    "$strun" run --for "${seconds}s" --trace --dump --modbus 127.0.0.1:$port "$dir/server_image.st" \
+    "$strun" run $STRUN_ARGS --for "${seconds}s" --trace --dump --modbus 127.0.0.1:$port "$dir/server_image.st" \
         >"$tmp/$case.json" 2>"$tmp/$case.trace" &
     pid=$!
     sleep 1

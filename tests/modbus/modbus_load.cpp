@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
                 failed++;
                 return;
             }
-            std::vector<uint16_t> regs(size_t(count));
+            std::vector<uint16_t> regs(static_cast<size_t>(count));
             auto next = std::chrono::steady_clock::now();
             while (std::chrono::steady_clock::now() < end) {
                 if (modbus_read_registers(ctx, 0, count, regs.data()) == count) answered++;
