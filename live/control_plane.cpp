@@ -435,15 +435,16 @@ std::vector<TimelineEvent> ControlPlane::timeline(uint64_t from) const {
 
 void ControlPlane::runStarting(rt::Scheduler& scheduler) { scheduler_ = &scheduler; }
 
-void ControlPlane::holdWhilePaused() {
-    if (!paused_.load(std::memory_order_acquire)) return;
+bool ControlPlane::holdWhilePaused() {
+    if (!paused_.load(std::memory_order_acquire)) return false;
     std::unique_lock<std::mutex> lock(controlMutex_);
-    if (!paused_.load(std::memory_order_acquire)) return;
+    if (!paused_.load(std::memory_order_acquire)) return false;
     holding_ = true;
     controlCv_.notify_all();
     // The lock is released while waiting: front ends resume or step meanwhile.
     while (paused_.load(std::memory_order_acquire) && !rt::Scheduler::stopRequested()) controlCv_.wait_for(lock, kPauseCheck);
     holding_ = false;
+    return true;
 }
 
 void ControlPlane::activationStarting(size_t) {

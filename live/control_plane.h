@@ -21,9 +21,9 @@
 //    activation start (%I: into the input image after the input phase) and
 //    again at every activation end (before the output phase), until released.
 //  - Pause, resume, step(task, cycles): honoured between two activations.
-//    On the virtual clock a paused PLC does not advance PLC time. On the
-//    real clock PLC time goes on while paused; when it resumes, a cyclic
-//    task's releases missed meanwhile count as overruns (OVERRUN entries).
+//    A paused PLC does not advance PLC time, on the real clock either (the
+//    scheduler takes the time spent paused out of PLC time, so a pause
+//    causes no overruns; the calendar, read from the host, goes on).
 //  - Wake-up: sequence() grows by one per published snapshot;
 //    waitForSnapshot(seen, timeout) blocks a front end's thread until a newer
 //    one exists (or the timeout passes). The scheduler never waits for it.
@@ -191,7 +191,7 @@ public:
 
     // ---- rt::LiveHooks (the scheduler's thread only)
     void runStarting(rt::Scheduler& scheduler) override;
-    void holdWhilePaused() override;
+    bool holdWhilePaused() override;
     void activationStarting(size_t task) override;
     void inputsLatched(size_t task) override;
     void activationEnding(size_t task) override;

@@ -24,10 +24,12 @@ public:
     virtual ~LiveHooks() = default;
     // Scheduler::run() begins (before the first activation).
     virtual void runStarting(Scheduler& scheduler) = 0;
-    // Between two activations, none in progress: returns at once unless the
-    // PLC is paused; then blocks until it is resumed or stepped or the run
-    // is asked to stop. On the virtual clock PLC time stands still meanwhile.
-    virtual void holdWhilePaused() = 0;
+    // Between two activations, none in progress: returns false at once
+    // unless the PLC is paused; then blocks until it is resumed or stepped or
+    // the run is asked to stop, and returns true. PLC time stands still
+    // meanwhile, on the real clock too (the scheduler takes the time spent
+    // paused out of PLC time).
+    virtual bool holdWhilePaused() = 0;
     // Activation of `task` (index into the scheduler's task list) starts:
     // before its input phase (queued writes, forces).
     virtual void activationStarting(size_t task) = 0;

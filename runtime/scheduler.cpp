@@ -214,8 +214,15 @@ void Scheduler::mainLoop() {
         if (ending_) return;
         if (machine_.now >= forEnd_) return;
         if (options_.live) {
-            // Paused between two activations; PLC time goes on only on the real clock.
-            options_.live->holdWhilePaused();
+            // Paused between two activations. PLC time stands still meanwhile,
+            // on the real clock too: the time spent paused is taken out of it,
+            // so a pause causes no overruns (decision 0171).
+            const int64_t holdStart = options_.virtualClock ? 0 : monotonicNanos();
+            if (options_.live->holdWhilePaused() && !options_.virtualClock) {
+                const int64_t paused = monotonicNanos() - holdStart;
+                monotonicOrigin_ += paused;
+                timer_->shiftOrigin(paused);
+            }
             refreshNow();
             if (stopRequested_.load()) ending_ = true;
             if (ending_ || machine_.now >= forEnd_) return;

@@ -191,6 +191,27 @@ def case_paused_step_deterministic(strun):
     check(json.loads(first[0])[0] == "T#10us" or json.loads(first[0])[0].startswith("T#"), "time")
 
 
+def case_paused_real_clock(strun):
+    s = serve(strun, "--paused")
+    try:
+        time.sleep(0.3)
+        st = s.get("/api/state")
+        check(st["paused"] is True and st["time"] == "T#0s" and st["tasks"][0]["cycles"] == 0,
+              f"--paused on the real clock: nothing ran, PLC time stands still: {st['time']} {st['tasks'][0]['cycles']}")
+        st = s.post("/api/step", {"cycles": 2})
+        check(st["paused"] and st["tasks"][0]["cycles"] == 2, f"two cycles: {st['tasks'][0]['cycles']}")
+        t = st["time"]
+        time.sleep(0.3)
+        check(s.get("/api/state")["time"] == t, "time stands still after the step")
+        s.post("/api/resume")
+        s.wait_for(lambda: s.get("/api/state")["tasks"][0]["cycles"], lambda c: c > 12)
+        st = s.get("/api/state")
+        check(st["tasks"][0]["overruns"] == 0 or st["tasks"][0]["overruns"] < st["tasks"][0]["cycles"] // 2,
+              f"a pause causes no overruns by itself: {st['tasks'][0]}")
+    finally:
+        s.stop()
+
+
 def case_events(strun):
     s = serve(strun)
     try:
