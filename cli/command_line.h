@@ -37,6 +37,8 @@ struct CommandLine {
     bool cold = false;                       // --cold
     std::optional<int64_t> retainEvery;      // --retain-every, ns
     LiveOptions live;                        // --force, --paused, --serve, --serve-token (cli/live_options.h)
+    std::string modbusServe;                 // --modbus [ADDR:]PORT (cli/modbus_options.h)
+    std::string modbusClientFile;            // --modbus-client FILE
 };
 
 }  // namespace strun::cli

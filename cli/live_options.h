@@ -31,7 +31,8 @@ struct LiveOptions {
     std::string serve;                // --serve [ADDR:]PORT ("" = none)
     std::string serveToken;           // --serve-token TOKEN
     // True when any option needs the control plane.
-    bool any() const { return !forces.empty() || paused || !serve.empty() || !serveToken.empty(); }
+    bool modbus = false;              // --modbus or --modbus-client (cli/modbus_options.h) use the plane
+    bool any() const { return !forces.empty() || paused || !serve.empty() || !serveToken.empty() || modbus; }
 };
 
 void addLiveOptions(CLI::App& run, LiveOptions& options);

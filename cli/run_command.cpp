@@ -15,6 +15,7 @@
 #include "cli/option_types.h"
 #include "cli/diagnostic_render.h"
 #include "cli/live_options.h"
+#include "cli/modbus_options.h"
 #include "cli/run_report.h"
 #include "cli/stimulus_args.h"
 #include "interpreter/project/stimulus_build.h"
@@ -125,6 +126,7 @@ CLI::App* addRunCommand(CLI::App& app, CommandLine& line) {
         ->transform(durationValidator())
         ->type_name("DURATION");
     addLiveOptions(*run, line.live);
+    addModbusOptions(*run, line);
     return run;
 }
 
@@ -132,6 +134,8 @@ int runCommand(const CommandLine& line) {
     rt::RunOptions run;
     std::string error;
     if (!buildRunOptions(line, run, error)) return usage(error);
+    ModbusSetup modbusSetup;  // --modbus, --modbus-client (cli/modbus_options.h)
+    if (!prepareModbus(line, modbusSetup, error)) return usage(error);
     if (!line.watches.empty() && line.vcdFile.empty()) return usage("--watch selects what --vcd records: give --vcd FILE too");
 
     Compiled compiled;
@@ -189,6 +193,8 @@ int runCommand(const CommandLine& line) {
     std::unique_ptr<LiveSession> live =
         LiveSession::start(line.live, model, run.profile ? *run.profile : rt::defaultProfile(), specs, run.cyclesTask, run, error);
     if (!live && !error.empty()) return usage(error);
+    ModbusRun modbus;
+    if (live && !modbus.start(modbusSetup, live->control(), run, std::cerr, error)) return usage(error);
 
     std::vector<std::unique_ptr<project::TaskRunner>> runners;
     std::vector<rt::TaskBody*> bodies;
@@ -202,6 +208,7 @@ int runCommand(const CommandLine& line) {
     std::signal(SIGTERM, onStopSignal);
     rt::PlcState state = scheduler.run();
     if (live) live->runEnded(scheduler);
+    modbus.stop();
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
     if (retain) retain->save();  // however the run ended

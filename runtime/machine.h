@@ -37,6 +37,7 @@ enum class DiagCode {
     NullPointer,   // NULL_POINTER: dereference of a null POINTER/REFERENCE
     TaskError,     // TASK_ERROR: other runtime failure of a task (message says which)
     SystemWatchdog,  // SYSTEM_WATCHDOG: a family's firmware watchdog (M241: high priorities held the CPU)
+    IoFault,       // IO_FAULT: a --modbus-client device stopped answering (once per outage); the run goes on
 };
 const char* diagCodeName(DiagCode code);
 

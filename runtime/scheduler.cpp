@@ -792,7 +792,8 @@ void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::stri
     switch (code) {
     case DiagCode::DivByZero:
     case DiagCode::Overrun:
-    case DiagCode::Watchdog: return;  // recorded; execution goes on
+    case DiagCode::Watchdog:
+    case DiagCode::IoFault: return;  // recorded; execution goes on
     case DiagCode::ArrayBounds:
     case DiagCode::NullPointer:
         // A program error inside the program-error task itself stops the PLC,
@@ -808,6 +809,11 @@ void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::stri
     case DiagCode::TaskError:
     case DiagCode::SystemWatchdog: faultStop(current, code, PlcState::Stop); return;
     }
+}
+
+void Scheduler::recordOutsideFault(DiagCode code, std::string message) {
+    trace(nullptr, "error", diagCodeName(code));
+    record(code, nullptr, "", 0, std::move(message));
 }
 
 void Scheduler::record(DiagCode code, const TaskRun* task, std::string_view pou, int line, std::string message, int file, int col) {

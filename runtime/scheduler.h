@@ -131,6 +131,10 @@ public:
     // at `at` + the target's detection delay (no sooner than its minimum
     // spacing after its previous release).
     void physicalInputsChanged(PlcTime at);
+    // A fault outside the program (IO_FAULT: a --modbus-client device stopped
+    // answering): recorded at the current PLC time with no task and no POU;
+    // the run goes on. Scheduler thread only (a LiveHooks call).
+    void recordOutsideFault(DiagCode code, std::string message);
 
 private:
     enum class Phase : uint8_t { Idle, Ready, Active };

@@ -312,6 +312,11 @@ const std::vector<CodeInfo> kCatalogue = {
      "An integer `/` or MOD had the divisor 0 while the program ran. The divisor 1 is used instead and execution "
      "continues; the entry stays in the diagnostic buffer. Test the divisor first.",
      "q := a / b;", "IF b <> 0 THEN\n    q := a / b;\nEND_IF"},
+    {"IO_FAULT", K::Runtime, "a Modbus device stopped answering (runtime, --modbus-client)",
+     "A device of the --modbus-client mapping did not answer (no connection, a timeout, or an exception answer); the "
+     "message names the device and what failed. It is recorded once per outage: its inputs keep their last values "
+     "and strun reconnects with a back-off until it answers again. The PLC keeps running (docs/modbus.md).",
+     "", ""},
     {"NULL_POINTER", K::Runtime, "null or invalid pointer (runtime)",
      "A null POINTER or REFERENCE was dereferenced, or a pointer that leads outside the project's memory, or a "
      "method was called through an interface that holds no instance. Like ARRAY_BOUNDS: the program-error task "

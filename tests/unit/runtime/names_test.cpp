@@ -16,6 +16,7 @@ TEST_CASE("diagnostic codes have their --dump names", "[names]") {
     CHECK(std::string(diagCodeName(DiagCode::NullPointer)) == "NULL_POINTER");
     CHECK(std::string(diagCodeName(DiagCode::TaskError)) == "TASK_ERROR");
     CHECK(std::string(diagCodeName(DiagCode::SystemWatchdog)) == "SYSTEM_WATCHDOG");
+    CHECK(std::string(diagCodeName(DiagCode::IoFault)) == "IO_FAULT");
 }
 
 TEST_CASE("task kinds and PLC states have their --dump names", "[names]") {
