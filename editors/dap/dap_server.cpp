@@ -262,15 +262,14 @@ bool DapServer::launch(const json& args, std::string& error) {
     line_ = line;
     if (line_.dump) event("output", {{"category", "console"}, {"output", "strun debug: --dump is ignored (stdout carries the protocol)\n"}});
     std::string usage;
-    CompileLog log;
-    if (!source::readProjectInputs(line_.files, sources_, userFiles_, log, usage)) {
+    // The checker kept for evaluate reports into log_: it must live as long.
+    if (!source::readProjectInputs(line_.files, sources_, userFiles_, log_, usage)) {
         error = usage;
         return false;
     }
     project::CompileExtras extras;
     extras.keepChecker = &checker_;
-    model_ = project::compileProject(sources_, userFiles_, log, line_.compile, nullptr, &units_, &extras);
-    log_ = std::move(log);
+    model_ = project::compileProject(sources_, userFiles_, log_, line_.compile, nullptr, &units_, &extras);
     std::ostringstream diagnostics;
     cli::DiagnosticOptions plain;
     plain.color = cli::ColorMode::Never;
@@ -281,7 +280,6 @@ bool DapServer::launch(const json& args, std::string& error) {
         error = diagnostics.str().empty() ? "the project does not compile" : diagnostics.str();
         return false;
     }
-    // The checker's log is this one from now on (evaluate's messages land there).
     if (model_->tasks.empty()) {
         error = "the project has no task to run";
         return false;

@@ -160,7 +160,7 @@ def main():
     scopes = d.scopes(frames[0]["id"])
     assert {"Locals", "Globals"} <= set(scopes), scopes
     local = d.variables(scopes["Locals"]["variablesReference"])
-    assert local["t"]["value"] == "T#1s500ms" and local["mode"]["value"] == "E_Mode#Idle", local
+    assert local["t"]["value"] == "T#1s500ms" and local["mode"]["value"] == "E_Mode#Busy", local
     assert local["name"]["value"] == "'pump'" and local["i"]["type"] == "INT", local
     assert local["arr"]["variablesReference"] > 0 and local["fb"]["variablesReference"] > 0, local
     arr = d.variables(local["arr"]["variablesReference"])
