@@ -176,6 +176,7 @@ int LspServer::run() {
                 lock.unlock();
                 recompile();
                 publishDiagnostics();
+                retired_.reset();
                 continue;
             }
             queueReady_.wait(lock, [&] { return !queue_.empty() || inputEnded_; });
@@ -224,6 +225,7 @@ void LspServer::handle(const json& message) {
     if (isRequest && dirty_ && name != "shutdown") {
         recompile();
         publishDiagnostics();
+        retired_.reset();
     }
     bool notification = !hasId;
     try {
@@ -409,6 +411,9 @@ void LspServer::recompile() {
         bytes += text.size();
         source::addProjectSourceText(path, std::move(text), *sources, userFiles, log);
     }
+    // The previous compile is freed after the diagnostics are out (freeing a
+    // large project's model is a sixth of compiling it).
+    retired_ = std::move(current_);
     current_ = std::make_shared<ProjectIndex>(std::move(sources), std::move(userFiles), std::move(log), options_);
     if (current_->checked()) lastChecked_ = current_;
 }

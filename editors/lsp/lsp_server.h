@@ -88,6 +88,7 @@ private:
     // parser): completion and signature help read it while the text is broken.
     std::shared_ptr<ProjectIndex> lastChecked_;
     std::shared_ptr<ProjectIndex> current_;
+    std::shared_ptr<ProjectIndex> retired_;
 };
 
 }  // namespace strun::editors::lsp

@@ -108,6 +108,11 @@ ProjectIndex::ProjectIndex(std::unique_ptr<SourceSet> sources, std::vector<int> 
     extras.observer = this;
     extras.modelEvenWithErrors = &model_;
     if (auto compiled = project::compileProject(*sources_, userFiles_, log_, options, nullptr, &units_, &extras)) model_ = std::move(compiled);
+    if (model_) {
+        for (sema::VarSym* g : model_->globals) globalVars_.emplace(upper(g->name), g);
+        for (const auto& info : model_->pouStore)
+            if (info->ast && !info->owner) topPous_.emplace(upper(info->name), info.get());
+    }
     if (model_)
         for (const auto& info : model_->pouStore) {
             if (info->ast) pouInfos_[info->ast] = info.get();
@@ -343,10 +348,8 @@ sema::VarSym* ProjectIndex::lookupVar(const sema::PouInfo* pou, const std::strin
         }
         if (scope->owner == scope) break;
     }
-    if (model_)
-        for (sema::VarSym* g : model_->globals)
-            if (upper(g->name) == key) return g;
-    return nullptr;
+    auto g = globalVars_.find(key);
+    return g == globalVars_.end() ? nullptr : g->second;
 }
 
 int ProjectIndex::typeSymbol(const std::string& key) const {
@@ -543,9 +546,8 @@ void ProjectIndex::resolveExpr(const ast::Expr& e, const sema::PouInfo* pou) {
             // The POU whose parameters the named arguments are.
             const sema::PouInfo* target = nullptr;
             if (const Seen* s = seen(&callee); s && s->type && s->type->pou) target = s->type->pou;
-            if (!target && callee.kind == ast::ExprKind::Name && model_)
-                for (const auto& info : model_->pouStore)
-                    if (info->ast && !info->owner && upper(info->name) == upper(callee.name)) { target = info.get(); break; }
+            if (!target && callee.kind == ast::ExprKind::Name)
+                if (auto it = topPous_.find(upper(callee.name)); it != topPous_.end()) target = it->second;
             if (!target && callee.kind == ast::ExprKind::Member)
                 if (const Seen* b = seen(callee.kids[0].get()); b && b->type) {
                     const sema::Type* t = b->type;

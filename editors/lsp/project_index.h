@@ -130,6 +130,8 @@ private:
     std::multimap<std::string, int> globalNames_;             // upper-case name -> POU, type, global, program instance
     std::map<std::string, int> enumValues_;                   // "TYPE.VALUE" upper-case -> symbol
     std::map<const ast::Pou*, const sema::PouInfo*> pouInfos_;
+    std::unordered_map<std::string, const sema::PouInfo*> topPous_;  // upper-case name -> POU (not methods)
+    std::unordered_map<std::string, sema::VarSym*> globalVars_;      // upper-case name -> global
     std::map<int, std::vector<Occurrence>> occurrences_;      // file -> sorted by position
 };
 
