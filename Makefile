@@ -3,6 +3,8 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 DEBIAN_PACKAGES = cmake make g++ antlr4 default-jre-headless libantlr4-runtime-dev libfmt-dev catch2 libcli11-dev nlohmann-json3-dev dpkg-dev libpugixml-dev libcpp-httplib-dev libmodbus-dev
+# The live monitor's tests (tests/live/): HTTP clients in Python, the page in headless Chromium driven from Node.
+DEBIAN_PACKAGES += python3 chromium nodejs npm
 EXAMPLE ?= programs/bottle_counter.st
 RUN_ARGS ?= --virtual --cycles 2000 --dump
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/diagnostic_options.h"
+#include "cli/live_options.h"
 #include "interpreter/sema/compile_options.h"
 
 namespace strun::cli {
@@ -35,6 +36,7 @@ struct CommandLine {
     std::string retainFile;                  // --retain FILE
     bool cold = false;                       // --cold
     std::optional<int64_t> retainEvery;      // --retain-every, ns
+    LiveOptions live;                        // --force, --paused, --serve, --serve-token (cli/live_options.h)
 };
 
 }  // namespace strun::cli

@@ -14,6 +14,7 @@
 #include "cli/exit_codes.h"
 #include "cli/option_types.h"
 #include "cli/diagnostic_render.h"
+#include "cli/live_options.h"
 #include "cli/run_report.h"
 #include "cli/stimulus_args.h"
 #include "interpreter/project/stimulus_build.h"
@@ -123,6 +124,7 @@ CLI::App* addRunCommand(CLI::App& app, CommandLine& line) {
            "save the --retain file every DURATION of real time (default 1s; 0: only at the end)")
         ->transform(durationValidator())
         ->type_name("DURATION");
+    addLiveOptions(*run, line.live);
     return run;
 }
 
@@ -183,6 +185,11 @@ int runCommand(const CommandLine& line) {
         return usage(std::string(line.cold ? "--cold" : "--retain-every") + " needs --retain FILE");
     }
 
+    // --force, --paused, --serve: the control plane of a live run (cli/live_options.h).
+    std::unique_ptr<LiveSession> live =
+        LiveSession::start(line.live, model, run.profile ? *run.profile : rt::defaultProfile(), specs, run.cyclesTask, run, error);
+    if (!live && !error.empty()) return usage(error);
+
     std::vector<std::unique_ptr<project::TaskRunner>> runners;
     std::vector<rt::TaskBody*> bodies;
     for (const auto& t : model.tasks) {
@@ -194,11 +201,15 @@ int runCommand(const CommandLine& line) {
     std::signal(SIGINT, onStopSignal);
     std::signal(SIGTERM, onStopSignal);
     rt::PlcState state = scheduler.run();
+    if (live) live->runEnded(scheduler);
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
     if (retain) retain->save();  // however the run ended
     printFaultReport(std::cerr, scheduler, compiled.sources, line.diagnostics, stderrWantsColor(line.diagnostics.color));
-    if (!line.dump && !line.quiet) printRunSummary(std::cerr, scheduler, state);
+    if (!line.dump && !line.quiet) {
+        printRunSummary(std::cerr, scheduler, state);
+        if (live) live->printForces(std::cerr);
+    }
     if (line.dump) {
         nlohmann::ordered_json out;
         out["state"] = rt::plcStateName(state);
@@ -208,6 +219,7 @@ int runCommand(const CommandLine& line) {
         out["programs"] = project::programsJson(model);
         out["tasks"] = scheduler.tasksJson();
         out["diagnostics"] = scheduler.diagnosticsJson();
+        out["forces"] = live ? live->forcesJson() : nlohmann::ordered_json::object();
         std::cout << out.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << std::endl;
     }
     return state == rt::PlcState::Run ? kExitOk : kExitStopped;

@@ -58,6 +58,12 @@ void AttentionTimer::arm(PlcTime at) {
     }
 }
 
+void AttentionTimer::shiftOrigin(int64_t delta) {
+    origin_.fetch_add(delta);
+    std::lock_guard lock(mutex_);
+    wakeUp_.notify_one();
+}
+
 void AttentionTimer::loop() {
     std::unique_lock lock(mutex_);
     while (!quit_) {

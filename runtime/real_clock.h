@@ -43,13 +43,15 @@ public:
     // Interpreter thread: poke the machine when PLC time reaches `at`
     // (kNever: nothing to wait for). Replaces the previous moment.
     void arm(PlcTime at);
+    // PLC time 0 moves `delta` ns later (the PLC was paused that long).
+    void shiftOrigin(int64_t delta);
     std::thread& thread() { return thread_; }
 
 private:
     void loop();
 
     Machine& machine_;
-    int64_t origin_;
+    std::atomic<int64_t> origin_;
     std::atomic<PlcTime> wakeAt_{kNever};
     std::atomic<PlcTime> sleepingUntil_{kNever};
     std::mutex mutex_;

@@ -191,6 +191,7 @@ PlcState Scheduler::run() {
     else startRegularTasks();
     if (options_.cycles && *options_.cycles == 0) ending_ = true;
 
+    if (options_.live) options_.live->runStarting(*this);
     mainLoop();
     if (state_ == PlcState::Run && machine_.now >= kPlcTimeLimit && (!options_.duration || *options_.duration > kPlcTimeLimit))
         (options_.warnings ? *options_.warnings : std::cerr)
@@ -212,6 +213,20 @@ void Scheduler::mainLoop() {
         if (stopRequested_.load()) ending_ = true;
         if (ending_) return;
         if (machine_.now >= forEnd_) return;
+        if (options_.live) {
+            // Paused between two activations. PLC time stands still meanwhile,
+            // on the real clock too: the time spent paused is taken out of it,
+            // so a pause causes no overruns (decision 0171).
+            const int64_t holdStart = options_.virtualClock ? 0 : monotonicNanos();
+            if (options_.live->holdWhilePaused() && !options_.virtualClock) {
+                const int64_t paused = monotonicNanos() - holdStart;
+                monotonicOrigin_ += paused;
+                timer_->shiftOrigin(paused);
+            }
+            refreshNow();
+            if (stopRequested_.load()) ending_ = true;
+            if (ending_ || machine_.now >= forEnd_) return;
+        }
         processDue();
         if (TaskRun* next = pickReady(nullptr)) {
             noteBusy(next);
@@ -454,28 +469,31 @@ void Scheduler::runActivation(TaskRun& task) {
     int slot = task.spec.systemSlot;
     if (system_) system_->enter(slot);
 
-    // --set variable writes due by now, then the input phase.
+    // --set variable writes due by now, live writes and forces, then the input phase.
     if (options_.stimulus) options_.stimulus->applyVariablesDue(start, options_.trace);
+    const size_t index = size_t(&task - tasks_.data());
+    if (options_.live) options_.live->activationStarting(index);
     ProcessImage& image = machine_.image;
     if (!system_ || !system_->inputsInhibited(slot))
         std::memcpy(image.inputs.data(), image.physicalInputs.data(), std::min(image.inputExtent, ProcessImage::kSize));
+    if (options_.live) options_.live->inputsLatched(index);
     armNextAttention();
 
     bool completed = task.inhibited || !task.body ? true : task.body->runActivation();
+    if (options_.live) options_.live->activationEnding(index);
 
     // An activation costs at least one statement, even an empty one, so a
     // freewheeling task can never spin at a standstill on the virtual clock.
     if (options_.virtualClock && machine_.now == start) machine_.now += machine_.stmtCost;
     refreshNow();
-    if (options_.observer) {
-        options_.observer->activationEnded(size_t(&task - tasks_.data()), machine_.now);
-        observeRunning(task, false);
-    }
+    if (options_.observer) options_.observer->activationEnded(index, machine_.now);
+    if (options_.observer || options_.live) observeRunning(task, false);
     stack_.pop_back();
     task.phase = Phase::Idle;
     task.watchdogAt = kNever;
     if (system_) system_->leave(task.spec.systemSlot);
     finishActivation(task, completed);
+    if (options_.live) options_.live->activationEnded(index, completed, stack_.empty());
 }
 
 void Scheduler::finishActivation(TaskRun& task, bool completed) {
@@ -798,6 +816,7 @@ int64_t Scheduler::taskStartCalendarNanos() {
 
 void Scheduler::observeRunning(const TaskRun& task, bool running) {
     if (options_.observer) options_.observer->taskRunning(size_t(&task - tasks_.data()), running, machine_.now);
+    if (options_.live) options_.live->taskRunning(size_t(&task - tasks_.data()), running, machine_.now);
 }
 
 std::string Scheduler::currentTaskName() const { return stack_.empty() ? std::string() : stack_.back()->spec.name; }
@@ -821,15 +840,37 @@ void Scheduler::trace(const TaskRun* task, const char* event, const char* detail
     options_.trace->write(traceLine_.data(), std::streamsize(traceLine_.size()));
 }
 
-nlohmann::ordered_json Scheduler::tasksJson() const {
+TaskStats Scheduler::statsOf(const TaskRun& task) const {
+    TaskStats s;
+    s.kind = task.spec.kind;
+    s.cycles = task.cycles;
+    s.overruns = task.overruns;
+    s.watchdogTrips = task.watchdogTrips;
+    s.started = task.started;
+    s.lastExec = task.lastExec;
+    s.minExec = task.minExec;
+    s.maxExec = task.maxExec;
+    s.sumExec = task.sumExec;
+    s.minLatency = task.minLatency;
+    s.maxLatency = task.maxLatency;
+    return s;
+}
+
+void Scheduler::copyTaskStats(std::vector<TaskStats>& out) const {
+    out.resize(tasks_.size());
+    for (size_t i = 0; i < tasks_.size(); ++i) out[i] = statsOf(tasks_[i]);
+}
+
+nlohmann::ordered_json taskStatsJson(const std::vector<TaskSpec>& specs, const std::vector<TaskStats>& stats) {
     nlohmann::ordered_json array = nlohmann::ordered_json::array();
-    for (const TaskRun& task : tasks_) {
+    for (size_t i = 0; i < specs.size() && i < stats.size(); ++i) {
+        const TaskStats& task = stats[i];
         bool ran = task.cycles > 0;
         bool started = task.started > 0;
         array.push_back(nlohmann::ordered_json{
-            {"name", task.spec.name},
-            {"kind", taskKindName(task.spec.kind)},
-            {"priority", task.spec.priority},
+            {"name", specs[i].name},
+            {"kind", taskKindName(task.kind)},
+            {"priority", specs[i].priority},
             {"cycles", task.cycles},
             {"overruns", task.overruns},
             {"watchdog_trips", task.watchdogTrips},
@@ -844,16 +885,26 @@ nlohmann::ordered_json Scheduler::tasksJson() const {
     return array;
 }
 
-nlohmann::ordered_json Scheduler::diagnosticsJson() const {
+nlohmann::ordered_json Scheduler::tasksJson() const {
+    std::vector<TaskSpec> specs;
+    std::vector<TaskStats> stats;
+    for (const TaskRun& task : tasks_) {
+        specs.push_back(task.spec);
+        stats.push_back(statsOf(task));
+    }
+    return taskStatsJson(specs, stats);
+}
+
+nlohmann::ordered_json diagnosticsJson(const std::vector<DiagEntry>& entries, const std::vector<std::string>& files) {
     nlohmann::ordered_json array = nlohmann::ordered_json::array();
-    for (const DiagEntry& entry : diagnostics_.entries()) {
-        bool known = entry.file >= 0 && size_t(entry.file) < options_.sourceFiles.size();
+    for (const DiagEntry& entry : entries) {
+        bool known = entry.file >= 0 && size_t(entry.file) < files.size();
         array.push_back(nlohmann::ordered_json{
             {"time", formatDuration(entry.time)},
             {"code", diagCodeName(entry.code)},
             {"task", entry.task},
             {"pou", entry.pou},
-            {"file", known ? options_.sourceFiles[size_t(entry.file)] : std::string()},
+            {"file", known ? files[size_t(entry.file)] : std::string()},
             {"line", entry.line},
             {"col", entry.col},
             {"message", entry.message},
@@ -861,5 +912,7 @@ nlohmann::ordered_json Scheduler::diagnosticsJson() const {
     }
     return array;
 }
+
+nlohmann::ordered_json Scheduler::diagnosticsJson() const { return rt::diagnosticsJson(diagnostics_.entries(), options_.sourceFiles); }
 
 }  // namespace strun::rt

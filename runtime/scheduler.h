@@ -25,6 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include "runtime/diag_buffer.h"
+#include "runtime/live_hooks.h"
 #include "runtime/machine.h"
 #include "runtime/plc_profile.h"
 #include "runtime/run_observer.h"
@@ -51,6 +52,7 @@ struct RunOptions {
     std::ostream* warnings = nullptr;     // --realtime notes ("strun: warning: ..."); nullptr: std::cerr
     Stimulus* stimulus = nullptr;         // --set / --stimulus writes (runtime/stimulus.h); nullptr: none
     RunObserver* observer = nullptr;      // --vcd recorder (runtime/run_observer.h); nullptr: none
+    LiveHooks* live = nullptr;            // --serve, --force, --paused, ... (live/control_plane.h); nullptr: none
     std::vector<std::string> sourceFiles;  // paths by source index, for the "file" of diagnostics
     // Maps a fault's position in the compiled text to the file the user has
     // (the XML line and column of a converted TwinCAT/PLCopen source); none: as is.
@@ -63,6 +65,19 @@ struct RunOptions {
 
 enum class PlcState { Run, Stop, Halt };
 const char* plcStateName(PlcState state);  // "RUN", "STOP", "HALT"
+
+// One task's statistics as --dump reports them ("tasks"), copied out without
+// allocating (Scheduler::copyTaskStats) so a live front end can publish them.
+struct TaskStats {
+    TaskKind kind = TaskKind::Cyclic;  // may change at run time (M340 %SW0)
+    uint64_t cycles = 0, overruns = 0, watchdogTrips = 0, started = 0;
+    PlcTime lastExec = 0, minExec = kNever, maxExec = 0, sumExec = 0;
+    PlcTime minLatency = kNever, maxLatency = 0;
+};
+// The --dump "tasks" array for tasks named and prioritised by `specs`.
+nlohmann::ordered_json taskStatsJson(const std::vector<TaskSpec>& specs, const std::vector<TaskStats>& stats);
+// The --dump "diagnostics" array; `files` names the source indices.
+nlohmann::ordered_json diagnosticsJson(const std::vector<DiagEntry>& entries, const std::vector<std::string>& files);
 
 class Scheduler : public AttentionHandler {
 public:
@@ -83,6 +98,8 @@ public:
     // returns cleanly at the next statement boundary or idle point.
     static void requestStop();
     static bool hasTask(const std::vector<TaskSpec>& tasks, std::string_view name);  // case-insensitive
+    // True from requestStop() until the run has ended.
+    static bool stopRequested() { return stopRequested_.load(std::memory_order_relaxed); }
 
     PlcState state() const { return state_; }
     PlcTime endTime() const { return endTime_; }
@@ -97,6 +114,11 @@ public:
     std::string currentTaskName() const;
     // The body of the running activation (the innermost when preempted); null between activations.
     const TaskBody* runningBody() const { return stack_.empty() ? nullptr : stack_.back()->body; }
+    // The statistics of every task, in task order, into `out` (resized; no
+    // allocation once it has the size). Scheduler thread, or after run().
+    void copyTaskStats(std::vector<TaskStats>& out) const;
+    PlcTime now() const { return machine_.now; }
+    uint64_t cyclesOf(size_t task) const { return tasks_[task].cycles; }
     // Activations started, all tasks together (the benchmark's task switches).
     uint64_t activations() const { return activations_; }
 
@@ -144,6 +166,7 @@ private:
         PlcTime lastExec = 0, minExec = kNever, maxExec = 0, sumExec = 0;
         PlcTime minLatency = kNever, maxLatency = 0;
     };
+    TaskStats statsOf(const TaskRun& task) const;
 
     void mainLoop();
     void idle();

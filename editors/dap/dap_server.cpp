@@ -246,8 +246,7 @@ bool DapServer::launch(const json& args, std::string& error) {
     // The options are `run`'s, parsed by the same command-line definition.
     CLI::App app{"strun", "strun"};
     cli::CommandLine line;
-    CLI::App* run = cli::addRunCommand(app, line);
-    (void)run;
+    cli::addRunCommand(app, line);
     std::vector<std::string> argv{"run"};
     argv.insert(argv.end(), options.begin(), options.end());
     argv.push_back("--");
@@ -294,6 +293,32 @@ bool DapServer::launch(const json& args, std::string& error) {
     }
     const rt::PlcProfile* profile = rt::findProfile(line_.compile.target);
     if (!cli::buildCommandLineStimulus(line_, *model_, profile ? *profile : rt::defaultProfile(), stimulus_, usage)) {
+        error = usage;
+        return false;
+    }
+    // The run options, as `strun run` builds them.
+    rt::RunOptions& run = runOptions_;
+    if ((line_.stmtCost || line_.start) && !line_.virtualClock) {
+        error = std::string(line_.stmtCost ? "--stmt-cost" : "--start") + " needs --virtual";
+        return false;
+    }
+    run.virtualClock = line_.virtualClock;
+    run.stmtCost = line_.stmtCost.value_or(line_.virtualClock ? 1000 : 0);
+    run.cycles = line_.cycles;
+    run.duration = line_.forDuration;
+    run.startCalendarNanos = line_.start.value_or(0);
+    run.profile = profile;
+    if (line_.trace) run.trace = &std::cerr;
+    for (int i = 0; i < sources_.size(); ++i) run.sourceFiles.push_back(sources_.file(i).path);
+    run.originalPosition = [this](int file, int line, int col) {
+        return file < sources_.size() ? sources_.file(file).original(line, col) : std::pair<int, int>{line, col};
+    };
+    std::vector<rt::TaskSpec> specs;
+    for (const auto& t : model_->tasks) specs.push_back(t.spec);
+    run.cyclesTask = !line_.task.empty() ? line_.task : specs.front().name;
+    if (!stimulus_.empty()) run.stimulus = &stimulus_;
+    live_ = cli::LiveSession::start(line_.live, *model_, profile ? *profile : rt::defaultProfile(), specs, run.cyclesTask, run, usage);
+    if (!live_ && !usage.empty()) {
         error = usage;
         return false;
     }
@@ -357,22 +382,9 @@ bool DapServer::launch(const json& args, std::string& error) {
 
 void DapServer::startRun() {
     runThread_ = std::thread([this] {
-        rt::RunOptions run;
-        run.virtualClock = line_.virtualClock;
-        run.stmtCost = line_.stmtCost.value_or(line_.virtualClock ? 1000 : 0);
-        run.cycles = line_.cycles;
-        run.duration = line_.forDuration;
-        run.startCalendarNanos = line_.start.value_or(0);
-        run.profile = rt::findProfile(line_.compile.target);
-        if (line_.trace) run.trace = &std::cerr;
-        for (int i = 0; i < sources_.size(); ++i) run.sourceFiles.push_back(sources_.file(i).path);
-        run.originalPosition = [this](int file, int line, int col) {
-            return file < sources_.size() ? sources_.file(file).original(line, col) : std::pair<int, int>{line, col};
-        };
+        rt::RunOptions run = runOptions_;
         std::vector<rt::TaskSpec> specs;
         for (const auto& t : model_->tasks) specs.push_back(t.spec);
-        run.cyclesTask = !line_.task.empty() ? line_.task : specs.front().name;
-        if (!stimulus_.empty()) run.stimulus = &stimulus_;
         run.front = session_.get();
         std::vector<rt::TaskBody*> bodies;
         for (auto& r : runners_) bodies.push_back(r.get());
@@ -383,10 +395,12 @@ void DapServer::startRun() {
             session_->attach(&scheduler);
             state = scheduler.run();
             session_->detach();
+            if (live_) live_->runEnded(scheduler);
             cli::DiagnosticOptions plain;
             plain.color = cli::ColorMode::Never;
             cli::printFaultReport(report, scheduler, sources_, plain, false);
             cli::printRunSummary(report, scheduler, state);
+            if (live_) live_->printForces(report);
         }
         runEnded_ = true;
         event("output", {{"category", "console"}, {"output", report.str()}});

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/command_line.h"
+#include "cli/live_options.h"
 #include "editors/dap/debug_session.h"
 #include "editors/dap/frame_evaluator.h"
 #include "editors/protocol/message_stream.h"
@@ -89,6 +90,9 @@ private:
     std::vector<std::unique_ptr<project::TaskRunner>> runners_;
     std::unique_ptr<DebugSession> session_;
     rt::Stimulus stimulus_;
+    rt::RunOptions runOptions_;
+    // --force, --serve, --paused: the live control plane (cli/live_options.h), as under `run`.
+    std::unique_ptr<cli::LiveSession> live_;
     bool launched_ = false;
     bool configured_ = false;
     bool stopOnEntry_ = false;

@@ -77,6 +77,8 @@ void membersJson(json& obj, const Type* t, const uint8_t* p) {
 
 }  // namespace
 
+void appendMember(json& obj, const std::string& key, json value) { append(obj, key, std::move(value)); }
+
 json valueToJson(const Type* t, const uint8_t* p) {
     switch (t->kind) {
         case TK::Bool: return *p != 0;

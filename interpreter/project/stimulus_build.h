@@ -30,4 +30,22 @@ struct StimulusEntry {
 bool buildStimulus(sema::ProgramModel& model, const std::vector<StimulusEntry>& entries, rt::Stimulus& out, std::string& error,
                    const rt::PlcProfile& profile = rt::defaultProfile());
 
+// Who writes: --set and --stimulus may set inputs only; the live interfaces
+// (live writes and forces, docs/live.md) may also set outputs and memory
+// (%QX0.1, %QW3, %MW7, %MD2 and variables located there).
+enum class WriteScope { Inputs, Anywhere };
+
+// What resolveWrite() found besides the write itself.
+struct ResolvedWrite {
+    rt::StimulusWrite write;          // dest/bit/bytes/kind/inputOffset/text as buildStimulus makes them
+    const sema::Type* type = nullptr;  // the value's type (BOOL for a bit address)
+    std::string name;                  // the variable's path as declared, or the address in upper case
+};
+
+// One NAME=VALUE (entry.at is copied), the resolver buildStimulus uses for
+// each entry. False with `error` ("ORIGIN: why"; just "why" when
+// entry.origin is empty) for an unknown name, a CONSTANT, or a bad value.
+bool resolveWrite(sema::ProgramModel& model, const StimulusEntry& entry, ResolvedWrite& out, std::string& error,
+                  const rt::PlcProfile& profile = rt::defaultProfile(), WriteScope scope = WriteScope::Inputs);
+
 }  // namespace strun::project

@@ -269,13 +269,15 @@ def main():
         f.write(TWINCAT)
     second = line_of(TWINCAT, "nCount := nCount + 10;")
     d = Dap()
-    bps = d.start([tc], ["--virtual", "--cycles", "3"], breakpoints={tc: [{"line": second}]})[tc]
+    # --force goes through the live control plane, as under `strun run`: the
+    # value is written when every activation starts.
+    bps = d.start([tc], ["--virtual", "--cycles", "3", "--force", "MAIN.nCount=5"], breakpoints={tc: [{"line": second}]})[tc]
     assert bps[0]["verified"] and bps[0]["line"] == second, bps
     d.stopped("breakpoint")
     frames = d.top_frame()
     assert frames[0]["line"] == second and frames[0]["source"]["path"] == tc, frames
     local = d.variables(d.scopes(frames[0]["id"])["Locals"]["variablesReference"])
-    assert local["nCount"]["value"] == "1", local
+    assert local["nCount"]["value"] == "6", local
     d.request("terminate")
     assert d.c.proc.wait(timeout=30) == 0
     print("dap: all checks passed")
