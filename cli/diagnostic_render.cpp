@@ -234,7 +234,9 @@ void printText(std::ostream& out, const Diagnostic& d, const SourceSet& sources,
     for (const std::string& h : d.help) out << style.paint(kGreen, "help:") << ' ' << h << '\n';
 }
 
-void printJson(std::ostream& out, const Diagnostic& d, const SourceSet& sources) {
+}  // namespace
+
+nlohmann::ordered_json diagnosticJson(const Diagnostic& d, const SourceSet& sources) {
     const Where w = locate(sources, d.loc);
     const Excerpt e = excerptFor(w, &d);
     nlohmann::ordered_json j;
@@ -258,7 +260,13 @@ void printJson(std::ostream& out, const Diagnostic& d, const SourceSet& sources)
         j["notes"].push_back(std::move(note));
     }
     j["suggestions"] = d.help;
-    out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
+    return j;
+}
+
+namespace {
+
+void printJson(std::ostream& out, const Diagnostic& d, const SourceSet& sources) {
+    out << diagnosticJson(d, sources).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
 }
 
 }  // namespace
@@ -303,8 +311,7 @@ bool stderrWantsColor(ColorMode mode) {
     return isatty(STDERR_FILENO) == 1;
 }
 
-bool printDiagnostics(const CompileLog& log, const SourceSet& sources, const DiagnosticOptions& options, std::ostream& out,
-                      bool colorTerminal) {
+std::vector<Diagnostic> shownDiagnostics(const CompileLog& log, const SourceSet& sources, const DiagnosticOptions& options) {
     std::vector<Diagnostic> shown;
     shown.reserve(log.messages().size());
     for (const Diagnostic& d : log.messages()) {
@@ -331,6 +338,12 @@ bool printDiagnostics(const CompileLog& log, const SourceSet& sources, const Dia
                                        a.loc.col == b.loc.col && a.message == b.message;
                             }),
                 shown.end());
+    return shown;
+}
+
+bool printDiagnostics(const CompileLog& log, const SourceSet& sources, const DiagnosticOptions& options, std::ostream& out,
+                      bool colorTerminal) {
+    const std::vector<Diagnostic> shown = shownDiagnostics(log, sources, options);
     Style style;
     style.on = colorTerminal;
     bool errors = false;

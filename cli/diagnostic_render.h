@@ -12,6 +12,9 @@
 #pragma once
 
 #include <ostream>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "cli/diagnostic_options.h"
 #include "interpreter/source/source_set.h"
@@ -21,6 +24,14 @@ namespace strun::cli {
 // Returns true when an error is left after -W (the project then does not compile).
 bool printDiagnostics(const CompileLog& log, const SourceSet& sources, const DiagnosticOptions& options, std::ostream& out,
                       bool colorTerminal);
+
+// The diagnostics printDiagnostics shows, in its order (-W applied, sorted,
+// duplicates removed): strun lsp publishes the same ones.
+std::vector<Diagnostic> shownDiagnostics(const CompileLog& log, const SourceSet& sources, const DiagnosticOptions& options);
+// One diagnostic as --diagnostics-format json prints it: code, severity,
+// file, line, column, end {line, column}, message, notes, suggestions, in the
+// file the user has (XML positions for converted sources).
+nlohmann::ordered_json diagnosticJson(const Diagnostic& d, const SourceSet& sources);
 
 // A runtime fault of `strun run`: its first line `FILE:LINE:COL: runtime
 // error: CODE in TASK: MESSAGE` (fixed by the outside interface, given as

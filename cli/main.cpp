@@ -15,6 +15,7 @@
 
 #include "cli/command_line.h"
 #include "cli/commands.h"
+#include "cli/editor_commands.h"
 #include "cli/exit_codes.h"
 #include "cli/test_command.h"
 #include "cli/usage_errors.h"
@@ -41,6 +42,8 @@ int runMain(int argc, char** argv) {
     CLI::App* test = addTestCommand(app, line, testLine);
     std::string explainCode;
     CLI::App* explain = addExplainCommand(app, explainCode);
+    CLI::App* lsp = addLspCommand(app);
+    CLI::App* debug = addDebugCommand(app);
     CLI::App* help = app.add_subcommand("help", "show the commands, or the options of COMMAND");
     std::string helpTopic;
     help->add_option("COMMAND", helpTopic, "run, check, test, explain")->type_name("COMMAND");
@@ -62,6 +65,8 @@ int runMain(int argc, char** argv) {
     if (check->parsed()) return checkCommand(line);
     if (test->parsed()) return testCommand(line, testLine);
     if (explain->parsed()) return explainCommand(explainCode);
+    if (lsp->parsed()) return lspCommand();
+    if (debug->parsed()) return debugCommand();
     return kExitUsage;
 }
 

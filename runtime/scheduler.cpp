@@ -133,7 +133,7 @@ PlcState Scheduler::run() {
     // The stop flag is cleared when a run ends, not here: a Ctrl-C that comes
     // between installing the handler and this call still stops the run.
     runningMachine_.store(&machine_);
-    machine_.handler = this;
+    machine_.handler = options_.front ? options_.front : this;
     for (const ImageArea* area : {&machine_.image.inputs, &machine_.image.outputs, &machine_.image.memory})
         machine_.memory.add(area->data(), area->size());
     machine_.now = 0;
@@ -837,6 +837,8 @@ void Scheduler::armNextAttention() {
     } else {
         timer_->arm(at);
     }
+    // strun debug sees every statement boundary (decision 0190).
+    if (options_.front) machine_.requestAttention();
 }
 
 PlcTime Scheduler::currentTime() {

@@ -57,6 +57,10 @@ struct RunOptions {
     // Maps a fault's position in the compiled text to the file the user has
     // (the XML line and column of a converted TwinCAT/PLCopen source); none: as is.
     std::function<std::pair<int, int>(int file, int line, int col)> originalPosition;
+    // strun debug: a handler that the interpreter calls instead of the
+    // scheduler; it forwards every call to the scheduler (decision 0190).
+    // nullptr: the scheduler itself, as in every run without a debugger.
+    AttentionHandler* front = nullptr;
 };
 
 enum class PlcState { Run, Stop, Halt };
@@ -108,6 +112,8 @@ public:
     const std::vector<DiagEntry>& stopFaults() const { return stopFaults_; }
     const std::vector<std::string>& sourceFiles() const { return options_.sourceFiles; }
     std::string currentTaskName() const;
+    // The body of the running activation (the innermost when preempted); null between activations.
+    const TaskBody* runningBody() const { return stack_.empty() ? nullptr : stack_.back()->body; }
     // The statistics of every task, in task order, into `out` (resized; no
     // allocation once it has the size). Scheduler thread, or after run().
     void copyTaskStats(std::vector<TaskStats>& out) const;

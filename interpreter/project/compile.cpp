@@ -31,7 +31,7 @@ std::unique_ptr<ParsedLibrary> parseLibrary(CompileLog& log) {
 
 std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
                                                    const sema::CompileOptions& options, ParsedLibrary* library,
-                                                   std::vector<ast::CompilationUnit>* keepUnits) {
+                                                   std::vector<ast::CompilationUnit>* keepUnits, CompileExtras* extras) {
     std::vector<ast::CompilationUnit> units;
     std::set<int> libraryFiles;
     // Only the library files the project mentions (decision 0150), also when
@@ -82,7 +82,9 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     const SyntaxDamage damage = assessSyntaxErrors(log);
     if (log.hasErrors() && !damage.checkable) return nullptr;
     auto model = std::make_unique<sema::ProgramModel>();
-    sema::Checker checker(*model, log);
+    auto checkerOwner = std::make_unique<sema::Checker>(*model, log);
+    sema::Checker& checker = *checkerOwner;
+    if (extras && extras->observer) checker.setExprObserver(extras->observer);
     checker.setLibraryFiles(libraryFiles);
     checker.setLibraryNames(embeddedLibraryNames().types, embeddedLibraryNames().functions);
     checker.setCompileOptions(options);
@@ -103,7 +105,11 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     });
     if (failure) std::rethrow_exception(failure);
     if (!damage.lines.empty()) dropSyntaxCascades(log, damage);
-    if (log.hasErrors()) return nullptr;
+    if (extras && extras->keepChecker) *extras->keepChecker = std::move(checkerOwner);
+    if (log.hasErrors()) {
+        if (extras && extras->modelEvenWithErrors) *extras->modelEvenWithErrors = std::move(model);
+        return nullptr;
+    }
     testing::recordProject(*model, *model->tests);
     // The AST is referenced by nothing at run time: all names are resolved.
     return model;

@@ -11,6 +11,11 @@
 #include "interpreter/sema/program_model.h"
 #include "interpreter/source/source_set.h"
 
+namespace strun::sema {
+class Checker;
+class ExprObserver;
+}  // namespace strun::sema
+
 namespace strun::project {
 
 // The embedded standard library parsed once, for callers that compile many
@@ -24,6 +29,18 @@ struct ParsedLibrary {
 };
 std::unique_ptr<ParsedLibrary> parseLibrary(CompileLog& log);
 
+// What the editor services (strun lsp, strun debug) want from a compile
+// besides the runnable model; `run` and `check` pass none.
+struct CompileExtras {
+    sema::ExprObserver* observer = nullptr;  // told about every checked expression
+    // Receives the model also when the project has errors (the declarations
+    // that did check: an editor still navigates a project with mistakes).
+    std::unique_ptr<sema::ProgramModel>* modelEvenWithErrors = nullptr;
+    // Receives the checker, for expressions checked later in a POU's scope
+    // (it refers to the model, the log and the kept AST).
+    std::unique_ptr<sema::Checker>* keepChecker = nullptr;
+};
+
 // Returns null when the project does not compile (errors are in `log`).
 // With `library`, its parsed units are lent to the checker (which does not
 // change them) instead of parsing the standard library again. With
@@ -31,6 +48,7 @@ std::unique_ptr<ParsedLibrary> parseLibrary(CompileLog& log);
 // freed: a process that ends right after compiling need not free it.
 std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
                                                    const sema::CompileOptions& options = {}, ParsedLibrary* library = nullptr,
-                                                   std::vector<ast::CompilationUnit>* keepUnits = nullptr);
+                                                   std::vector<ast::CompilationUnit>* keepUnits = nullptr,
+                                                   CompileExtras* extras = nullptr);
 
 }  // namespace strun::project

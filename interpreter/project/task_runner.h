@@ -21,6 +21,8 @@ public:
     bool currentFileAndColumn(int& file, int& col) const override;
     // --retain: the store saved periodically between activations.
     void setRetainStore(class RetainStore* store) { retain_ = store; }
+    // strun debug: the evaluator's registers (current statement, POU, frame, depth).
+    const exec::Ctx& context() const { return ctx_; }
 
 private:
     void runInitCalls();

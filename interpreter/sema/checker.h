@@ -20,6 +20,7 @@
 namespace strun::sema {
 
 class Checker;
+class ExprObserver;
 
 // What a standard-library binding sees of a call (interpreter/builtins/).
 struct CallArgs {
@@ -166,6 +167,7 @@ private:
     exec::Stmt* checkRefAssign(const ast::Stmt& s);
     exec::Stmt* checkCase(const ast::Stmt& s);
     Checked checkExpr(const ast::Expr& e);
+    Checked checkExprOfKind(const ast::Expr& e);
     Checked checkCondition(const ast::Expr& e, const char* what);
     Checked checkLiteral(const ast::Expr& e);
     Checked checkName(const ast::Expr& e);
@@ -260,6 +262,7 @@ private:
     std::vector<std::unique_ptr<ast::TypeDecl>> inlineEnumDecls_;
     std::set<int> libraryFiles_;
     std::vector<std::string> libraryTypeNames_, libraryFunctionNames_;  // also of library files not loaded
+    ExprObserver* observer_ = nullptr;
     Diagnostic discarded_;  // what warning() hands back for the library's own lines (never printed)
     const rt::PlcProfile* profile_ = &rt::defaultProfile();
 
@@ -272,6 +275,15 @@ public:
         libraryTypeNames_ = std::move(types);
         libraryFunctionNames_ = std::move(functions);
     }
+    // strun lsp: told about every checked expression (expr_observer.h).
+    void setExprObserver(ExprObserver* observer) { observer_ = observer; }
+    // strun debug: an expression typed in an editor, checked in the scope of
+    // `pou` (null: globals only), for evaluation on a live frame
+    // (checker_frame_expr.cpp). Errors go to the checker's log. `frameBytes`:
+    // the frame the evaluation needs (the POU's own and the temporaries).
+    Checked checkInScope(const ast::Expr& e, PouInfo* pou, uint32_t& frameBytes);
+    // The POUs by upper-case name (the debugger finds a frame's POU here).
+    const std::map<std::string, PouInfo*>& pous() const { return pous_; }
     // The --target whose task rules, defaults and system variables apply.
     void setProfile(const rt::PlcProfile& profile) { profile_ = &profile; }
     const rt::PlcProfile& profile() const { return *profile_; }

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/expr_observer.h"
 #include "interpreter/sema/fuse.h"
 #include "interpreter/sema/node_factory.h"
 #include "stdlib/literals.h"
@@ -820,6 +821,13 @@ Checked Checker::checkIndex(const ast::Expr& e) {
 // ---------------------------------------------------------------- dispatch
 
 Checked Checker::checkExpr(const ast::Expr& e) {
+    if (!observer_) return checkExprOfKind(e);
+    Checked c = checkExprOfKind(e);
+    observer_->checked(e, c, pou_);
+    return c;
+}
+
+Checked Checker::checkExprOfKind(const ast::Expr& e) {
     switch (e.kind) {
         case ast::ExprKind::Literal: return checkLiteral(e);
         case ast::ExprKind::Name: return checkName(e);

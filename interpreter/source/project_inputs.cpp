@@ -60,6 +60,10 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
 
 }  // namespace
 
+void addProjectSourceText(const std::string& path, std::string text, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log) {
+    addFile(path, std::move(text), sources, userFiles, log);
+}
+
 bool isProjectSource(const std::string& path) {
     const std::string ext = lowerExtension(path);
     return ext == ".st" || ext == ".xml" || isTwinCatObject(path);

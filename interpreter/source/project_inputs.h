@@ -14,6 +14,10 @@ namespace strun::source {
 // What a directory contributes: ST, PLCopen XML and TwinCAT objects, by extension.
 bool isProjectSource(const std::string& path);
 
+// One source given as text (an editor's open document): converted by its
+// extension as a file of that name would be.
+void addProjectSourceText(const std::string& path, std::string text, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log);
+
 // Reads every FILE (a FILE of any other extension is ST) and every source
 // file under a DIR, recursively, in name order. Returns false with
 // `usageError` set when a path does not exist, cannot be read, or is a

@@ -1,0 +1,18 @@
+// strun lsp: the language server (editors/lsp/lsp_server.h).
+#include <cstdio>
+
+#include "cli/editor_commands.h"
+#include "editors/lsp/lsp_server.h"
+
+namespace strun::cli {
+
+CLI::App* addLspCommand(CLI::App& app) {
+    return app.add_subcommand("lsp", "a Language Server Protocol server on stdin/stdout (docs/editors.md)");
+}
+
+int lspCommand() {
+    editors::lsp::LspServer server(stdin, stdout);
+    return server.run();
+}
+
+}  // namespace strun::cli
