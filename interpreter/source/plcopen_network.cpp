@@ -347,7 +347,8 @@ struct Network {
             for (const PinIn& p : allInputs(els[i]))
                 for (const Conn& c : p.conns) {
                     int s = resolve(c);
-                    if (s < 0 || (els[s].kind == Kind::Block && els[s].fb)) continue;
+                    // FB instances and in-out variables hold their value: a loop through them reads the previous one.
+                    if (s < 0 || (els[s].kind == Kind::Block && els[s].fb) || els[s].kind == Kind::InOutVar) continue;
                     if (mark[s] == 1) {
                         els[s].materialized = true;
                         if (els[s].kind != Kind::Block && els[s].kind != Kind::Contact && els[s].kind != Kind::Coil) {
