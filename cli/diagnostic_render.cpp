@@ -316,6 +316,11 @@ std::vector<Diagnostic> shownDiagnostics(const CompileLog& log, const SourceSet&
     shown.reserve(log.messages().size());
     for (const Diagnostic& d : log.messages()) {
         Diagnostic copy = d;
+        // ST made from an LD/FBD/SFC element: the note names the element (`rung 3, contact 'bStart'`).
+        if (d.loc.file >= 0 && d.loc.file < sources.size()) {
+            const std::string& element = sources.file(d.loc.file).element(d.loc.line);
+            if (!element.empty()) copy.notes.insert(copy.notes.begin(), DiagnosticNote{std::nullopt, "in " + element});
+        }
         if (copy.severity == Severity::Warning) {
             auto it = options.levels.find(copy.code);
             const WarningLevel level = it != options.levels.end() ? it->second

@@ -48,7 +48,10 @@ const std::vector<CodeInfo> kCatalogue = {
      "", ""},
     {"E0008", K::Error, "not a usable source file",
      "A FILE that strun cannot read as a project source: XML that is not well-formed, XML that is not a PLCopen TC6 "
-     "project, a POU whose body is written in another language than ST (LD, FBD, IL, SFC, CFC), or a TwinCAT task "
+     "project, a POU whose body is written in a language strun does not run (IL; in TwinCAT files also LD, FBD, SFC, "
+     "CFC), an LD, FBD or SFC body of a PLCopen file that cannot be translated (an element strun does not support, a "
+     "connection to a missing element, an SFC chart without initial step or with a step that can never become active; "
+     "docs/graphical.md), or a TwinCAT task "
      "object (.TcTTO) whose CycleTime or Priority is not a whole number or whose PouCall names no program.",
      "", ""},
     {"E0009", K::Error, "a declaration in the wrong place",

@@ -26,7 +26,7 @@ const Rule kErrorRules[] = {
     {"E0002", "^syntax error: (expected ';'|.*, expected ';'$)"},
     {"E0001", "^syntax error: "},
     {"E0007", "more than [0-9]+ tokens|too complex|nested more than|too large|above 256 MiB|declarations nested"},
-    {"E0008", "not well-formed XML|not a PLCopen|has a body in|^no (POU|PROGRAM)|XML|^task object"},
+    {"E0008", "not well-formed XML|not a PLCopen|has a body in|^no (POU|PROGRAM)|XML|^task object|^in the (LD|FBD|SFC) (body|chart) of"},
     {"E0009", "^only VAR_GLOBAL is allowed|can only be declared in a TYPE|^ACTION '|access path|is not a simple name|"
               "^unknown assignment operator|has no body|accessor of property|has more than one (GET|SET)|"
               "READ_ONLY|READ_WRITE|cannot have an ACTION"},

@@ -2,48 +2,32 @@
 // data types, POUs with their interface and ST body, actions, CODESYS methods
 // and global variable lists (addData), configurations with resources, tasks
 // and program instances. Declarations are written as ST lines pointing at
-// the XML element they come from; bodies are copied with their positions.
+// the XML element they come from; ST bodies are copied with their positions,
+// LD, FBD and SFC bodies translated to ST (plcopen_network.cpp, plcopen_sfc.cpp).
 #include <cctype>
 #include <cstring>
 #include <set>
 
 #include <pugixml.hpp>
 
+#include "interpreter/source/plcopen_graphical.h"
+#include "interpreter/source/plcopen_xml.h"
 #include "interpreter/source/xml_conversion.h"
 
 namespace strun::source {
 
 namespace {
 
+using namespace plcopen;
+
+std::string upperCase(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
 // TC6 v2.01 and v2.00: CODESYS V3, TwinCAT and Machine Expert export 2.00, Beremiz 2.01.
 constexpr const char* kTc6Namespaces[] = {"http://www.plcopen.org/xml/tc6_0201", "http://www.plcopen.org/xml/tc6_0200"};
 constexpr int kMaxTypeDepth = 64;  // nested type elements: far beyond real projects
-
-// Element name without a namespace prefix (`xhtml:p` -> `p`).
-std::string localName(const pugi::xml_node& n) {
-    std::string s = n.name();
-    size_t colon = s.find(':');
-    return colon == std::string::npos ? s : s.substr(colon + 1);
-}
-
-pugi::xml_node child(const pugi::xml_node& n, const char* name) {
-    for (pugi::xml_node c : n.children())
-        if (c.type() == pugi::node_element && localName(c) == name) return c;
-    return {};
-}
-
-std::vector<pugi::xml_node> children(const pugi::xml_node& n, const char* name) {
-    std::vector<pugi::xml_node> out;
-    for (pugi::xml_node c : n.children())
-        if (c.type() == pugi::node_element && localName(c) == name) out.push_back(c);
-    return out;
-}
-
-pugi::xml_node firstElement(const pugi::xml_node& n) {
-    for (pugi::xml_node c : n.children())
-        if (c.type() == pugi::node_element) return c;
-    return {};
-}
 
 // ISO 8601 duration (PT0.01S, PT1H2M) or an IEC literal (T#10ms) -> an IEC literal.
 std::string durationLiteral(std::string text) {
@@ -169,29 +153,33 @@ struct Reader : XmlConversion {
         }
     }
 
-    // The ST text of <body><ST>...</ST></body> (inside xhtml elements, CDATA or text).
-    void bodyOf(const pugi::xml_node& owner, const std::string& pouName) {
+    // The body of a POU, action, method or transition: ST copied with its
+    // positions, LD/FBD/SFC translated (hidden variables into `tr.declarations`).
+    void bodyOf(const pugi::xml_node& owner, const std::string& pouName, PouContext& ctx, Translation& tr) {
         pugi::xml_node body = child(owner, "body");
         if (!body) return;
         pugi::xml_node lang = firstElement(body);
+        while (lang && (localName(lang) == "documentation" || localName(lang) == "addData")) lang = lang.next_sibling();
         if (!lang) return;
         const std::string k = localName(lang);
-        if (k != "ST") {
-            error(lang, "'" + pouName + "' has a body in " + k + "; strun runs Structured Text (ST) bodies only");
-            return;
+        if (k == "ST") {
+            copyStText(*this, lang, "", tr.body);
+        } else if (k == "LD" || k == "FBD") {
+            translateNetwork(*this, lang, k == "LD", ctx, tr);
+        } else if (k == "SFC") {
+            translateChart(*this, lang, ctx, tr);
+        } else if (k == "IL") {
+            error(lang, "'" + pouName + "' has a body in IL; Instruction List is deprecated (IEC 61131-3, 4th edition) and strun does not run it: "
+                        "rewrite it in ST, LD or FBD");
+        } else {
+            error(lang, "'" + pouName + "' has a body in " + k + ", which strun does not run (it runs ST, LD, FBD and SFC)");
         }
-        copyText(lang, 0);
     }
 
-    void copyText(const pugi::xml_node& n, int depth) {
-        if (depth > kMaxTypeDepth) return;
-        for (pugi::xml_node c : n.children()) {
-            if (c.type() == pugi::node_cdata || c.type() == pugi::node_pcdata) {
-                auto [line, col] = where(c);
-                out.verbatim(c.value(), line, col);
-            } else if (c.type() == pugi::node_element) {
-                copyText(c, depth + 1);
-            }
+    void writeLines(const std::vector<StLine>& lines) {
+        for (const StLine& l : lines) {
+            if (l.verbatim) out.verbatim(l.text, l.line, l.col, l.element);
+            else out.written(l.text, l.line, l.col, l.element);
         }
     }
 
@@ -225,26 +213,93 @@ struct Reader : XmlConversion {
             error(p, "POU '" + name + "' has an unknown pouType '" + kind + "'");
             return;
         }
+        // Bodies first: graphical ones declare hidden variables, written with the POU's.
+        PouContext ctx;
+        ctx.project = &projectTypes;
+        ctx.pouName = name;
+        collectVariables(itf, ctx.variables);
+        for (pugi::xml_node a : children(child(p, "actions"), "action")) ctx.actions.insert(upperCase(a.attribute("name").value()));
+        for (pugi::xml_node t : children(child(p, "transitions"), "transition")) ctx.transitions[upperCase(t.attribute("name").value())] = t;
+        Translation main;
+        bodyOf(p, name, ctx, main);
+        std::vector<std::pair<pugi::xml_node, Translation>> methods, actions;
+        for (pugi::xml_node method : codesysMethods(p)) {
+            Translation t;
+            bodyOf(method, name + "." + method.attribute("name").value(), ctx, t);
+            methods.push_back({method, std::move(t)});
+        }
+        for (pugi::xml_node a : children(child(p, "actions"), "action")) {
+            Translation t;
+            bodyOf(a, name + "." + a.attribute("name").value(), ctx, t);
+            actions.push_back({a, std::move(t)});
+        }
+        std::vector<StLine> hidden = main.declarations;
+        for (auto* group : {&methods, &actions})
+            for (auto& [node, t] : *group) hidden.insert(hidden.end(), t.declarations.begin(), t.declarations.end());
+
         std::string head = std::string(keyword) + " " + name;
         if (kind == "function") head += " : " + (child(itf, "returnType") ? typeText(child(itf, "returnType")) : std::string("INT"));
         written(p, head);
         interfaceOf(itf);
-        bodyOf(p, name);
-        for (pugi::xml_node method : codesysMethods(p)) {
+        if (!hidden.empty()) {
+            written(p, "VAR");
+            writeLines(hidden);
+            written(p, "END_VAR");
+        }
+        writeLines(main.body);
+        for (auto& [method, t] : methods) {
             pugi::xml_node mitf = child(method, "interface");
             std::string mhead = std::string("METHOD ") + method.attribute("name").value();
             if (pugi::xml_node r = child(mitf, "returnType")) mhead += " : " + typeText(r);
             written(method, mhead);
             interfaceOf(mitf);
-            bodyOf(method, name + "." + method.attribute("name").value());
+            writeLines(t.body);
             written(method, "END_METHOD");
         }
-        for (pugi::xml_node a : children(child(p, "actions"), "action")) {
+        for (auto& [a, t] : actions) {
             written(a, std::string("ACTION ") + a.attribute("name").value() + ":");
-            bodyOf(a, name + "." + a.attribute("name").value());
+            writeLines(t.body);
             written(a, "END_ACTION");
         }
         written(p, std::string("END_") + keyword);
+    }
+
+    // --- what graphical bodies need to know about the project ----------------
+
+    ProjectTypes projectTypes;
+
+    void collectVariables(const pugi::xml_node& itf, std::map<std::string, std::string>& into) {
+        for (pugi::xml_node section : itf.children())
+            if (section.type() == pugi::node_element)
+                for (pugi::xml_node v : children(section, "variable")) into[upperCase(v.attribute("name").value())] = typeText(child(v, "type"));
+    }
+
+    void collectPou(const pugi::xml_node& p) {
+        const std::string name = upperCase(p.attribute("name").value());
+        const std::string kind = p.attribute("pouType").value();
+        pugi::xml_node itf = child(p, "interface");
+        if (kind == "function") {
+            projectTypes.functionResults[name] = child(itf, "returnType") ? typeText(child(itf, "returnType")) : "INT";
+            for (pugi::xml_node v : children(child(itf, "inputVars"), "variable")) projectTypes.functionInputs[name].push_back(v.attribute("name").value());
+        } else if (kind == "functionBlock") {
+            auto& outs = projectTypes.blockOutputs[name];
+            for (pugi::xml_node v : children(child(itf, "outputVars"), "variable")) outs[upperCase(v.attribute("name").value())] = typeText(child(v, "type"));
+        }
+    }
+
+    void collectProject(const pugi::xml_node& n, int depth) {
+        if (depth > kMaxTypeDepth) return;
+        for (pugi::xml_node c : n.children()) {
+            if (c.type() != pugi::node_element) continue;
+            const std::string k = localName(c);
+            if (k == "pou") {
+                collectPou(c);
+            } else if (k == "globalVars") {
+                for (pugi::xml_node v : children(c, "variable")) projectTypes.globals[upperCase(v.attribute("name").value())] = typeText(child(v, "type"));
+            } else if (k != "body" && k != "interface") {
+                collectProject(c, depth + 1);
+            }
+        }
     }
 
     // CODESYS keeps methods in <addData><data name=".../method"><Method>.
@@ -323,6 +378,7 @@ struct Reader : XmlConversion {
         if (!load(doc)) return;
         pugi::xml_node project = firstElement(doc);
         pugi::xml_node types = child(project, "types");
+        collectProject(project, 0);
         std::set<std::string> declared;
         for (pugi::xml_node dt : children(child(types, "dataTypes"), "dataType")) {
             dataType(dt);

@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "interpreter/source/read_source.h"
+#include "interpreter/source/st_textual_sfc.h"
 #include "interpreter/source/xml_inputs.h"
 
 namespace strun::source {
@@ -45,6 +46,8 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
             return;
         }
         converted = readPlcOpen(text);
+    } else if (mayHoldTextualSfc(text)) {
+        converted = convertTextualSfc(text);  // ST with textual SFC: the SFC elements become ST (docs/graphical.md)
     } else {
         userFiles.push_back(sources.add(path, std::move(text)));
         return;

@@ -17,11 +17,14 @@ namespace strun {
 // Where one line of a converted source (ST assembled from an XML file) comes
 // from: line `line` of the original file, columns shifted by `colShift`; a
 // line strun wrote itself (END_FUNCTION_BLOCK, a declaration built from XML
-// elements) points at `fixedCol` of the element it was made from.
+// elements) points at `fixedCol` of the element it was made from. ST made
+// from a graphical element (LD, FBD, SFC) names it in `element` (`rung 3,
+// contact 'bStart'`), which diagnostics on the line add as a note.
 struct LineOrigin {
     int line = 1;
     int colShift = 0;
     int fixedCol = -1;
+    std::string element;
 };
 
 struct SourceFile {
@@ -38,6 +41,12 @@ struct SourceFile {
         if (origins.empty() || line < 1) return {line, col};
         const LineOrigin& o = origins[std::min<size_t>(static_cast<size_t>(line), origins.size()) - 1];
         return {o.line, o.fixedCol >= 0 ? o.fixedCol : col + o.colShift};
+    }
+    // The graphical element a line of `text` was made from, or "".
+    const std::string& element(int line) const {
+        static const std::string none;
+        if (origins.empty() || line < 1) return none;
+        return origins[std::min<size_t>(static_cast<size_t>(line), origins.size()) - 1].element;
     }
 };
 

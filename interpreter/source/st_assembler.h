@@ -38,7 +38,7 @@ private:
 class StAssembler {
 public:
     // ST copied from the original file; its first character is at (line, col).
-    void verbatim(std::string_view st, int line, int col) {
+    void verbatim(std::string_view st, int line, int col, const std::string& element = {}) {
         bool first = true;
         size_t start = 0;
         while (start <= st.size()) {
@@ -46,7 +46,7 @@ public:
             std::string_view piece = st.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
             text_.append(piece);
             text_.push_back('\n');
-            origins_.push_back({line, first ? col - 1 : 0, -1});
+            origins_.push_back({line, first ? col - 1 : 0, -1, element});
             first = false;
             ++line;
             if (end == std::string_view::npos) break;
@@ -54,10 +54,10 @@ public:
         }
     }
     // A line strun writes itself; messages about it point at (line, col) of the element it stands for.
-    void written(std::string_view st, int line, int col) {
+    void written(std::string_view st, int line, int col, const std::string& element = {}) {
         text_.append(st);
         text_.push_back('\n');
-        origins_.push_back({line, 0, col});
+        origins_.push_back({line, 0, col, element});
     }
     std::string& text() { return text_; }
     std::vector<LineOrigin>& origins() { return origins_; }

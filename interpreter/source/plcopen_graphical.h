@@ -1,0 +1,66 @@
+// LD, FBD and SFC bodies of PLCopen TC6 XML, translated to ST (docs/graphical.md).
+// A graphical body becomes ST statements that the ST parser and checker read
+// like any other body, so the runtime rules, diagnostics, tracing and tests
+// of ST apply unchanged; every generated line points at the XML element it
+// comes from and names it (`rung 3, contact 'bStart'`, `block 12 (TON)`,
+// `step 'Fill'`). Variables the translation needs (temporaries, edge
+// detectors, step states, action control) are declared in one extra VAR
+// section of the POU.
+#pragma once
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <pugixml.hpp>
+
+#include "interpreter/source/xml_conversion.h"
+
+namespace strun::source::plcopen {
+
+// One line of generated ST: written by strun for an element (`verbatim`
+// false), or ST copied from the XML (an inline SFC condition or action body).
+struct StLine {
+    std::string text;
+    int line = 1, col = 1;
+    std::string element;  // what diagnostics on this line name; empty: nothing
+    bool verbatim = false;
+};
+
+// What a translation knows about the project around the body (names upper case).
+struct ProjectTypes {
+    std::map<std::string, std::string> globals;                             // global variable -> type text
+    std::map<std::string, std::string> functionResults;                     // user FUNCTION -> result type
+    std::map<std::string, std::vector<std::string>> functionInputs;         // user FUNCTION -> its input names in order
+    std::map<std::string, std::map<std::string, std::string>> blockOutputs;  // user FUNCTION_BLOCK -> output -> type
+};
+
+struct PouContext {
+    const ProjectTypes* project = nullptr;
+    std::string pouName;
+    std::map<std::string, std::string> variables;  // the POU's variables (upper case) -> type text
+    std::set<std::string> actions;                 // the POU's actions (upper case)
+    std::map<std::string, pugi::xml_node> transitions;  // the POU's named transitions (upper case) -> <transition>
+    int bodies = 0;                                // bodies translated so far (names of hidden variables)
+
+    // The type of a variable of the POU or a global (upper-case lookup), or "".
+    std::string typeOf(const std::string& name) const;
+};
+
+// Generated ST of one body, and the hidden variables it declares.
+struct Translation {
+    std::vector<StLine> body;
+    std::vector<StLine> declarations;
+};
+
+// An LD or FBD network (<LD>/<FBD> element) as ST statements.
+void translateNetwork(XmlConversion& conv, const pugi::xml_node& lang, bool ld, PouContext& ctx, Translation& out);
+
+// An SFC chart (<SFC> element) as ST statements.
+void translateChart(XmlConversion& conv, const pugi::xml_node& lang, PouContext& ctx, Translation& out);
+
+// The ST of <ST> / <inline><ST> ... text: copied with its XML positions.
+void copyStText(XmlConversion& conv, const pugi::xml_node& n, const std::string& element, std::vector<StLine>& out, int depth = 0);
+
+}  // namespace strun::source::plcopen

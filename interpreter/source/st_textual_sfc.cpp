@@ -1,0 +1,345 @@
+// Textual SFC in ST files (IEC 61131-3 3rd edition 6.7.5 / 2nd edition
+// 2.6.6): INITIAL_STEP, STEP ... END_STEP with action associations,
+// TRANSITION [name] [(PRIORITY := n)] FROM steps TO steps := condition;
+// END_TRANSITION (or `: statements END_TRANSITION` assigning the name), and
+// the POU's ACTIONs. A POU holding an INITIAL_STEP has its SFC elements
+// replaced by the same ST an SFC chart from PLCopen XML becomes
+// (sfc_chart.cpp); the rest of the file is kept, and every line knows where
+// it came from, as for XML files. This is a reading stage of its own, like
+// the XML readers, so the LL(1) ST grammar (decisions 0157-0159) is not
+// changed (decision 0233).
+#include "interpreter/source/st_textual_sfc.h"
+
+#include <cctype>
+#include <cstring>
+#include <map>
+#include <set>
+
+#include "interpreter/source/sfc_chart.h"
+#include "interpreter/source/st_assembler.h"
+
+namespace strun::source {
+
+namespace {
+
+std::string upper(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+struct Token {
+    std::string text, up;  // as written; upper case
+    size_t begin = 0, end = 0;
+    int line = 1, col = 1;
+    bool word = false;
+};
+
+// Words, strings, numbers and symbols, without comments, pragmas and blanks.
+std::vector<Token> tokenize(const std::string& s) {
+    std::vector<Token> out;
+    size_t i = 0;
+    int line = 1;
+    size_t lineStart = 0;
+    auto advance = [&](size_t to) {
+        for (; i < to && i < s.size(); ++i)
+            if (s[i] == '\n') {
+                ++line;
+                lineStart = i + 1;
+            }
+    };
+    while (i < s.size()) {
+        const char c = s[i];
+        if (std::isspace(static_cast<unsigned char>(c))) { advance(i + 1); continue; }
+        if (s.compare(i, 2, "(*") == 0) { size_t e = s.find("*)", i + 2); advance(e == std::string::npos ? s.size() : e + 2); continue; }
+        if (s.compare(i, 2, "/*") == 0) { size_t e = s.find("*/", i + 2); advance(e == std::string::npos ? s.size() : e + 2); continue; }
+        if (s.compare(i, 2, "//") == 0) { size_t e = s.find('\n', i); advance(e == std::string::npos ? s.size() : e); continue; }
+        if (c == '{') { size_t e = s.find('}', i); advance(e == std::string::npos ? s.size() : e + 1); continue; }
+        Token t;
+        t.begin = i;
+        t.line = line;
+        t.col = static_cast<int>(i - lineStart) + 1;
+        size_t e = i + 1;
+        if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+            while (e < s.size() && (std::isalnum(static_cast<unsigned char>(s[e])) || s[e] == '_')) ++e;
+            // typed literals and times (T#5s, INT#3) are one token
+            if (e < s.size() && s[e] == '#') {
+                ++e;
+                while (e < s.size() && (std::isalnum(static_cast<unsigned char>(s[e])) || s[e] == '_' || s[e] == '.' || s[e] == ':' || s[e] == '-')) ++e;
+            } else {
+                t.word = true;
+            }
+        } else if (std::isdigit(static_cast<unsigned char>(c))) {
+            while (e < s.size() && (std::isalnum(static_cast<unsigned char>(s[e])) || s[e] == '_' || s[e] == '.' || s[e] == '#')) ++e;
+        } else if (c == '\'' || c == '"') {
+            while (e < s.size() && s[e] != c) e += s[e] == '$' ? 2 : 1;
+            e = std::min(e + 1, s.size());
+        } else if (s.compare(i, 2, ":=") == 0 || s.compare(i, 2, "=>") == 0 || s.compare(i, 2, "<=") == 0 || s.compare(i, 2, ">=") == 0 ||
+                   s.compare(i, 2, "<>") == 0 || s.compare(i, 2, "**") == 0) {
+            e = i + 2;
+        }
+        t.text = s.substr(i, e - i);
+        t.up = upper(t.text);
+        t.end = e;
+        out.push_back(std::move(t));
+        advance(e);
+    }
+    return out;
+}
+
+struct Reader {
+    const std::string& src;
+    std::vector<Token> toks;
+    Converted result;
+    std::vector<std::pair<size_t, size_t>> blanked;  // SFC spans, replaced by blanks
+    struct Insert {
+        size_t at;
+        plcopen::Translation tr;
+    };
+    std::vector<Insert> inserts;
+    int charts = 0;
+
+    explicit Reader(const std::string& s) : src(s), toks(tokenize(s)) {}
+
+    bool failed = false;
+    std::string pou;
+    void fail(const Token& t, const std::string& what) {
+        result.errors.push_back({t.line, t.col, "in the SFC chart of '" + pou + "': " + what});
+        failed = true;
+    }
+
+    const Token& at(size_t k) const {
+        static const Token end;
+        return k < toks.size() ? toks[k] : end;
+    }
+    bool isSfcStart(size_t k) const {
+        const std::string& u = at(k).up;
+        return (u == "INITIAL_STEP" || u == "STEP" || u == "TRANSITION") && (u == "TRANSITION" || (at(k + 1).word && at(k + 2).text == ":"));
+    }
+
+    // One POU from token `b` (its keyword) to `e` (its END_ keyword).
+    void pouRange(size_t b, size_t e) {
+        bool hasInitial = false;
+        for (size_t k = b; k < e; ++k)
+            if (at(k).up == "INITIAL_STEP" && at(k + 1).word) hasInitial = true;
+        if (!hasInitial) return;
+        pou = at(b + 1).text;
+        failed = false;
+        SfcChart chart;
+        std::map<std::string, int> steps;
+        std::set<std::string> actions;
+        size_t first = std::string::npos;
+        for (size_t k = b; k < e; ++k)
+            if (at(k).up == "ACTION" && at(k + 1).word) actions.insert(at(k + 1).up);
+        struct PendingTransition {
+            size_t k;
+            std::vector<size_t> from, to;  // token indices of the step names
+        };
+        std::vector<PendingTransition> pending;
+        std::vector<std::pair<std::string, SfcChart::Association>> uses;
+        std::set<std::string> declaredNames;
+        plcopen::Translation tr;
+        for (size_t k = b; k < e && !failed; ++k) {
+            if (at(k).up == "ACTION" && at(k + 1).word) {  // the POU's actions stay; skip to their end
+                if (first == std::string::npos) first = at(k).begin;
+                while (k < e && at(k).up != "END_ACTION") ++k;
+                continue;
+            }
+            if (!isSfcStart(k)) continue;
+            if (first == std::string::npos) first = at(k).begin;
+            const size_t start = k;
+            if (at(k).up == "INITIAL_STEP" || at(k).up == "STEP") {
+                const Token& name = at(k + 1);
+                if (steps.count(name.up)) { fail(name, "two steps are named '" + name.text + "'"); break; }
+                steps[name.up] = static_cast<int>(chart.steps.size());
+                chart.steps.push_back({name.text, at(k).up == "INITIAL_STEP", {name.line, name.col}});
+                k += 3;
+                while (k < e && at(k).up != "END_STEP") {
+                    // action_name [( qualifier [, duration] )] ;
+                    const Token& a = at(k);
+                    if (!a.word) { fail(a, "expected an action association (name(qualifier)) or END_STEP, found '" + a.text + "'"); break; }
+                    SfcChart::Association as;
+                    as.step = steps[name.up];
+                    ++k;
+                    if (at(k).text == "(") {
+                        ++k;
+                        if (at(k).word) as.qualifier = at(k++).up;
+                        if (at(k).text == ",") { as.duration = at(k + 1).text; k += 2; }
+                        while (at(k).text == ",") k += 2;  // indicator variables: shown by IDEs, not run
+                        if (at(k).text != ")") { fail(at(k), "expected ')' after the action qualifier"); break; }
+                        ++k;
+                    }
+                    if (at(k).text == ";") ++k;
+                    static const std::set<std::string> known = {"N", "R", "S", "L", "D", "P", "P1", "P0", "SD", "DS", "SL"};
+                    if (!known.count(as.qualifier)) { fail(a, "action qualifier '" + as.qualifier + "' of step '" + name.text + "' is not one of N R S L D P P1 P0 SD DS SL"); break; }
+                    const bool timed = as.qualifier == "L" || as.qualifier == "D" || as.qualifier == "SD" || as.qualifier == "DS" || as.qualifier == "SL";
+                    if (timed && as.duration.empty()) { fail(a, "action qualifier " + as.qualifier + " of step '" + name.text + "' needs a duration"); break; }
+                    uses.push_back({a.text, as});
+                }
+                if (at(k).up != "END_STEP") { if (!failed) fail(at(start), "STEP without END_STEP"); break; }
+            } else {  // TRANSITION
+                SfcChart::Transition t;
+                const Token& kw = at(k);
+                ++k;
+                std::string name;
+                if (at(k).word && at(k).up != "FROM") name = at(k++).text;
+                if (at(k).text == "(" && at(k + 1).up == "PRIORITY") {
+                    t.priority = std::atoi(at(k + 3).text.c_str());
+                    k += 5;
+                }
+                auto stepList = [&](std::vector<size_t>& into) {
+                    if (at(k).text == "(") {
+                        ++k;
+                        while (at(k).word) {
+                            into.push_back(k);
+                            ++k;
+                            if (at(k).text == ",") ++k;
+                        }
+                        if (at(k).text == ")") ++k;
+                    } else if (at(k).word) {
+                        into.push_back(k++);
+                    }
+                };
+                PendingTransition p{k, {}, {}};
+                if (at(k).up != "FROM") { fail(at(k), "expected FROM after TRANSITION"); break; }
+                ++k;
+                p.k = k;
+                stepList(p.from);
+                if (at(k).up != "TO") { fail(at(k), "expected TO and the following steps"); break; }
+                ++k;
+                stepList(p.to);
+                t.label = "transition " + (name.empty() ? "from " + at(p.k).text : "'" + name + "'");
+                t.at = {kw.line, kw.col};
+                t.id = std::to_string(chart.transitions.size());
+                t.x = static_cast<double>(chart.transitions.size());  // written order among alternatives
+                if (at(k).text == ":=") {
+                    ++k;
+                    const size_t cb = k;
+                    while (k < e && at(k).text != ";" && at(k).up != "END_TRANSITION") ++k;
+                    if (k == cb) { fail(at(k), "expected the transition's condition after ':='"); break; }
+                    t.condition.push_back({src.substr(at(cb).begin, at(k - 1).end - at(cb).begin), at(cb).line, at(cb).col, t.label, true});
+                    if (at(k).text == ";") ++k;
+                } else if (at(k).text == ":") {
+                    if (name.empty()) { fail(kw, "a transition with a body needs a name (the body assigns it)"); break; }
+                    ++k;
+                    const size_t cb = k;
+                    while (k < e && at(k).up != "END_TRANSITION") ++k;
+                    if (k > cb) t.before.push_back({src.substr(at(cb).begin, at(k - 1).end - at(cb).begin), at(cb).line, at(cb).col, t.label, true});
+                    t.expr = name;
+                    if (!declaredNames.count(upper(name))) {
+                        tr.declarations.push_back({"    " + name + " : BOOL;", kw.line, kw.col, t.label, false});
+                        declaredNames.insert(upper(name));
+                    }
+                } else {
+                    fail(at(k), "expected ':=' and the condition, or ':' and a body");
+                    break;
+                }
+                if (at(k).up != "END_TRANSITION") { fail(at(k), "expected END_TRANSITION"); break; }
+                chart.transitions.push_back(std::move(t));
+                pending.push_back(p);
+            }
+            blanked.push_back({at(start).begin, at(k).end});
+        }
+        if (failed) return;
+        // Steps named by transitions and associations.
+        for (size_t t = 0; t < pending.size(); ++t) {
+            for (int side = 0; side < 2; ++side)
+                for (size_t s : side ? pending[t].to : pending[t].from) {
+                    auto it = steps.find(at(s).up);
+                    if (it == steps.end()) {
+                        fail(at(s), chart.transitions[t].label + " names step '" + at(s).text + "', which the chart does not have");
+                        continue;
+                    }
+                    (side ? chart.transitions[t].post : chart.transitions[t].pre).push_back(it->second);
+                }
+        }
+        std::map<std::string, int> byName;
+        for (auto& [name, as] : uses) {
+            auto [it, added] = byName.emplace(upper(name), static_cast<int>(chart.actions.size()));
+            if (added) {
+                SfcChart::Action a;
+                a.name = name;
+                a.isVariable = !actions.count(upper(name));
+                a.label = "action '" + name + "'";
+                a.at = chart.steps[static_cast<size_t>(as.step)].at;
+                chart.actions.push_back(a);
+            }
+            chart.actions[static_cast<size_t>(it->second)].uses.push_back(as);
+        }
+        if (failed) return;
+        const std::string prefix = "_g" + std::to_string(++charts) + "_";
+        if (!writeSfcChart(chart, prefix, tr, [&](SfcChart::Where w, const std::string& what) {
+                result.errors.push_back({w.line, w.col, "in the SFC chart of '" + pou + "': " + what});
+            }))
+            return;
+        inserts.push_back({first, std::move(tr)});
+    }
+
+    void run() {
+        size_t b = std::string::npos;
+        for (size_t k = 0; k < toks.size(); ++k) {
+            const std::string& u = toks[k].up;
+            if ((u == "PROGRAM" || u == "FUNCTION_BLOCK" || u == "FUNCTION") && b == std::string::npos) b = k;
+            else if ((u == "END_PROGRAM" || u == "END_FUNCTION_BLOCK" || u == "END_FUNCTION") && b != std::string::npos) {
+                pouRange(b, k);
+                b = std::string::npos;
+            }
+        }
+        if (!result.errors.empty()) return;
+        // The text with the SFC elements blanked and each chart's ST inserted where its POU's body starts.
+        std::string text = src;
+        for (auto [from, to] : blanked)
+            for (size_t i = from; i < to && i < text.size(); ++i)
+                if (text[i] != '\n') text[i] = ' ';
+        StAssembler out;
+        TextPositions pos(src);
+        size_t done = 0;
+        for (Insert& ins : inserts) {
+            auto [line, col] = pos.at(static_cast<std::ptrdiff_t>(done));
+            out.verbatim(std::string_view(text).substr(done, ins.at - done), line, col);
+            auto emit = [&](const std::vector<plcopen::StLine>& lines) {
+                for (const plcopen::StLine& l : lines) {
+                    if (l.verbatim) out.verbatim(l.text, l.line, l.col, l.element);
+                    else out.written(l.text, l.line, l.col, l.element);
+                }
+            };
+            if (!ins.tr.declarations.empty()) {
+                const plcopen::StLine& d = ins.tr.declarations.front();
+                out.written("VAR", d.line, d.col);
+                emit(ins.tr.declarations);
+                out.written("END_VAR", d.line, d.col);
+            }
+            emit(ins.tr.body);
+            done = ins.at;
+        }
+        auto [line, col] = pos.at(static_cast<std::ptrdiff_t>(done));
+        out.verbatim(std::string_view(text).substr(done), line, col);
+        result.text = std::move(out.text());
+        result.origins = std::move(out.origins());
+    }
+};
+
+}  // namespace
+
+bool mayHoldTextualSfc(const std::string& text) {
+    // memmem is fast: three case forms of `_STEP`, then the word before it.
+    for (const char* needle : {"_STEP", "_step", "_Step"}) {
+        const char* from = text.data();
+        const char* end = text.data() + text.size();
+        while (from < end) {
+            const void* hit = memmem(from, static_cast<size_t>(end - from), needle, 5);
+            if (!hit) break;
+            const char* h = static_cast<const char*>(hit);
+            if (h - text.data() >= 7 && upper(std::string(h - 7, 7)) == "INITIAL") return true;
+            from = h + 5;
+        }
+    }
+    return false;
+}
+
+Converted convertTextualSfc(const std::string& text) {
+    Reader r(text);
+    r.run();
+    return std::move(r.result);
+}
+
+}  // namespace strun::source
