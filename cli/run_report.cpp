@@ -42,7 +42,19 @@ void printFaultReport(std::ostream& out, const rt::Scheduler& scheduler, const S
     }
 }
 
-void printRunSummary(std::ostream& out, const rt::Scheduler& scheduler, rt::PlcState state) {
+void printRunSummary(std::ostream& out, const rt::Scheduler& scheduler, rt::PlcState state, DiagnosticFormat format) {
+    if (format == DiagnosticFormat::Json) {
+        nlohmann::ordered_json s;
+        s["state"] = rt::plcStateName(state);
+        s["time"] = stdlib::formatDuration(scheduler.endTime());
+        s["tasks"] = scheduler.tasksJson();
+        s["diagnostics"] = scheduler.diagnosticsJson();
+        s["more_diagnostics"] = scheduler.droppedDiagnostics();
+        nlohmann::ordered_json j;
+        j["summary"] = std::move(s);
+        out << j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+        return;
+    }
     out << "strun: PLC " << rt::plcStateName(state) << " at " << stdlib::formatDuration(scheduler.endTime()) << "\n";
     for (const auto& task : scheduler.tasksJson()) {
         out << "  task " << task["name"].get<std::string>() << ": " << task["cycles"].get<uint64_t>() << " cycles, "

@@ -16,6 +16,11 @@ namespace strun::cli {
 // fault, each followed by its source excerpt (cli/diagnostic_render.h).
 void printFaultReport(std::ostream& out, const rt::Scheduler& scheduler, const SourceSet& sources,
                       const DiagnosticOptions& options, bool color);
-void printRunSummary(std::ostream& out, const rt::Scheduler& scheduler, rt::PlcState state);
+// With --diagnostics-format json the summary is one JSON object on one line,
+// {"summary":{"state","time","tasks":[...],"diagnostics":[...],"more_diagnostics"}}
+// (tasks and diagnostics as in --dump), so a tool reading stderr line by line
+// gets only JSON.
+void printRunSummary(std::ostream& out, const rt::Scheduler& scheduler, rt::PlcState state,
+                     DiagnosticFormat format = DiagnosticFormat::Text);
 
 }  // namespace strun::cli

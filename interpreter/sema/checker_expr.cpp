@@ -547,6 +547,11 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
     if (!f) {
         std::vector<std::string> members;
         for (const Field& field : t->fields) members.push_back(field.name);
+        // A mistyped method call (`fbMotor.Resett()`) reaches here too: its methods are candidates.
+        if (t->kind == TK::FunctionBlock && t->pou)
+            for (const PouInfo* p = t->pou; p; p = p->parent)
+                for (const auto& [mkey, m] : p->methods)
+                    if (m->name.rfind("__", 0) != 0) members.push_back(m->name);
         suggest(error(loc, fmt::format("'{}' has no member '{}'", typeName(t), member)), member, members);
         return bad(loc);
     }

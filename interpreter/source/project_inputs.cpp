@@ -60,6 +60,8 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
 
 }  // namespace
 
+const char* const kStdinName = "<stdin>";
+
 bool isProjectSource(const std::string& path) {
     const std::string ext = lowerExtension(path);
     return ext == ".st" || ext == ".xml" || isTwinCatObject(path);
@@ -67,6 +69,7 @@ bool isProjectSource(const std::string& path) {
 
 bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log,
                        std::string& usageError) {
+    bool stdinRead = false;
     for (const auto& path : paths) {
         std::error_code ec;
         if (fs::is_directory(path, ec)) {
@@ -93,6 +96,17 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
             continue;
         }
         std::string text;
+        if (path == "-") {
+            // Source from standard input: one ST file, named <stdin> in messages.
+            if (stdinRead) {
+                usageError = "'-' (standard input) can be given once";
+                return false;
+            }
+            stdinRead = true;
+            if (!readSourceText(path, projectBytes(sources), text, usageError)) return false;
+            addFile(kStdinName, std::move(text), sources, userFiles, log);
+            continue;
+        }
         if (!fs::exists(path, ec)) {
             usageError = "'" + path + "': no such file";
             return false;
