@@ -44,12 +44,15 @@ public:
     // (kNever: nothing to wait for). Replaces the previous moment.
     void arm(PlcTime at);
     std::thread& thread() { return thread_; }
+    // Moves PLC time 0 (before the first arm(): the scheduler takes its
+    // origin after starting this thread, whose stack --realtime locks).
+    void setOrigin(int64_t origin) { origin_.store(origin); }
 
 private:
     void loop();
 
     Machine& machine_;
-    int64_t origin_;
+    std::atomic<int64_t> origin_;
     std::atomic<PlcTime> wakeAt_{kNever};
     std::atomic<PlcTime> sleepingUntil_{kNever};
     std::mutex mutex_;

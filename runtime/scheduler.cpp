@@ -149,20 +149,24 @@ PlcState Scheduler::run() {
         machine_.stmtCost = 0;
         // --realtime: lock memory and switch to SCHED_FIFO *before* PLC time
         // starts. mlockall faults in every mapped page (the reserved frame
-        // stacks, the heap's top pad): tens of milliseconds that, counted as
-        // PLC time, made the first releases late and showed as start-up
-        // latency and overruns (issue 29, docs/realtime.md).
+        // stacks, the heap's top pad): about 10 ms that, counted as PLC
+        // time, made the first releases late and showed as start-up latency
+        // and overruns (issue 29, docs/realtime.md).
+        // The timer thread's 8 MiB stack is locked page by page when it is
+        // created under mlockall(MCL_FUTURE) (2-3 ms): it too is started
+        // before PLC time 0.
         std::vector<std::string> notes;
         if (options_.realtime) notes = enableRealtimeForThisThread(kPlcThreadPriority);
-        calendarBase_ = realtimeNanos();
-        monotonicOrigin_ = monotonicNanos();
-        timer_ = std::make_unique<AttentionTimer>(machine_, monotonicOrigin_);
+        timer_ = std::make_unique<AttentionTimer>(machine_, monotonicNanos());
         if (options_.realtime) {
             if (std::string note = enableRealtimeForThread(timer_->thread(), kTimerThreadPriority); !note.empty())
                 notes.push_back(note);
             std::ostream& out = options_.warnings ? *options_.warnings : std::cerr;
             for (const std::string& note : notes) out << "strun: warning: --realtime: " << note << '\n';
         }
+        calendarBase_ = realtimeNanos();
+        monotonicOrigin_ = monotonicNanos();
+        timer_->setOrigin(monotonicOrigin_);
     }
     if (options_.realtime && options_.virtualClock) {
         std::ostream& out = options_.warnings ? *options_.warnings : std::cerr;
