@@ -1134,7 +1134,10 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
     if (isElementary(from->kind) && isElementary(target->kind) && !isStringType(from->kind))
         hint = fmt::format("; use {}_TO_{}", upper(from->name == "TIME_OF_DAY" ? "TOD" : from->name == "DATE_AND_TIME" ? "DT" : from->name),
                            upper(target->name == "TIME_OF_DAY" ? "TOD" : target->name == "DATE_AND_TIME" ? "DT" : target->name));
-    error(loc, fmt::format("{}: cannot convert {} to {} implicitly{}", what, typeName(from), typeName(target), hint));
+    Diagnostic& d = error(loc, fmt::format("{}: cannot convert {} to {} implicitly{}", what, typeName(from), typeName(target), hint));
+    // `s := "hello"`: in ST double quotes make a WSTRING literal (a C or Python habit).
+    if (e.isConst && from->kind == TK::WString && target->kind == TK::String)
+        d.withHelp("a STRING literal is written in single quotes ('hello'); double quotes make a WSTRING");
     return bad(loc);
 }
 
