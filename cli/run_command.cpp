@@ -228,6 +228,7 @@ int runCommand(const CommandLine& line) {
         out["programs"] = project::programsJson(model);
         out["tasks"] = scheduler.tasksJson();
         out["diagnostics"] = scheduler.diagnosticsJson();
+        out["physical_outputs"] = project::physicalOutputsJson(model);
         std::cout << out.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << std::endl;
     }
     return state == rt::PlcState::Run ? kExitOk : kExitStopped;
