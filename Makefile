@@ -10,7 +10,7 @@ DEBIAN_PACKAGES += python3-pymodbus python3-serial-asyncio
 EXAMPLE ?= programs/bottle_counter.st
 RUN_ARGS ?= --virtual --cycles 2000 --dump
 
-.PHONY: deps build run test bench package install clean check-deep fuzz fuzz-smoke
+.PHONY: deps build build-installed run test bench package install clean check-deep fuzz fuzz-smoke
 
 deps:
 	@missing=""; for p in $(DEBIAN_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -35,13 +35,19 @@ bench: build
 	benchmarks/vcd/run_vcd_bench.sh $(BUILD)/strun
 	benchmarks/startup.sh $(BUILD)/strun
 
+# Only what `install` and `package` put in place: strun and its manual page
+# (not the unit tests and tools that `build` makes).
+build-installed: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake --build $(BUILD) -j$(JOBS) --target strun man
+
 # A Debian package of strun and its documentation, in $(BUILD)/ (CPack).
-package: build
+package: build-installed
 	cd $(BUILD) && cpack -G DEB
 
-# Installs strun and its documentation under PREFIX (default /usr/local).
+# Installs strun, its manual page and its documentation under PREFIX (default /usr/local).
 PREFIX ?= /usr/local
-install: build
+install: build-installed
 	cmake --install $(BUILD) --prefix $(PREFIX)
 
 # ASan + UBSan build of everything, then the whole ctest suite under them

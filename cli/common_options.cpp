@@ -2,6 +2,7 @@
 #include "cli/commands.h"
 #include "cli/option_types.h"
 #include "cli/warning_options.h"
+#include "interpreter/source/closest_name.h"
 #include "runtime/plc_profile.h"
 
 namespace strun::cli {
@@ -22,7 +23,12 @@ CLI::Validator targetValidator() {
         [](std::string& text) -> std::string {
             text = trimmed(text);
             const rt::PlcProfile* profile = rt::findProfile(text);
-            if (!profile) return "unknown target '" + text + "'; the targets are: " + profileNames();
+            if (!profile) {
+                std::vector<std::string> ids;
+                for (const rt::PlcProfile& p : rt::allProfiles()) ids.emplace_back(p.id);
+                const std::string near = closestName(text, ids);
+                return "unknown target '" + text + "'" + (near.empty() ? "" : "; did you mean '" + near + "'?") + "; the targets are: " + profileNames();
+            }
             text = std::string(profile->id);  // the canonical spelling
             return {};
         },
@@ -32,9 +38,9 @@ CLI::Validator targetValidator() {
 }  // namespace
 
 void addFileArguments(CLI::App& command, CommandLine& line) {
-    command.add_option("FILE", line.files, "the project's sources: ST files, PLCopen XML, TwinCAT objects, or directories of them")
+    command.add_option("FILE", line.files, "the project's sources: ST files, PLCopen XML, TwinCAT objects, or directories of them (- reads ST from standard input)")
         ->required()
-        ->check(readableFileValidator())
+        ->check(readableFileValidator(true))
         ->type_name("FILE");
 }
 

@@ -301,14 +301,16 @@ void printRuntimeFault(std::ostream& out, const RuntimeFault& fault, const Sourc
     printExcerpt(out, e, style, kRed, '^', std::to_string(e.line).size());
 }
 
-bool stderrWantsColor(ColorMode mode) {
+bool stderrWantsColor(ColorMode mode) { return fdWantsColor(mode, STDERR_FILENO); }
+
+bool fdWantsColor(ColorMode mode, int fd) {
     if (mode == ColorMode::Always) return true;
     if (mode == ColorMode::Never) return false;
     const char* noColor = std::getenv("NO_COLOR");
     if (noColor && *noColor) return false;
     const char* term = std::getenv("TERM");
     if (term && std::strcmp(term, "dumb") == 0) return false;
-    return isatty(STDERR_FILENO) == 1;
+    return isatty(fd) == 1;
 }
 
 std::vector<Diagnostic> shownDiagnostics(const CompileLog& log, const SourceSet& sources, const DiagnosticOptions& options) {

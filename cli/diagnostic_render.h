@@ -49,5 +49,7 @@ void printRuntimeFault(std::ostream& out, const RuntimeFault& fault, const Sourc
 
 // --color auto: stderr is a terminal, TERM is not "dumb" and NO_COLOR is unset.
 bool stderrWantsColor(ColorMode mode);
+// The same rule for any output file descriptor (strun test colours PASS / FAIL on stdout).
+bool fdWantsColor(ColorMode mode, int fd);
 
 }  // namespace strun::cli

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/option_types.h"
+#include "cli/run_report.h"
 #include "live/control_plane.h"
 #include "live/http_api.h"
 #include "live/http_server.h"
@@ -128,16 +129,6 @@ void LiveSession::runEnded(const rt::Scheduler& scheduler) {
 
 nlohmann::ordered_json LiveSession::forcesJson() const { return control_->forcesJson(); }
 
-void LiveSession::printForces(std::ostream& out) const {
-    nlohmann::ordered_json forces = control_->forcesJson();
-    if (forces.empty()) return;
-    out << "  forces:";
-    const char* separator = " ";
-    for (const auto& [name, value] : forces.items()) {
-        out << separator << name << " = " << (value.is_string() ? value.get<std::string>() : value.dump());
-        separator = ", ";
-    }
-    out << "\n";
-}
+void LiveSession::printForces(std::ostream& out) const { printForcesLine(out, control_->forcesJson()); }
 
 }  // namespace strun::cli

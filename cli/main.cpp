@@ -17,6 +17,7 @@
 #include "cli/commands.h"
 #include "cli/editor_commands.h"
 #include "cli/exit_codes.h"
+#include "cli/man_page.h"
 #include "cli/test_command.h"
 #include "cli/usage_errors.h"
 
@@ -47,6 +48,8 @@ int runMain(int argc, char** argv) {
     CLI::App* help = app.add_subcommand("help", "show the commands, or the options of COMMAND");
     std::string helpTopic;
     help->add_option("COMMAND", helpTopic, "run, check, test, explain")->type_name("COMMAND");
+    bool manPage = false;
+    help->add_flag("--man", manPage, "print the manual page strun.1 (roff), made from this help");
 
     if (int status = checkSubcommandName(app, argc, argv); status >= 0) return status;
     try {
@@ -60,7 +63,7 @@ int runMain(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return reportParseError(app, e);
     }
-    if (help->parsed()) return printHelp(app, helpTopic);
+    if (help->parsed()) return manPage ? printManPage(app, std::cout) : printHelp(app, helpTopic);
     if (run->parsed()) return runCommand(line);
     if (check->parsed()) return checkCommand(line);
     if (test->parsed()) return testCommand(line, testLine);

@@ -68,9 +68,10 @@ CLI::Validator dateTimeValidator() {
         "", "DT");
 }
 
-CLI::Validator readableFileValidator() {
+CLI::Validator readableFileValidator(bool allowStdin) {
     return CLI::Validator(
-        [](std::string& path) -> std::string {
+        [allowStdin](std::string& path) -> std::string {
+            if (allowStdin && path == "-") return {};  // standard input
             struct stat st {};
             if (::stat(path.c_str(), &st) != 0) return "'" + path + "': no such file";
             // A directory stands for every source file under it (interpreter/source/project_inputs.h).

@@ -20,7 +20,7 @@ std::optional<int64_t> parseDuration(std::string_view text, std::string& error);
 CLI::Validator durationValidator();       // DURATION, >= 0
 CLI::Validator positiveCountValidator();  // N >= 1
 CLI::Validator dateTimeValidator();       // DT#2026-01-31-13:05:00
-CLI::Validator readableFileValidator();   // an existing, readable regular file
+CLI::Validator readableFileValidator(bool allowStdin = false);  // an existing, readable regular file (or directory; `-` if allowStdin)
 
 std::string trimmed(std::string_view text);
 

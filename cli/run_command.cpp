@@ -1,4 +1,5 @@
 // strun run [options] FILE...: compile the FILEs as one project and run it.
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -19,11 +20,13 @@
 #include "cli/run_report.h"
 #include "cli/stimulus_args.h"
 #include "interpreter/project/stimulus_build.h"
+#include "interpreter/source/closest_name.h"
 #include "interpreter/project/vcd_signals.h"
 #include "runtime/vcd_recorder.h"
 #include "interpreter/project/dump_json.h"
 #include "interpreter/project/retain_store.h"
 #include "interpreter/project/task_runner.h"
+#include "interpreter/project/variable_path.h"
 #include "runtime/plc_profile.h"
 #include "runtime/scheduler.h"
 #include "stdlib/time_literals.h"
@@ -152,7 +155,12 @@ int runCommand(const CommandLine& line) {
     for (const auto& t : model.tasks) specs.push_back(t.spec);
     if (run.cycles && specs.empty()) return usage("--cycles: the project declares no TASK (its CONFIGURATION has none)");
     if (!line.task.empty()) {
-        if (!rt::Scheduler::hasTask(specs, line.task)) return usage("--task: no task named '" + line.task + "'");
+        if (!rt::Scheduler::hasTask(specs, line.task)) {
+            std::vector<std::string> names;
+            for (const auto& spec : specs) names.push_back(spec.name);
+            const std::string near = closestName(line.task, names);
+            return usage("--task: no task named '" + line.task + "'" + (near.empty() ? "" : "; did you mean '" + near + "'?"));
+        }
         run.cyclesTask = line.task;
     } else if (!specs.empty()) {
         run.cyclesTask = specs.front().name;  // MainTask without a CONFIGURATION, else the first TASK declared
@@ -168,13 +176,22 @@ int runCommand(const CommandLine& line) {
     if (!line.vcdFile.empty()) {
         vcdFile.reset(std::fopen(line.vcdFile.c_str(), "wb"));
         if (!vcdFile) return usage("--vcd: cannot write '" + line.vcdFile + "': " + std::strerror(errno));
-        std::vector<std::string> unmatched;
-        std::vector<rt::VcdSignal> signals = project::vcdSignals(model, line.watches, unmatched);
-        for (const std::string& pattern : unmatched)
-            std::cerr << "strun: warning: --watch '" << pattern << "' matches no variable\n";
+        std::vector<std::string> unmatched, variablePatterns;
         std::vector<std::string> taskNames;
         for (const auto& t : model.tasks) taskNames.push_back(t.spec.name);
-        recorder = std::make_unique<rt::VcdRecorder>(vcdFile.get(), taskNames, std::move(signals), "strun " STRUN_VERSION);
+        // --watch 'task:PATTERN' / '!task:PATTERN' choose the task waveforms (decision 0241).
+        std::vector<bool> taskWaveforms = project::vcdTaskSelection(taskNames, line.watches, variablePatterns, unmatched);
+        std::vector<rt::VcdSignal> signals;  // --watch with task patterns only: no variable
+        if (line.watches.empty() || !variablePatterns.empty()) signals = project::vcdSignals(model, variablePatterns, unmatched);
+        for (const std::string& pattern : unmatched) {
+            // A plain path gets the resolver's reason, with its "did you mean".
+            std::string why;
+            const bool task = std::find(variablePatterns.begin(), variablePatterns.end(), pattern) == variablePatterns.end();
+            if (!task && pattern.find_first_of("*?") == std::string::npos) project::resolveVariablePath(model, pattern, why);
+            std::cerr << "strun: warning: --watch '" << pattern << "' matches no " << (task ? "task" : "variable")
+                      << (why.empty() ? "" : " (" + why + ")") << "\n";
+        }
+        recorder = std::make_unique<rt::VcdRecorder>(vcdFile.get(), taskNames, std::move(signals), "strun " STRUN_VERSION, taskWaveforms);
         run.observer = recorder.get();
     }
 
@@ -204,6 +221,9 @@ int runCommand(const CommandLine& line) {
         bodies.push_back(runners.back().get());
     }
     rt::Scheduler scheduler(model.machine, specs, bodies, run);
+    // The virtual clock runs as fast as the host can: without an end it would look hung.
+    if (run.virtualClock && !run.cycles && !run.duration && !line.quiet)
+        std::cerr << "strun: note: --virtual without --for or --cycles runs until interrupted (Ctrl-C)\n";
     std::signal(SIGINT, onStopSignal);
     std::signal(SIGTERM, onStopSignal);
     rt::PlcState state = scheduler.run();
@@ -213,10 +233,9 @@ int runCommand(const CommandLine& line) {
     std::signal(SIGTERM, SIG_DFL);
     if (retain) retain->save();  // however the run ended
     printFaultReport(std::cerr, scheduler, compiled.sources, line.diagnostics, stderrWantsColor(line.diagnostics.color));
-    if (!line.dump && !line.quiet) {
-        printRunSummary(std::cerr, scheduler, state);
-        if (live) live->printForces(std::cerr);
-    }
+    if (!line.dump && !line.quiet)
+        printRunSummary(std::cerr, scheduler, state, line.diagnostics.format,
+                        live ? live->forcesJson() : nlohmann::ordered_json::object());
     if (line.dump) {
         nlohmann::ordered_json out;
         out["state"] = rt::plcStateName(state);
@@ -227,6 +246,7 @@ int runCommand(const CommandLine& line) {
         out["tasks"] = scheduler.tasksJson();
         out["diagnostics"] = scheduler.diagnosticsJson();
         out["forces"] = live ? live->forcesJson() : nlohmann::ordered_json::object();
+        out["physical_outputs"] = project::physicalOutputsJson(model);
         std::cout << out.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << std::endl;
     }
     return state == rt::PlcState::Run ? kExitOk : kExitStopped;

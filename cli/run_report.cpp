@@ -42,7 +42,32 @@ void printFaultReport(std::ostream& out, const rt::Scheduler& scheduler, const S
     }
 }
 
-void printRunSummary(std::ostream& out, const rt::Scheduler& scheduler, rt::PlcState state) {
+void printForcesLine(std::ostream& out, const nlohmann::ordered_json& forces) {
+    if (forces.empty()) return;
+    out << "  forces:";
+    const char* separator = " ";
+    for (const auto& [name, value] : forces.items()) {
+        out << separator << name << " = " << (value.is_string() ? value.get<std::string>() : value.dump());
+        separator = ", ";
+    }
+    out << "\n";
+}
+
+void printRunSummary(std::ostream& out, const rt::Scheduler& scheduler, rt::PlcState state, DiagnosticFormat format,
+                     const nlohmann::ordered_json& forces) {
+    if (format == DiagnosticFormat::Json) {
+        nlohmann::ordered_json s;
+        s["state"] = rt::plcStateName(state);
+        s["time"] = stdlib::formatDuration(scheduler.endTime());
+        s["tasks"] = scheduler.tasksJson();
+        s["diagnostics"] = scheduler.diagnosticsJson();
+        s["more_diagnostics"] = scheduler.droppedDiagnostics();
+        if (!forces.empty()) s["forces"] = forces;
+        nlohmann::ordered_json j;
+        j["summary"] = std::move(s);
+        out << j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+        return;
+    }
     out << "strun: PLC " << rt::plcStateName(state) << " at " << stdlib::formatDuration(scheduler.endTime()) << "\n";
     for (const auto& task : scheduler.tasksJson()) {
         out << "  task " << task["name"].get<std::string>() << ": " << task["cycles"].get<uint64_t>() << " cycles, "
@@ -52,6 +77,7 @@ void printRunSummary(std::ostream& out, const rt::Scheduler& scheduler, rt::PlcS
     uint64_t total = entries.size() + scheduler.droppedDiagnostics();
     if (total == 0) {
         out << "  diagnostics: none\n";
+        printForcesLine(out, forces);
         return;
     }
     out << "  diagnostics: " << total << "\n";
@@ -63,6 +89,7 @@ void printRunSummary(std::ostream& out, const rt::Scheduler& scheduler, rt::PlcS
         out << ": " << e.message << "\n";
     }
     if (total > kSummaryDiagnostics) out << "    ... " << (total - std::min<uint64_t>(entries.size(), kSummaryDiagnostics)) << " more\n";
+    printForcesLine(out, forces);
 }
 
 }  // namespace strun::cli

@@ -19,11 +19,15 @@ struct TestCommandLine {
     std::string junit;                  // --junit FILE
     std::string filter;                 // --filter PATTERN
     bool list = false;                  // --list
+    bool allowEmpty = false;            // --allow-empty: no test to run is not an error
+    size_t jobs = 1;                    // -j N: suites in N processes (0: one per processor)
+    size_t shard = 0, shards = 0;       // --shard K/N (1-based K); 0/0: every suite
 };
 
 CLI::App* addTestCommand(CLI::App& app, CommandLine& line, TestCommandLine& test);
 
-// Exit status: 0 every test passed, 1 a test failed or the project does not compile, 2 bad command line.
+// Exit status: 0 every test passed, 1 a test failed, no test ran (unless
+// --allow-empty) or the project does not compile, 2 bad command line.
 int testCommand(const CommandLine& line, const TestCommandLine& test);
 
 }  // namespace strun::cli

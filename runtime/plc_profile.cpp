@@ -158,7 +158,7 @@ constexpr PlcProfile makeXgi() {
     PlcProfile p;
     p.id = "xgi";
     p.description = "LS XGI";
-    p.maxTasks = 24;
+    p.maxTasks = 8;  // "Up to 8 task programs are available": all kinds together (decision 0243)
     p.kinds[kindIndex(TaskKind::Cyclic)] = {8, 0, 7, true, 7, 0};
     p.kinds[kindIndex(TaskKind::External)] = {8, 0, 7, true, 7, 0};
     p.kinds[kindIndex(TaskKind::Event)] = {8, 0, 7, true, 7, 0};

@@ -46,6 +46,9 @@ public:
     // PLC time 0 moves `delta` ns later (the PLC was paused that long).
     void shiftOrigin(int64_t delta);
     std::thread& thread() { return thread_; }
+    // Moves PLC time 0 (before the first arm(): the scheduler takes its
+    // origin after starting this thread, whose stack --realtime locks).
+    void setOrigin(int64_t origin) { origin_.store(origin); }
 
 private:
     void loop();

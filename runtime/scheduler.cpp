@@ -147,20 +147,30 @@ PlcState Scheduler::run() {
         calendarBase_ = options_.startCalendarNanos;
     } else {
         machine_.stmtCost = 0;
-        calendarBase_ = realtimeNanos();
-        monotonicOrigin_ = monotonicNanos();
-        timer_ = std::make_unique<AttentionTimer>(machine_, monotonicOrigin_);
-    }
-    if (options_.realtime) {
-        std::ostream& out = options_.warnings ? *options_.warnings : std::cerr;
-        if (options_.virtualClock) {
-            out << "strun: warning: --realtime has no effect on the virtual clock\n";
-        } else {
-            std::vector<std::string> notes = enableRealtimeForThisThread(kPlcThreadPriority);
+        // --realtime: lock memory and switch to SCHED_FIFO *before* PLC time
+        // starts. mlockall faults in every mapped page (the reserved frame
+        // stacks, the heap's top pad): about 10 ms that, counted as PLC
+        // time, made the first releases late and showed as start-up latency
+        // and overruns (issue 29, docs/realtime.md).
+        // The timer thread's 8 MiB stack is locked page by page when it is
+        // created under mlockall(MCL_FUTURE) (2-3 ms): it too is started
+        // before PLC time 0.
+        std::vector<std::string> notes;
+        if (options_.realtime) notes = enableRealtimeForThisThread(kPlcThreadPriority);
+        timer_ = std::make_unique<AttentionTimer>(machine_, monotonicNanos());
+        if (options_.realtime) {
             if (std::string note = enableRealtimeForThread(timer_->thread(), kTimerThreadPriority); !note.empty())
                 notes.push_back(note);
+            std::ostream& out = options_.warnings ? *options_.warnings : std::cerr;
             for (const std::string& note : notes) out << "strun: warning: --realtime: " << note << '\n';
         }
+        calendarBase_ = realtimeNanos();
+        monotonicOrigin_ = monotonicNanos();
+        timer_->setOrigin(monotonicOrigin_);
+    }
+    if (options_.realtime && options_.virtualClock) {
+        std::ostream& out = options_.warnings ? *options_.warnings : std::cerr;
+        out << "strun: warning: --realtime has no effect on the virtual clock\n";
     }
 
     for (TaskRun& task : tasks_) {
@@ -746,6 +756,14 @@ void Scheduler::checkSystemWatchdog() {
     faultStop(current, DiagCode::SystemWatchdog, PlcState::Stop);
 }
 
+std::string Scheduler::virtualCostNote(PlcTime elapsed) const {
+    // On the virtual clock all running time is the modelled statement cost:
+    // say so, or the user looks for a slow statement that does not exist.
+    if (!options_.virtualClock || machine_.stmtCost <= 0) return {};
+    return " (virtual clock: " + std::to_string(elapsed / machine_.stmtCost) + " statements at --stmt-cost " +
+           formatDuration(machine_.stmtCost) + " each: a loop that does not end, or more statements than the watchdog allows at that --stmt-cost)";
+}
+
 void Scheduler::tripWatchdog(TaskRun& task) {
     task.watchdogAt = kNever;
     task.abortRequested = true;
@@ -762,7 +780,8 @@ void Scheduler::tripWatchdog(TaskRun& task) {
     record(DiagCode::Watchdog, &task, pou, line,
            std::string(timeoutTaskTripped ? "the execution-timeout task '" : "task '") + task.spec.name +
                "' reached its watchdog of " + formatDuration(task.spec.watchdog) + " (running for " +
-               formatDuration(machine_.now - task.startedAt) + ", preemptions included); the activation is aborted",
+               formatDuration(machine_.now - task.startedAt) + ", preemptions included); the activation is aborted" +
+               virtualCostNote(machine_.now - task.startedAt),
            file, col);
     PlcState reaction = profile_.watchdogReaction == WatchdogReaction::Halt ? PlcState::Halt : PlcState::Stop;
     if (timeoutTaskTripped || !timeoutTask_) faultStop(&task, DiagCode::Watchdog, reaction);

@@ -195,6 +195,7 @@ private:
     void checkWatchdogs();
     void noteBusy(const TaskRun* next);
     void checkSystemWatchdog();
+    std::string virtualCostNote(PlcTime elapsed) const;  // the WATCHDOG message's virtual-clock part
     void tripWatchdog(TaskRun& task);
     void faultStop(const TaskRun* task, DiagCode code, PlcState state);
     void armNextAttention();

@@ -53,13 +53,16 @@ std::string reference(std::string name) {
 }  // namespace
 
 VcdRecorder::VcdRecorder(std::FILE* out, const std::vector<std::string>& taskNames, std::vector<VcdSignal> signals,
-                         const std::string& version)
+                         const std::string& version, const std::vector<bool>& taskWaveforms)
     : out_(out), signals_(std::move(signals)) {
     Scope root;
-    Scope& tasks = root.child("tasks");
     for (size_t i = 0; i < taskNames.size(); ++i) {
+        if (i < taskWaveforms.size() && !taskWaveforms[i]) {
+            taskIds_.emplace_back();
+            continue;
+        }
         taskIds_.push_back(idCode(i));
-        tasks.vars.push_back("$var wire 1 " + taskIds_.back() + " " + reference(taskNames[i]) + " $end\n");
+        root.child("tasks").vars.push_back("$var wire 1 " + taskIds_.back() + " " + reference(taskNames[i]) + " $end\n");
     }
     byTask_.assign(taskNames.size(), {});
     for (size_t i = 0; i < signals_.size(); ++i) {
@@ -83,7 +86,8 @@ VcdRecorder::VcdRecorder(std::FILE* out, const std::vector<std::string>& taskNam
     std::fputs("$enddefinitions $end\n#0\n$dumpvars\n", out_);
     stamped_ = 0;
     taskState_.assign(taskNames.size(), 0);
-    for (const std::string& id : taskIds_) std::fprintf(out_, "0%s\n", id.c_str());
+    for (const std::string& id : taskIds_)
+        if (!id.empty()) std::fprintf(out_, "0%s\n", id.c_str());
     last_.resize(signals_.size());
     for (size_t i = 0; i < signals_.size(); ++i) {
         last_[i] = read(signals_[i]);
@@ -167,7 +171,7 @@ void VcdRecorder::stampTime(PlcTime now) {
 }
 
 void VcdRecorder::taskRunning(size_t task, bool running, PlcTime now) {
-    if (task >= taskState_.size() || taskState_[task] == uint8_t(running)) return;
+    if (task >= taskState_.size() || taskState_[task] == uint8_t(running) || taskIds_[task].empty()) return;
     taskState_[task] = running;
     stampTime(now);
     buffer_ += running ? '1' : '0';

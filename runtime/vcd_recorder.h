@@ -35,7 +35,10 @@ class VcdRecorder final : public RunObserver {
 public:
     // Writes the header and the initial values ($dumpvars at #0) to `out`
     // (owned by the caller, which closes it after runEnded()).
-    VcdRecorder(std::FILE* out, const std::vector<std::string>& taskNames, std::vector<VcdSignal> signals, const std::string& version);
+    // `taskWaveforms[i]` false: task i's running/idle signal is left out (its
+    // activations still sample the variables); empty: every task has one.
+    VcdRecorder(std::FILE* out, const std::vector<std::string>& taskNames, std::vector<VcdSignal> signals, const std::string& version,
+                const std::vector<bool>& taskWaveforms = {});
 
     void taskRunning(size_t task, bool running, PlcTime now) override;
     void activationEnded(size_t task, PlcTime now) override;
@@ -52,7 +55,7 @@ private:
 
     std::FILE* out_;
     std::vector<VcdSignal> signals_;
-    std::vector<std::string> signalIds_, taskIds_;
+    std::vector<std::string> signalIds_, taskIds_;  // a task without a waveform has an empty id
     std::vector<uint64_t> last_;
     std::vector<std::vector<size_t>> byTask_;  // signals each task samples (globals included)
     std::vector<uint8_t> taskState_;

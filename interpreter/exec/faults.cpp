@@ -34,7 +34,9 @@ void reportDivByZero(Ctx& c, const Site& site) {
 
 void reportCallDepth(Ctx& c, const Site& site, const std::string& callee) {
     c.m->handler->onFault(rt::DiagCode::CallDepth, pouOf(at(c, site)), at(c, site).line,
-                          fmt::format("call nesting deeper than {} (calling {})", kMaxCallDepth, callee), at(c, site).file, at(c, site).col);
+                          fmt::format("call nesting deeper than {} (calling {}): the nesting limit of the PLCs strun emulates; "
+                                      "turn the recursion into a loop (docs/limits.md)",
+                                      kMaxCallDepth, callee), at(c, site).file, at(c, site).col);
     c.aborting = true;
 }
 

@@ -154,4 +154,13 @@ json programsJson(const sema::ProgramModel& model) {
     return obj;
 }
 
+nlohmann::ordered_json physicalOutputsJson(const sema::ProgramModel& model) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::object();
+    const rt::ProcessImage& image = model.machine.image;
+    const size_t extent = std::min(image.outputExtent, rt::ProcessImage::kSize);
+    for (size_t i = 0; i < extent; ++i)
+        if (image.physicalOutputs[i] != 0) out["%QB" + std::to_string(i)] = image.physicalOutputs[i];
+    return out;
+}
+
 }  // namespace strun::project

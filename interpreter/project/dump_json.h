@@ -14,5 +14,10 @@ nlohmann::ordered_json valueToJson(const sema::Type* type, const uint8_t* p);
 void appendMember(nlohmann::ordered_json& obj, const std::string& key, nlohmann::ordered_json value);
 nlohmann::ordered_json globalsJson(const sema::ProgramModel& model);
 nlohmann::ordered_json programsJson(const sema::ProgramModel& model);
+// The physical output image, what the field last received (after each task's
+// output phase): {"%QB0": 5, ...}, the bytes that are not 0 in address order.
+// It differs from the %Q variables while output writing is inhibited (M340
+// %SW9) or not yet done.
+nlohmann::ordered_json physicalOutputsJson(const sema::ProgramModel& model);
 
 }  // namespace strun::project

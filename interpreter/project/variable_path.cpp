@@ -2,6 +2,7 @@
 
 #include <cctype>
 
+#include "interpreter/source/closest_name.h"
 #include "stdlib/literals.h"
 
 namespace strun::project {
@@ -11,8 +12,19 @@ using sema::Type;
 
 namespace {
 
+
 // One case folding for the whole checker (sema/types.h).
 std::string upper(std::string_view s) { return sema::upper(std::string(s)); }
+
+// "; did you mean 'X'?" for a mistyped name among `names` (any case, as ST), or "".
+std::string didYouMean(const std::string& typed, const std::vector<std::string>& names) {
+    std::vector<std::string> keys;
+    for (const auto& n : names) keys.push_back(upper(n));
+    const std::string best = closestName(upper(typed), keys);
+    for (size_t i = 0; i < keys.size(); ++i)
+        if (!best.empty() && keys[i] == best) return "; did you mean '" + names[i] + "'?";
+    return {};
+}
 
 bool opaque(const Type* t) { return t->kind == TK::Pointer || t->kind == TK::Reference || t->kind == TK::Interface; }
 
@@ -120,7 +132,9 @@ bool descend(VariableRef& ref, const std::vector<Step>& steps, size_t from, std:
         }
         const sema::Field* field = t->findField(upper(step.name));
         if (!field) {
-            error = "no member '" + step.name + "' in '" + ref.path + "' (" + t->name + ")";
+            std::vector<std::string> names;
+            for (const auto& f : t->fields) names.push_back(f.name);
+            error = "no member '" + step.name + "' in '" + ref.path + "' (" + t->name + ")" + didYouMean(step.name, names);
             return false;
         }
         if (t->kind == TK::FunctionBlock)
@@ -155,7 +169,10 @@ std::optional<VariableRef> resolveVariablePath(const sema::ProgramModel& model, 
         auto it = inst.pou->vars.find(upper(steps[1].name));
         const sema::VarSym* v = it == inst.pou->vars.end() ? nullptr : it->second;
         if (!v || v->section == ast::VarSection::Temp || v->byRef || !programVarAddress(inst, *v)) {
-            error = "no variable '" + steps[1].name + "' in program instance '" + inst.name + "'";
+            std::vector<std::string> names;
+            for (const auto& [key, var] : inst.pou->vars)
+                if (var->section != ast::VarSection::Temp && !var->byRef) names.push_back(var->name);
+            error = "no variable '" + steps[1].name + "' in program instance '" + inst.name + "'" + didYouMean(steps[1].name, names);
             return std::nullopt;
         }
         VariableRef ref{inst.name + "." + v->name, v->type, programVarAddress(inst, *v), v->bit, v->constant, &inst};
@@ -174,7 +191,10 @@ std::optional<VariableRef> resolveVariablePath(const sema::ProgramModel& model, 
             return ref;
         }
     }
-    error = "no variable '" + std::string(path) + "' (neither a program instance's variable nor a global)";
+    std::vector<std::string> names;
+    for (const auto& inst : model.programs) names.push_back(inst.name);
+    for (const sema::VarSym* g : model.globals) names.push_back(g->name);
+    error = "no variable '" + std::string(path) + "' (neither a program instance's variable nor a global)" + didYouMean(steps[0].name, names);
     return std::nullopt;
 }
 

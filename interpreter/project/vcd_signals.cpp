@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <map>
+#include <optional>
 
 #include "interpreter/project/variable_path.h"
 
@@ -107,6 +108,44 @@ std::vector<rt::VcdSignal> vcdSignals(const sema::ProgramModel& model, const std
     for (size_t i = 0; i < patterns.size(); ++i)
         if (!used[i]) unmatched.push_back(patterns[i]);
     return signals;
+}
+
+namespace {
+
+// "task:X" -> "X" (any case of "task:"), else nullopt.
+std::optional<std::string_view> taskPattern(std::string_view p) {
+    if (p.size() < 5 || p[4] != ':') return std::nullopt;
+    for (size_t k = 0; k < 4; ++k)
+        if (std::tolower(static_cast<unsigned char>(p[k])) != "task"[k]) return std::nullopt;
+    return p.substr(5);
+}
+
+}  // namespace
+
+std::vector<bool> vcdTaskSelection(const std::vector<std::string>& taskNames, const std::vector<std::string>& patterns,
+                                   std::vector<std::string>& variablePatterns, std::vector<std::string>& unmatched) {
+    // Every task by default (the contract's timeline); `task:P` patterns choose
+    // only those tasks, `!task:P` leaves those out.
+    bool anyPositive = false;
+    for (const std::string& p : patterns)
+        if (taskPattern(p)) anyPositive = true;
+    std::vector<bool> chosen(taskNames.size(), !anyPositive);
+    for (const std::string& p : patterns) {
+        const bool negative = !p.empty() && p[0] == '!';
+        auto task = taskPattern(negative ? std::string_view(p).substr(1) : std::string_view(p));
+        if (!task) {
+            variablePatterns.push_back(p);
+            continue;
+        }
+        bool any = false;
+        for (size_t i = 0; i < taskNames.size(); ++i)
+            if (matchesPattern(*task, taskNames[i])) {
+                any = true;
+                chosen[i] = !negative;
+            }
+        if (!any) unmatched.push_back(p);
+    }
+    return chosen;
 }
 
 }  // namespace strun::project

@@ -17,6 +17,14 @@ namespace strun::project {
 std::vector<rt::VcdSignal> vcdSignals(const sema::ProgramModel& model, const std::vector<std::string>& patterns,
                                       std::vector<std::string>& unmatched);
 
+// Which tasks get a running/idle waveform: every task (the contract's
+// timeline), or, when a --watch is `task:PATTERN`, only the tasks such
+// patterns name; `!task:PATTERN` leaves tasks out (`!task:*`: no timeline, a
+// small file for a freewheeling program). The other patterns go to
+// `variablePatterns`; a task pattern naming no task to `unmatched`.
+std::vector<bool> vcdTaskSelection(const std::vector<std::string>& taskNames, const std::vector<std::string>& patterns,
+                                   std::vector<std::string>& variablePatterns, std::vector<std::string>& unmatched);
+
 // `*`-glob match, case-insensitive.
 bool matchesPattern(std::string_view pattern, std::string_view text);
 

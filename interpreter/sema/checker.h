@@ -94,6 +94,8 @@ public:
     // Stores `value` (already of type t) into `place`.
     exec::Stmt* storeTo(exec::Expr* place, const Type* t, exec::Expr* value, int bit = -1);
     const std::string* currentPouName() const { return currentPouName_; }
+    // "did you mean '...'?" on `d` when a name in `declared` is close to `typed` (checker_suggest.cpp).
+    void suggestName(Diagnostic& d, const std::string& typed, const std::vector<std::string>& declared) const { suggest(d, typed, declared); }
 
 private:
     friend struct CheckerAccess;

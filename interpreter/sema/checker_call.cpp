@@ -71,7 +71,9 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
             for (VarSym* p : params)
                 if (upper(p->name) == key) param = p;
             if (!param) {
-                ck.error(a.loc, fmt::format("'{}' has no parameter '{}'", callee, a.name));
+                std::vector<std::string> names;
+                for (const VarSym* p : params) names.push_back(p->name);
+                ck.suggestName(ck.error(a.loc, fmt::format("'{}' has no parameter '{}'", callee, a.name)), a.name, names);
                 ok = false;
                 continue;
             }
@@ -389,7 +391,13 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         if ((base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou) {
             if (PouInfo* m = findMethod(base.type->pou, upper(callee.name))) return methodCall(base, m, e);
         }
-        error(callee.nameLoc.line ? callee.nameLoc : callee.loc, fmt::format("'{}' is not a method of {}", callee.name, typeName(base.type)));
+        Diagnostic& d = error(callee.nameLoc.line ? callee.nameLoc : callee.loc, fmt::format("'{}' is not a method of {}", callee.name, typeName(base.type)));
+        if ((base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou) {
+            std::vector<std::string> methods;
+            for (const PouInfo* p = base.type->pou; p; p = p->parent)
+                for (const auto& [key, m] : p->methods) methods.push_back(m->name);
+            suggest(d, callee.name, methods);
+        }
         return bad(e.loc);
     }
     error(e.loc, "this cannot be called");
@@ -430,6 +438,13 @@ exec::Stmt* Checker::bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, co
 exec::Stmt* Checker::bindOutput(const ast::Arg& arg, VarSym* p, Checked src) {
     Checked target = checkExpr(*arg.value);
     if (!target.ok) return nullptr;
+    if (!target.isPlace) {
+        // `fb(o => 5)`: the general "cannot be assigned" would not say why.
+        error(arg.value->loc, fmt::format("the output '{}' is connected with '=>' to a value: an output needs a variable that receives it",
+                                          p->name))
+            .withHelp(fmt::format("write '{} => someVariable', or leave the output out and read it later as instance.{}", p->name, p->name));
+        return nullptr;
+    }
     src.readOnly = false;
     if (arg.negated) {
         if (p->type->kind != TK::Bool) {

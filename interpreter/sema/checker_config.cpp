@@ -39,8 +39,21 @@ void Checker::buildDefaultConfiguration() {
     task.spec.kind = rt::TaskKind::Freewheeling;
     task.spec.priority = 30;
     task.spec.watchdog = rt::defaultProfile().defaultMainWatchdog;
-    // On a family with fixed tasks the default MainTask plays the first one's role (M340: MAST).
-    if (!profile().fixedTasks.empty()) task.spec.systemSlot = 0;
+    // On a family with fixed tasks the default MainTask plays the first one's
+    // role (M340: MAST), with its priority and default watchdog (%SW11 reads
+    // 250); it keeps the contract's name (decision 0245).
+    if (!profile().fixedTasks.empty()) {
+        const rt::FixedTask& first = profile().fixedTasks.front();
+        task.spec.systemSlot = 0;
+        task.spec.priority = first.priority;
+        task.spec.watchdog = first.defaultWatchdog;
+    }
+    // A family with a scan program (XGI): the lone programs are that scan
+    // program, at its priority below every task (decision 0245).
+    if (profile().triggerSampling == rt::TriggerSampling::EndOfScan) {
+        task.spec.isScanProgram = true;
+        task.spec.priority = profile().unassignedTaskPriority;
+    }
     for (PouInfo* p : pouOrder_) {
         if (p->kind != ast::PouKind::Program || libraryFiles_.count(p->ast->loc.file)) continue;
         instantiateProgram(p->name, p, p->ast->loc);
@@ -118,6 +131,7 @@ void Checker::buildConfiguration() {
         s.kind = rt::TaskKind::Freewheeling;
         s.priority = 30;
         bool hasInterval = false;
+        bool watchdogOn = false;
         for (const auto& p : td->params) {
             std::string key = upper(p.name);
             if (!p.value) continue;
@@ -137,10 +151,21 @@ void Checker::buildConfiguration() {
                 if (constIntExpr(p.value.get(), v, "PRIORITY")) s.priority = static_cast<int>(std::clamp<int64_t>(v, -1000000, 1000000));
                 s.priorityGiven = true;
             } else if (key == "WATCHDOG") {
-                constTime(p.value.get(), s.watchdog);
+                // WATCHDOG := TRUE: "check Watchdog" without a time, the seed's
+                // default applies (below); FALSE: no watchdog (decision 0244).
+                const std::string word = p.value->kind == ast::ExprKind::Literal ? upper(p.value->text) : "";
+                if (word == "TRUE" || word == "FALSE") {
+                    watchdogOn = word == "TRUE";
+                    s.watchdog = 0;
+                } else {
+                    constTime(p.value.get(), s.watchdog);
+                }
                 s.watchdogGiven = true;
             } else if (key == "EXTERNAL") {
-                if (externalInput(*p.value, s)) s.kind = rt::TaskKind::External;
+                // An external task also when its input is wrong: one message for
+                // the bad address, not a second one for a task without INTERVAL.
+                externalInput(*p.value, s);
+                s.kind = rt::TaskKind::External;
             } else if (key == "INPUT_DELAY") {
                 constTime(p.value.get(), s.inputDelay);
                 s.inputDelayGiven = true;
@@ -180,6 +205,12 @@ void Checker::buildConfiguration() {
             }
         }
         if (hasInterval && s.kind == rt::TaskKind::Freewheeling) s.kind = rt::TaskKind::Cyclic;
+        if (watchdogOn) {
+            // Seed 000: a cyclic task's default watchdog is twice its period (at
+            // most the target's largest watchdog); every other kind's is 200 ms.
+            s.watchdog = s.kind == rt::TaskKind::Cyclic ? 2 * s.interval : 200 * rt::kMillisecond;
+            if (profile().maxWatchdog > 0) s.watchdog = std::min(s.watchdog, profile().maxWatchdog);
+        }
         if (std::string warning = rt::applyTaskDefaults(profile(), s); !warning.empty()) log_.warning(s.loc, warning);
         model_.tasks.push_back(std::move(task));
     }

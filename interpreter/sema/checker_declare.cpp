@@ -98,7 +98,11 @@ void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
             existing->second = raw;
             model_.pouStore.push_back(std::move(info));
         } else if (pous_.count(key) || typeDecls_.count(key) || types().byName(key)) {
-            error(pou->nameLoc.line ? pou->nameLoc : pou->loc, fmt::format("duplicate declaration of '{}'", pou->name));
+            Diagnostic& d = error(pou->nameLoc.line ? pou->nameLoc : pou->loc, fmt::format("duplicate declaration of '{}'", pou->name));
+            if (existing != pous_.end() && existing->second->ast) {
+                const ast::Pou& first = *existing->second->ast;
+                d.note(first.nameLoc.line ? first.nameLoc : first.loc, fmt::format("'{}' is first declared here", first.name));
+            }
             model_.pouStore.push_back(std::move(info));  // keep it alive, unreachable by name
         } else {
             pous_[key] = raw;

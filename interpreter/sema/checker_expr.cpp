@@ -548,6 +548,11 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
     if (!f) {
         std::vector<std::string> members;
         for (const Field& field : t->fields) members.push_back(field.name);
+        // A mistyped method call (`fbMotor.Resett()`) reaches here too: its methods are candidates.
+        if (t->kind == TK::FunctionBlock && t->pou)
+            for (const PouInfo* p = t->pou; p; p = p->parent)
+                for (const auto& [mkey, m] : p->methods)
+                    if (m->name.rfind("__", 0) != 0) members.push_back(m->name);
         suggest(error(loc, fmt::format("'{}' has no member '{}'", typeName(t), member)), member, members);
         return bad(loc);
     }
@@ -1137,7 +1142,10 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
     if (isElementary(from->kind) && isElementary(target->kind) && !isStringType(from->kind))
         hint = fmt::format("; use {}_TO_{}", upper(from->name == "TIME_OF_DAY" ? "TOD" : from->name == "DATE_AND_TIME" ? "DT" : from->name),
                            upper(target->name == "TIME_OF_DAY" ? "TOD" : target->name == "DATE_AND_TIME" ? "DT" : target->name));
-    error(loc, fmt::format("{}: cannot convert {} to {} implicitly{}", what, typeName(from), typeName(target), hint));
+    Diagnostic& d = error(loc, fmt::format("{}: cannot convert {} to {} implicitly{}", what, typeName(from), typeName(target), hint));
+    // `s := "hello"`: in ST double quotes make a WSTRING literal (a C or Python habit).
+    if (e.isConst && from->kind == TK::WString && target->kind == TK::String)
+        d.withHelp("a STRING literal is written in single quotes ('hello'); double quotes make a WSTRING");
     return bad(loc);
 }
 

@@ -197,6 +197,7 @@ Checked Checker::propertyAccess(Checked base, const std::string& key, const ast:
     c.loc = loc;
     c.propertySetter = setter;
     c.propertyInstance = instance;
+    c.propertyName = (getter ? getter : setter)->name.substr(6);  // "__GET_Speed" -> "Speed"
     c.superRef = base.superRef;
     if (getter) {
         layoutPou(getter);
@@ -230,7 +231,7 @@ Checked Checker::propertyAccess(Checked base, const std::string& key, const ast:
 exec::Stmt* Checker::assignProperty(Checked target, Checked value, const ast::Loc& loc) {
     PouInfo* setter = target.propertySetter;
     if (!setter) {
-        error(loc, "the property has no SET accessor");
+        error(loc, fmt::format("the property '{}' has no SET accessor (it can be read, not assigned)", target.propertyName));
         return nullptr;
     }
     layoutPou(setter);

@@ -112,6 +112,7 @@ struct Checked {
     PouInfo* propertySetter = nullptr;  // a property read; assigning it calls this setter
     exec::Expr* propertyInstance = nullptr;
     bool writeOnlyProperty = false;   // a property with only a SET accessor
+    std::string propertyName;         // a property access: the property's declared name (messages)
     exec::Expr* flexDesc = nullptr;   // ARRAY[*] parameter: place of its descriptor
     // A variable place at a statically known location (member accesses fold into it).
     enum class Direct : uint8_t { None, Self, Frame, Abs, Pending } direct = Direct::None;

@@ -67,6 +67,8 @@ void addProjectSourceText(const std::string& path, std::string text, SourceSet& 
     addFile(path, std::move(text), sources, userFiles, log);
 }
 
+const char* const kStdinName = "<stdin>";
+
 bool isProjectSource(const std::string& path) {
     const std::string ext = lowerExtension(path);
     return ext == ".st" || ext == ".xml" || isTwinCatObject(path);
@@ -74,6 +76,7 @@ bool isProjectSource(const std::string& path) {
 
 bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log,
                        std::string& usageError) {
+    bool stdinRead = false;
     for (const auto& path : paths) {
         std::error_code ec;
         if (fs::is_directory(path, ec)) {
@@ -100,6 +103,17 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
             continue;
         }
         std::string text;
+        if (path == "-") {
+            // Source from standard input: one ST file, named <stdin> in messages.
+            if (stdinRead) {
+                usageError = "'-' (standard input) can be given once";
+                return false;
+            }
+            stdinRead = true;
+            if (!readSourceText(path, projectBytes(sources), text, usageError)) return false;
+            addFile(kStdinName, std::move(text), sources, userFiles, log);
+            continue;
+        }
         if (!fs::exists(path, ec)) {
             usageError = "'" + path + "': no such file";
             return false;

@@ -18,7 +18,8 @@ bool isProjectSource(const std::string& path);
 // extension as a file of that name would be.
 void addProjectSourceText(const std::string& path, std::string text, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log);
 
-// Reads every FILE (a FILE of any other extension is ST) and every source
+// Reads every FILE (a FILE of any other extension is ST; `-` is ST read from
+// standard input, named <stdin> in messages, at most once) and every source
 // file under a DIR, recursively, in name order. Returns false with
 // `usageError` set when a path does not exist, cannot be read, or is a
 // directory without any source. Errors in the files themselves (XML that is

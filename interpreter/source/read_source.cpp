@@ -7,7 +7,10 @@
 namespace strun {
 
 bool readSourceText(const std::string& path, std::size_t projectBytes, std::string& text, std::string& error) {
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+    // "-" is standard input (not closed here).
+    const bool standardInput = path == "-";
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> owned(standardInput ? nullptr : std::fopen(path.c_str(), "rb"), &std::fclose);
+    std::FILE* const file = standardInput ? stdin : owned.get();
     if (!file) {
         error = "cannot open '" + path + "'";
         return false;
@@ -18,11 +21,11 @@ bool readSourceText(const std::string& path, std::size_t projectBytes, std::stri
     text.clear();
     char buffer[65536];
     while (text.size() <= limit) {
-        std::size_t n = std::fread(buffer, 1, sizeof buffer, file.get());
+        std::size_t n = std::fread(buffer, 1, sizeof buffer, file);
         if (n == 0) break;
         text.append(buffer, n);
     }
-    if (std::ferror(file.get())) {
+    if (std::ferror(file)) {
         error = "cannot read '" + path + "'";
         return false;
     }

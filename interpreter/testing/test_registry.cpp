@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <iostream>
+#include <tuple>
 
 #include <fmt/format.h>
 
 #include "interpreter/exec/call_nodes.h"
+#include "interpreter/sema/types.h"
 #include "stdlib/value_format.h"
 
 namespace strun::testing {
@@ -241,6 +243,44 @@ void TestRegistry::failUnfinished(const std::string& why) {
                 f.fault = why;
                 t.failures.push_back(std::move(f));
             }
+}
+
+std::vector<std::string> TestRegistry::declaredTests(const Suite& s) const {
+    // In the order they are written (the checker visits methods by name).
+    std::vector<StaticTest> calls = staticTests;
+    std::stable_sort(calls.begin(), calls.end(), [](const auto& a, const auto& b) { return std::tie(a.file, a.line) < std::tie(b.file, b.line); });
+    std::vector<std::string> names;
+    for (const auto& call : calls) {
+        // Code names are "Block" and "Block.Method": the call must be in the suite's block or one it extends.
+        std::string block = sema::upper(call.pou.substr(0, call.pou.find('.')));
+        if (std::find(s.blocks.begin(), s.blocks.end(), block) == s.blocks.end()) continue;
+        std::string name(trim(call.name));
+        if (startsWithNoCase(name, "disabled_")) continue;
+        if (!selected(s, name)) continue;
+        if (std::find(names.begin(), names.end(), name) != names.end()) continue;
+        names.push_back(std::move(name));
+    }
+    return names;
+}
+
+void TestRegistry::addNotRun() {
+    for (auto& s : suites) {
+        size_t insertAt = 0;
+        for (const std::string& name : declaredTests(s)) {
+            auto it = std::find_if(s.tests.begin(), s.tests.end(), [&](const TestCase& t) { return t.name == name; });
+            if (it != s.tests.end()) {
+                insertAt = std::max(insertAt, size_t(it - s.tests.begin()) + 1);
+                continue;
+            }
+            TestCase t;
+            t.name = name;
+            Failure f;
+            f.fault = "not run";
+            t.failures.push_back(std::move(f));
+            s.tests.insert(s.tests.begin() + std::ptrdiff_t(insertAt), std::move(t));
+            ++insertAt;
+        }
+    }
 }
 
 bool FaultCapture::onAttention() {

@@ -132,6 +132,14 @@ public:
     int failedLookups = 0;
     // After the run: unfinished tests fail with `why` ("timeout").
     void failUnfinished(const std::string& why);
+    // The tests a suite declares (constant names given to TEST / TEST_ORDERED
+    // in its blocks, in the order written, DISABLED_ and --filter applied):
+    // what --list prints.
+    std::vector<std::string> declaredTests(const Suite& s) const;
+    // After the run: every declared test that never called TEST() (a test
+    // before it looped, the run stopped) is added and fails with `not run`,
+    // so that the report lists every test --list shows.
+    void addNotRun();
 
     int currentSuite = -1;
     int currentTest = -1;

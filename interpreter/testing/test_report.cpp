@@ -58,7 +58,9 @@ std::string failureText(const Failure& f, const SourceSet& sources) {
     return fmt::format("{}:{}: {}", fileName(f.file, sources), originalLine(f, sources), reason(f));
 }
 
-TestCounts printResults(const TestRegistry& reg, const SourceSet& sources, std::ostream& out) {
+TestCounts printResults(const TestRegistry& reg, const SourceSet& sources, std::ostream& out, bool summary, bool color) {
+    const char* pass = color ? "\x1b[1;32mPASS\x1b[0m " : "PASS ";
+    const char* fail = color ? "\x1b[1;31mFAIL\x1b[0m " : "FAIL ";
     TestCounts n;
     for (const auto& s : reg.suites) {
         for (const auto& t : s.tests) {
@@ -68,14 +70,14 @@ TestCounts printResults(const TestRegistry& reg, const SourceSet& sources, std::
             }
             if (t.failures.empty()) {
                 ++n.passed;
-                out << "PASS " << s.name << '.' << t.name << '\n';
+                out << pass << s.name << '.' << t.name << '\n';
             } else {
                 ++n.failed;
-                out << "FAIL " << s.name << '.' << t.name << ": " << failureText(t.failures.front(), sources) << '\n';
+                out << fail << s.name << '.' << t.name << ": " << failureText(t.failures.front(), sources) << '\n';
             }
         }
     }
-    out << n.passed << " passed, " << n.failed << " failed\n";
+    if (summary) out << n.passed << " passed, " << n.failed << " failed\n";
     return n;
 }
 
@@ -117,7 +119,7 @@ bool writeJUnit(const TestRegistry& reg, const SourceSet& sources, rt::PlcTime t
             xml << ">\n";
             if (t.skipped) xml << "      <skipped/>\n";
             for (const auto& f : t.failures) {
-                std::string type = !f.fault.empty() ? (f.fault == "timeout" ? "TIMEOUT" : "FAULT") : "ASSERT";
+                std::string type = f.fault.empty() ? "ASSERT" : f.fault == "timeout" ? "TIMEOUT" : f.fault == "not run" ? "NOT_RUN" : "FAULT";
                 xml << fmt::format("      <failure message=\"{}\" type=\"{}\"", xmlEscape(reason(f)), type);
                 if (f.file >= 0) xml << fmt::format(" file=\"{}\" line=\"{}\"", xmlEscape(fileName(f.file, sources)), originalLine(f, sources));
                 xml << ">" << xmlEscape(failureText(f, sources)) << "</failure>\n";
@@ -136,25 +138,8 @@ bool writeJUnit(const TestRegistry& reg, const SourceSet& sources, rt::PlcTime t
 }
 
 void printTestList(const TestRegistry& reg, std::ostream& out) {
-    // In the order they are written (the checker visits methods by name).
-    std::vector<TestRegistry::StaticTest> calls = reg.staticTests;
-    std::stable_sort(calls.begin(), calls.end(), [](const auto& a, const auto& b) { return std::tie(a.file, a.line) < std::tie(b.file, b.line); });
-    for (const auto& s : reg.suites) {
-        std::vector<std::string> seen;
-        for (const auto& call : calls) {
-            const std::string& pou = call.pou;
-            const std::string& raw = call.name;
-            // Code names are "Block" and "Block.Method": the call must be in the suite's block or one it extends.
-            std::string block = sema::upper(pou.substr(0, pou.find('.')));
-            if (std::find(s.blocks.begin(), s.blocks.end(), block) == s.blocks.end()) continue;
-            std::string name = raw;
-            if (sema::upper(name.substr(0, 9)) == "DISABLED_") continue;
-            if (!reg.filter.empty() && !globMatch(reg.filter, s.name + "." + name) && !globMatch(reg.filter, s.path + "." + name)) continue;
-            if (std::find(seen.begin(), seen.end(), name) != seen.end()) continue;
-            seen.push_back(name);
-            out << s.name << '.' << name << '\n';
-        }
-    }
+    for (const auto& s : reg.suites)
+        for (const std::string& name : reg.declaredTests(s)) out << s.name << '.' << name << '\n';
 }
 
 }  // namespace strun::testing

@@ -18,8 +18,10 @@ struct TestCounts {
 };
 
 // One line per test that ran, "PASS Suite.Test" or "FAIL Suite.Test: WHY",
-// then "N passed, M failed".
-TestCounts printResults(const TestRegistry& reg, const SourceSet& sources, std::ostream& out);
+// then "N passed, M failed" (unless `summary` is false: a slice of a -j run,
+// whose summary the parent prints). `color`: PASS green and FAIL red, as
+// diagnostics are coloured on a terminal.
+TestCounts printResults(const TestRegistry& reg, const SourceSet& sources, std::ostream& out, bool summary = true, bool color = false);
 
 // The FAIL reason of a failure: "FILE:LINE: EXP: e, ACT: a, MSG: m", a fault, or "timeout".
 std::string failureText(const struct Failure& f, const SourceSet& sources);

@@ -91,6 +91,7 @@ TestRunResult runTests(sema::ProgramModel& model, rt::RunOptions options, const 
     } else {
         reg.failUnfinished(reg.aborted ? reg.abortReason : "timeout");
     }
+    reg.addNotRun();
     return result;
 }
 

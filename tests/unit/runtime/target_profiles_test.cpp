@@ -78,7 +78,7 @@ TEST_CASE("M340 rules: fixed names, AUX needs a periodic MAST", "[targets]") {
     CHECK(violations[1].message.find("task 'AUX1' needs a periodic MAST") == 0);
 }
 
-TEST_CASE("XGI counts event and status tasks together as internal interrupts", "[targets]") {
+TEST_CASE("XGI allows 8 task programs in all, internal interrupts included (decision 0243)", "[targets]") {
     const PlcProfile& xgi = *findProfile("xgi");
     std::vector<TaskSpec> tasks;
     for (int i = 0; i < 9; ++i) {
@@ -88,7 +88,8 @@ TEST_CASE("XGI counts event and status tasks together as internal interrupts", "
     }
     auto violations = checkTaskRules(xgi, tasks);
     REQUIRE(violations.size() == 1);
-    CHECK(violations[0].message == "task 'E8': at most 8 internal interrupt tasks are allowed on LS XGI");
+    // One message: the total (8 task programs) is reached with the group limit; not both.
+    CHECK(violations[0].message == "task 'E8': at most 8 tasks are allowed on LS XGI");
 }
 
 TEST_CASE("the M340 system area keeps per-task words and bits", "[targets]") {
