@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 #include <nlohmann/json.hpp>
@@ -22,6 +23,7 @@
 #include "interpreter/project/dump_json.h"
 #include "interpreter/project/retain_store.h"
 #include "interpreter/project/task_runner.h"
+#include "runtime/output_files.h"
 #include "runtime/plc_profile.h"
 #include "runtime/scheduler.h"
 #include "stdlib/time_literals.h"
@@ -44,6 +46,25 @@ int usage(const std::string& message) {
     return kExitUsage;
 }
 
+// The files the run reads: no output may name one of them.
+std::vector<std::string> runInputs(const SourceSet& sources, const std::vector<std::string>& stimulusFiles) {
+    std::vector<std::string> inputs = stimulusFiles;
+    for (int i = 0; i < sources.size(); ++i)
+        if (!sources.file(i).path.empty()) inputs.push_back(sources.file(i).path);
+    return inputs;
+}
+
+// Closes an output written through stdio; false (reported) when a write, the flush or the close failed.
+bool closeOutput(std::FILE* file, const char* option, const std::string& path) {
+    const bool written = !std::ferror(file);
+    errno = 0;
+    const bool closed = std::fclose(file) == 0;
+    if (written && closed) return true;
+    std::cerr << "strun: " << option << ": cannot write '" << path << "'" << (errno ? std::string(": ") + std::strerror(errno) : "")
+              << "; the file is incomplete\n";
+    return false;
+}
+
 // The run options that do not depend on the compiled project.
 bool buildRunOptions(const CommandLine& line, rt::RunOptions& run, std::string& error) {
     run.virtualClock = line.virtualClock;
@@ -53,6 +74,15 @@ bool buildRunOptions(const CommandLine& line, rt::RunOptions& run, std::string& 
     }
     if (line.start && !line.virtualClock) {
         error = "--start needs --virtual";
+        return false;
+    }
+    // The calendar is 64-bit ns since 1970: a start after 2116 could not take
+    // PLC time to its limit (2^62 ns) without overflowing it (decision 0252).
+    constexpr int64_t kLatestStart = int64_t{53325} * 86400 * 1'000'000'000;  // DT#2116-01-01-00:00:00
+    static_assert(std::numeric_limits<int64_t>::max() - kLatestStart >= rt::kPlcTimeLimit + 2 * rt::kMaxStmtCost, "room for all PLC time");
+    if (line.start && (*line.start < 0 || *line.start > kLatestStart)) {
+        error = "--start: the PLC calendar runs from DT#1970-01-01-00:00:00 to DT#2116-01-01-00:00:00 (all of its PLC time, "
+                "up to 146 years, must fit the 64-bit nanosecond calendar)";
         return false;
     }
     if (line.stmtCost && *line.stmtCost > rt::kMaxStmtCost) {
@@ -156,20 +186,12 @@ int runCommand(const CommandLine& line) {
         return usage(error);
     if (!stimulus.empty()) run.stimulus = &stimulus;
 
-    // --vcd: the recorder observes the run; without it the scheduler has no observer at all.
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> vcdFile(nullptr, std::fclose);
-    std::unique_ptr<rt::VcdRecorder> recorder;
+    // Output files are checked before anything is written (docs/cli.md "Files strun reads and writes").
+    const std::vector<std::string> inputs = runInputs(compiled.sources, line.stimulusFiles);
     if (!line.vcdFile.empty()) {
-        vcdFile.reset(std::fopen(line.vcdFile.c_str(), "wb"));
-        if (!vcdFile) return usage("--vcd: cannot write '" + line.vcdFile + "': " + std::strerror(errno));
-        std::vector<std::string> unmatched;
-        std::vector<rt::VcdSignal> signals = project::vcdSignals(model, line.watches, unmatched);
-        for (const std::string& pattern : unmatched)
-            std::cerr << "strun: warning: --watch '" << pattern << "' matches no variable\n";
-        std::vector<std::string> taskNames;
-        for (const auto& t : model.tasks) taskNames.push_back(t.spec.name);
-        recorder = std::make_unique<rt::VcdRecorder>(vcdFile.get(), taskNames, std::move(signals), "strun " STRUN_VERSION);
-        run.observer = recorder.get();
+        std::vector<std::string> taken = inputs;
+        if (!line.retainFile.empty()) taken.push_back(line.retainFile);
+        if (std::string problem = rt::outputPathProblem("--vcd", line.vcdFile, taken); !problem.empty()) return usage(problem);
     }
 
     // --retain: RETAIN/PERSISTENT variables restored now (warm start unless
@@ -177,10 +199,30 @@ int runCommand(const CommandLine& line) {
     std::unique_ptr<project::RetainStore> retain;
     if (!line.retainFile.empty()) {
         retain = std::make_unique<project::RetainStore>(model, line.retainFile, std::cerr);
-        if (!line.cold) retain->restore();
+        if (!retain->start(line.cold, inputs, error)) return usage(error);
         retain->setInterval(std::chrono::nanoseconds(line.retainEvery.value_or(1'000'000'000)));
     } else if (line.cold || line.retainEvery) {
         return usage(std::string(line.cold ? "--cold" : "--retain-every") + " needs --retain FILE");
+    }
+
+    // --vcd: the recorder observes the run; without it the scheduler has no observer at all.
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> vcdFile(nullptr, std::fclose);
+    std::unique_ptr<rt::VcdRecorder> recorder;
+    if (!line.vcdFile.empty()) {
+        vcdFile.reset(rt::openRegularOutput(line.vcdFile, error));
+        if (!vcdFile) return usage("--vcd: " + error);
+        std::vector<std::string> unmatched;
+        bool truncated = false;
+        std::vector<rt::VcdSignal> signals = project::vcdSignals(model, line.watches, unmatched, truncated);
+        if (truncated)
+            std::cerr << "strun: warning: --vcd: more than " << project::kMaxVcdSignals
+                      << " variables to record; the first ones are recorded (--watch picks which)\n";
+        for (const std::string& pattern : unmatched)
+            std::cerr << "strun: warning: --watch '" << pattern << "' matches no variable\n";
+        std::vector<std::string> taskNames;
+        for (const auto& t : model.tasks) taskNames.push_back(t.spec.name);
+        recorder = std::make_unique<rt::VcdRecorder>(vcdFile.get(), taskNames, std::move(signals), "strun " STRUN_VERSION);
+        run.observer = recorder.get();
     }
 
     std::vector<std::unique_ptr<project::TaskRunner>> runners;
@@ -196,7 +238,9 @@ int runCommand(const CommandLine& line) {
     rt::PlcState state = scheduler.run();
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
-    if (retain) retain->save();  // however the run ended
+    // Every output is checked to its end: one that failed is reported and the exit status is 2.
+    bool outputFailed = retain && !retain->save();  // however the run ended
+    if (vcdFile && !closeOutput(vcdFile.release(), "--vcd", line.vcdFile)) outputFailed = true;
     printFaultReport(std::cerr, scheduler, compiled.sources, line.diagnostics, stderrWantsColor(line.diagnostics.color));
     if (!line.dump && !line.quiet) printRunSummary(std::cerr, scheduler, state);
     if (line.dump) {
@@ -209,7 +253,12 @@ int runCommand(const CommandLine& line) {
         out["tasks"] = scheduler.tasksJson();
         out["diagnostics"] = scheduler.diagnosticsJson();
         std::cout << out.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << std::endl;
+        if (!std::cout) {
+            std::cerr << "strun: --dump: cannot write the state to standard output\n";
+            outputFailed = true;
+        }
     }
+    if (outputFailed) return kExitUsage;
     return state == rt::PlcState::Run ? kExitOk : kExitStopped;
 }
 
