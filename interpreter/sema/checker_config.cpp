@@ -185,11 +185,12 @@ void Checker::buildConfiguration() {
     std::vector<rt::TaskSpec> specs;
     for (auto& t : model_.tasks) specs.push_back(t.spec);
     for (const auto& v : rt::checkTaskRules(profile(), specs)) error(v.loc, v.message);
-    std::unordered_map<std::string, ConfiguredTask*> taskByName;  // the first of a name, as a scan finds it
-    for (auto& t : model_.tasks) taskByName.try_emplace(upper(t.spec.name), &t);
+    // Indices, not pointers: the unassigned-program task below is added to model_.tasks.
+    std::unordered_map<std::string, size_t> taskByName;  // the first of a name, as a scan finds it
+    for (size_t i = 0; i < model_.tasks.size(); ++i) taskByName.try_emplace(upper(model_.tasks[i].spec.name), i);
     auto findTask = [&](const std::string& name) -> ConfiguredTask* {
         auto it = taskByName.find(upper(name));
-        return it == taskByName.end() ? nullptr : it->second;
+        return it == taskByName.end() ? nullptr : &model_.tasks[it->second];
     };
     // Program instances and FB bindings
     for (const ast::ProgramConfig* pc : programDecls) {
@@ -211,6 +212,7 @@ void Checker::buildConfiguration() {
                 dt.spec.priority = profile().unassignedTaskPriority;
                 dt.spec.isScanProgram = true;
                 model_.tasks.push_back(std::move(dt));
+                taskByName.try_emplace(upper(model_.tasks.back().spec.name), model_.tasks.size() - 1);
                 task = &model_.tasks.back();
             }
         }
