@@ -258,10 +258,10 @@ bool RetainStore::writeTo(int fd) const {
     return out.finish();
 }
 
-bool RetainStore::save() {
+bool RetainStore::save(bool quiet) {
     const std::string temp = target_ + ".tmp";
     auto fail = [&](const char* what, const std::string& file) {
-        warnings_ << "strun: warning: --retain: cannot " << what << " '" << file << "': " << std::strerror(errno) << "\n";
+        if (!quiet) warnings_ << "strun: warning: --retain: cannot " << what << " '" << file << "': " << std::strerror(errno) << "\n";
         return false;
     };
     // FILE.tmp is strun's own: never a link followed, a FIFO waited on or a device written.
@@ -271,7 +271,7 @@ bool RetainStore::save() {
     if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
         ::close(fd);
         errno = EINVAL;
-        warnings_ << "strun: warning: --retain: '" << temp << "' is not a regular file; nothing saved\n";
+        if (!quiet) warnings_ << "strun: warning: --retain: '" << temp << "' is not a regular file; nothing saved\n";
         return false;
     }
     if (!writeTo(fd)) {
@@ -295,7 +295,7 @@ bool RetainStore::save() {
     // Nothing is renamed over what is not a regular file (a device or FIFO put there during the run).
     if (::lstat(target_.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
         ::unlink(temp.c_str());
-        warnings_ << "strun: warning: --retain: '" << target_ << "' is no longer a regular file; nothing saved\n";
+        if (!quiet) warnings_ << "strun: warning: --retain: '" << target_ << "' is no longer a regular file; nothing saved\n";
         return false;
     }
     if (::rename(temp.c_str(), target_.c_str()) != 0) return fail("rename", temp);

@@ -33,8 +33,8 @@ public:
     // or damaged file is a cold start, with a warning for a damaged one).
     // False with `error` (a usage error, exit 2) when FILE may not be used.
     bool start(bool cold, const std::vector<std::string>& inputs, std::string& error);
-    // Writes the file atomically; false (with a warning) when it cannot.
-    bool save();
+    // Writes the file atomically; false (with a warning unless `quiet`) when it cannot.
+    bool save(bool quiet = false);
     // The largest retain file this project reads: twice the size of the
     // file its retained variables make, plus 1 MiB (room for values of an
     // earlier version of the program, which are dropped with a warning).
@@ -45,7 +45,9 @@ public:
         auto now = std::chrono::steady_clock::now();
         if (now - lastSave_ >= every_) {
             lastSave_ = now;
-            save();
+            // A failing periodic save (a full disk) is reported once, not every interval, until one succeeds.
+            const bool saved = save(failing_);
+            failing_ = !saved;
         }
     }
     void setInterval(std::chrono::nanoseconds every) { every_ = every; lastSave_ = std::chrono::steady_clock::now(); }
@@ -70,6 +72,7 @@ private:
     std::chrono::nanoseconds every_{0};
     std::chrono::steady_clock::time_point lastSave_{};
     bool truncated_ = false;
+    bool failing_ = false;  // the last periodic save failed (and said so)
     std::string target_;  // the file renamed over: path_, or where a symbolic link at path_ leads
 };
 

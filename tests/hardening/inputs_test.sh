@@ -53,6 +53,15 @@ for start in DT#1677-01-01-00:00:00 DT#1969-12-31-23:59:59 DT#2116-01-01-00:00:0
 done
 "$STRUN" run --virtual --cycles 1 --start DT#2116-01-01-00:00:00 "$WORK/main.st" 2>"$WORK/err" || fail "the latest --start: $(cat "$WORK/err")"
 
+# --vcd records at most 100 000 variables; --watch picks elements past that bound.
+printf 'PROGRAM Main VAR a : ARRAY[0..199999] OF BYTE; END_VAR a[199999] := a[199999] + 1; END_PROGRAM\n' > "$WORK/big.st"
+"$STRUN" run --virtual --cycles 2 --quiet --vcd "$WORK/all.vcd" "$WORK/big.st" 2>"$WORK/err" || fail "--vcd of a big array: $(cat "$WORK/err")"
+grep -q "more than 100000 variables to record" "$WORK/err" || fail "no --vcd bound warning: $(cat "$WORK/err")"
+[ "$(grep -c '^\$var wire 8 ' "$WORK/all.vcd")" = 100000 ] || fail "not 100000 signals recorded"
+"$STRUN" run --virtual --cycles 2 --quiet --vcd "$WORK/one.vcd" --watch 'Main.a[199999]' "$WORK/big.st" 2>"$WORK/err" || fail "--watch an element"
+[ -s "$WORK/err" ] && fail "--watch of one element warned: $(cat "$WORK/err")"
+grep -q ' a(199999) \$end' "$WORK/one.vcd" || fail "--watch did not pick the element: $(head -20 "$WORK/one.vcd")"
+
 # STRING_TO_DCTIME64 at the end of the 64-bit calendar: the exact ULINT, no wrap; before 2000: 0.
 cat > "$WORK/dc.st" <<'ST'
 PROGRAM Main
