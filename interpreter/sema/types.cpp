@@ -18,9 +18,27 @@ std::string upper(std::string s) {
     return s;
 }
 
+namespace {
+// `name` folded to upper case equals `upperName`, without building the folded copy.
+bool equalsFolded(const std::string& name, const std::string& upperName) {
+    if (name.size() != upperName.size()) return false;
+    for (size_t k = 0; k < name.size(); ++k) {
+        char c = name[k];
+        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+        if (c != upperName[k]) return false;
+    }
+    return true;
+}
+constexpr size_t kScannedNames = 8;  // up to this many, a scan costs less than building the index
+}  // namespace
+
 template <class T>
 const T* Type::findIn(const std::vector<T>& items, NameIndex& index, const std::string& upperName) {
-    if (items.empty()) return nullptr;
+    if (items.size() <= kScannedNames) {
+        for (const T& item : items)
+            if (equalsFolded(item.name, upperName)) return &item;
+        return nullptr;
+    }
     if (index.data != static_cast<const void*>(items.data()) || index.size > items.size()) {
         index.positions.clear();  // replaced or reallocated: positions are kept, but so few rebuilds cost O(n) in all
         index.size = 0;
