@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 #include <nlohmann/json.hpp>
@@ -27,6 +28,7 @@
 #include "interpreter/project/retain_store.h"
 #include "interpreter/project/task_runner.h"
 #include "interpreter/project/variable_path.h"
+#include "runtime/output_files.h"
 #include "runtime/plc_profile.h"
 #include "runtime/scheduler.h"
 #include "stdlib/time_literals.h"
@@ -49,6 +51,25 @@ int usage(const std::string& message) {
     return kExitUsage;
 }
 
+// The files the run reads: no output may name one of them.
+std::vector<std::string> runInputs(const SourceSet& sources, const std::vector<std::string>& stimulusFiles) {
+    std::vector<std::string> inputs = stimulusFiles;
+    for (int i = 0; i < sources.size(); ++i)
+        if (!sources.file(i).path.empty()) inputs.push_back(sources.file(i).path);
+    return inputs;
+}
+
+// Closes an output written through stdio; false (reported) when a write, the flush or the close failed.
+bool closeOutput(std::FILE* file, const char* option, const std::string& path) {
+    const bool written = !std::ferror(file);
+    errno = 0;
+    const bool closed = std::fclose(file) == 0;
+    if (written && closed) return true;
+    std::cerr << "strun: " << option << ": cannot write '" << path << "'" << (errno ? std::string(": ") + std::strerror(errno) : "")
+              << "; the file is incomplete\n";
+    return false;
+}
+
 // The run options that do not depend on the compiled project.
 bool buildRunOptions(const CommandLine& line, rt::RunOptions& run, std::string& error) {
     run.virtualClock = line.virtualClock;
@@ -58,6 +79,15 @@ bool buildRunOptions(const CommandLine& line, rt::RunOptions& run, std::string& 
     }
     if (line.start && !line.virtualClock) {
         error = "--start needs --virtual";
+        return false;
+    }
+    // The calendar is 64-bit ns since 1970: a start after 2116 could not take
+    // PLC time to its limit (2^62 ns) without overflowing it (decision 0252).
+    constexpr int64_t kLatestStart = int64_t{53325} * 86400 * 1'000'000'000;  // DT#2116-01-01-00:00:00
+    static_assert(std::numeric_limits<int64_t>::max() - kLatestStart >= rt::kPlcTimeLimit + 2 * rt::kMaxStmtCost, "room for all PLC time");
+    if (line.start && (*line.start < 0 || *line.start > kLatestStart)) {
+        error = "--start: the PLC calendar runs from DT#1970-01-01-00:00:00 to DT#2116-01-01-00:00:00 (all of its PLC time, "
+                "up to 146 years, must fit the 64-bit nanosecond calendar)";
         return false;
     }
     if (line.stmtCost && *line.stmtCost > rt::kMaxStmtCost) {
@@ -170,19 +200,43 @@ int runCommand(const CommandLine& line) {
         return usage(error);
     if (!stimulus.empty()) run.stimulus = &stimulus;
 
+    // Output files are checked before anything is written (docs/cli.md "Files strun reads and writes").
+    const std::vector<std::string> inputs = runInputs(compiled.sources, line.stimulusFiles);
+    if (!line.vcdFile.empty()) {
+        std::vector<std::string> taken = inputs;
+        if (!line.retainFile.empty()) taken.push_back(line.retainFile);
+        if (std::string problem = rt::outputPathProblem("--vcd", line.vcdFile, taken); !problem.empty()) return usage(problem);
+    }
+
+    // --retain: RETAIN/PERSISTENT variables restored now (warm start unless
+    // --cold), saved periodically between activations and at the end.
+    std::unique_ptr<project::RetainStore> retain;
+    if (!line.retainFile.empty()) {
+        retain = std::make_unique<project::RetainStore>(model, line.retainFile, std::cerr);
+        if (!retain->start(line.cold, inputs, error)) return usage(error);
+        retain->setInterval(std::chrono::nanoseconds(line.retainEvery.value_or(1'000'000'000)));
+    } else if (line.cold || line.retainEvery) {
+        return usage(std::string(line.cold ? "--cold" : "--retain-every") + " needs --retain FILE");
+    }
+
     // --vcd: the recorder observes the run; without it the scheduler has no observer at all.
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> vcdFile(nullptr, std::fclose);
     std::unique_ptr<rt::VcdRecorder> recorder;
     if (!line.vcdFile.empty()) {
-        vcdFile.reset(std::fopen(line.vcdFile.c_str(), "wb"));
-        if (!vcdFile) return usage("--vcd: cannot write '" + line.vcdFile + "': " + std::strerror(errno));
+        vcdFile.reset(rt::openRegularOutput(line.vcdFile, error));
+        if (!vcdFile) return usage("--vcd: " + error);
         std::vector<std::string> unmatched, variablePatterns;
         std::vector<std::string> taskNames;
         for (const auto& t : model.tasks) taskNames.push_back(t.spec.name);
         // --watch 'task:PATTERN' / '!task:PATTERN' choose the task waveforms (decision 0241).
         std::vector<bool> taskWaveforms = project::vcdTaskSelection(taskNames, line.watches, variablePatterns, unmatched);
         std::vector<rt::VcdSignal> signals;  // --watch with task patterns only: no variable
-        if (line.watches.empty() || !variablePatterns.empty()) signals = project::vcdSignals(model, variablePatterns, unmatched);
+        bool truncated = false;
+        if (line.watches.empty() || !variablePatterns.empty())
+            signals = project::vcdSignals(model, variablePatterns, unmatched, truncated);
+        if (truncated)
+            std::cerr << "strun: warning: --vcd: more than " << project::kMaxVcdSignals
+                      << " variables to record; the first ones are recorded (--watch picks which)\n";
         for (const std::string& pattern : unmatched) {
             // A plain path gets the resolver's reason, with its "did you mean".
             std::string why;
@@ -193,17 +247,6 @@ int runCommand(const CommandLine& line) {
         }
         recorder = std::make_unique<rt::VcdRecorder>(vcdFile.get(), taskNames, std::move(signals), "strun " STRUN_VERSION, taskWaveforms);
         run.observer = recorder.get();
-    }
-
-    // --retain: RETAIN/PERSISTENT variables restored now (warm start unless
-    // --cold), saved periodically between activations and at the end.
-    std::unique_ptr<project::RetainStore> retain;
-    if (!line.retainFile.empty()) {
-        retain = std::make_unique<project::RetainStore>(model, line.retainFile, std::cerr);
-        if (!line.cold) retain->restore();
-        retain->setInterval(std::chrono::nanoseconds(line.retainEvery.value_or(1'000'000'000)));
-    } else if (line.cold || line.retainEvery) {
-        return usage(std::string(line.cold ? "--cold" : "--retain-every") + " needs --retain FILE");
     }
 
     // --force, --paused, --serve: the control plane of a live run (cli/live_options.h).
@@ -231,7 +274,9 @@ int runCommand(const CommandLine& line) {
     modbus.stop();
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
-    if (retain) retain->save();  // however the run ended
+    // Every output is checked to its end: one that failed is reported and the exit status is 2.
+    bool outputFailed = retain && !retain->save();  // however the run ended
+    if (vcdFile && !closeOutput(vcdFile.release(), "--vcd", line.vcdFile)) outputFailed = true;
     printFaultReport(std::cerr, scheduler, compiled.sources, line.diagnostics, stderrWantsColor(line.diagnostics.color));
     if (!line.dump && !line.quiet)
         printRunSummary(std::cerr, scheduler, state, line.diagnostics.format,
@@ -248,7 +293,12 @@ int runCommand(const CommandLine& line) {
         out["forces"] = live ? live->forcesJson() : nlohmann::ordered_json::object();
         out["physical_outputs"] = project::physicalOutputsJson(model);
         std::cout << out.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << std::endl;
+        if (!std::cout) {
+            std::cerr << "strun: --dump: cannot write the state to standard output\n";
+            outputFailed = true;
+        }
     }
+    if (outputFailed) return kExitUsage;
     return state == rt::PlcState::Run ? kExitOk : kExitStopped;
 }
 

@@ -72,6 +72,8 @@ bool readStimulusFile(const std::string& path, std::vector<project::StimulusEntr
     std::string line;
     bool headerAllowed = true;
     for (int number = 1; std::getline(in, line); ++number) {
+        // Spreadsheets save "CSV UTF-8" with a byte-order mark: it is not part of the first field.
+        if (number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
         std::string where = path + ":" + std::to_string(number);
         std::string t = trimmed(line);
         if (t.empty() || t[0] == '#') continue;

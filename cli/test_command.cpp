@@ -17,6 +17,7 @@
 #include "interpreter/testing/test_registry.h"
 #include "interpreter/testing/test_report.h"
 #include "interpreter/testing/test_session.h"
+#include "runtime/output_files.h"
 #include "runtime/plc_profile.h"
 
 namespace strun::cli {
@@ -140,6 +141,12 @@ int testCommand(const CommandLine& line, const TestCommandLine& test) {
     std::vector<int> indices;
     CompileLog log;
     if (!source::readProjectInputs(line.files, sources, indices, log, error)) return usage(error);
+    if (!test.junit.empty()) {
+        // Checked before anything runs: a regular file or a new one, none of the inputs.
+        std::vector<std::string> inputs = line.stimulusFiles;
+        for (int i = 0; i < sources.size(); ++i) inputs.push_back(sources.file(i).path);
+        if (std::string problem = rt::outputPathProblem("--junit", test.junit, inputs); !problem.empty()) return usage(problem);
+    }
     auto model = testing::compileForTests(sources, indices, log, line.compile);
     if (printDiagnostics(log, sources, line.diagnostics, std::cerr, stderrWantsColor(line.diagnostics.color))) return kExitCompile;
     if (!model) return kExitCompile;

@@ -330,7 +330,10 @@ void Scheduler::startTask(TaskRun& task, PlcTime now) {
 
 PlcTime Scheduler::calendarToPlc(int64_t calendar) const {
     if (calendar == kNever) return kNever;
-    return std::max<PlcTime>(calendar - calendarBase_, machine_.now);
+    // Checked: an AT of LDT#1700-01-01 is far before any base; one past the end never comes.
+    PlcTime plc = 0;
+    if (__builtin_sub_overflow(calendar, calendarBase_, &plc)) return calendar < calendarBase_ ? machine_.now : kNever;
+    return std::max<PlcTime>(plc, machine_.now);
 }
 
 // Releases everything whose moment has come, in time order (ties: declaration order).

@@ -44,8 +44,9 @@ int64_t timeEventOccurrence(int64_t at, TimeRepeat repeat, int64_t index) {
     if (index < 0) return kNever;
     if (repeat == TimeRepeat::Once) return index == 0 ? at : kNever;
     if (int64_t period = fixedPeriod(repeat)) {
-        if (index > (kNever - at) / period) return kNever;
-        return at + index * period;
+        // 128-bit: an AT long before 1970 (LDT#1700-...) is a negative `at`, and kNever - at would overflow.
+        const __int128 occurrence = static_cast<__int128>(at) + static_cast<__int128>(index) * period;
+        return occurrence >= kNever ? kNever : static_cast<int64_t>(occurrence);
     }
     CivilDate first = civilFromDays(dayOf(at));
     int64_t timeOfDay = nanosOfDay(at);
@@ -61,8 +62,8 @@ int64_t nextTimeEventOccurrence(int64_t at, TimeRepeat repeat, int64_t notBefore
     if (at >= notBefore) return at;
     if (repeat == TimeRepeat::Once) return kNever;
     if (int64_t period = fixedPeriod(repeat)) {
-        int64_t distance = notBefore - at;  // > 0
-        int64_t index = distance / period + (distance % period != 0 ? 1 : 0);
+        const uint64_t distance = static_cast<uint64_t>(notBefore) - static_cast<uint64_t>(at);  // > 0, exact even past INT64_MAX
+        const int64_t index = static_cast<int64_t>(distance / uint64_t(period) + (distance % uint64_t(period) != 0 ? 1 : 0));
         return timeEventOccurrence(at, repeat, index);
     }
     // Calendar repeats: start one step before the estimated month and walk forward.

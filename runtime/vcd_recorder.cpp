@@ -4,6 +4,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <unordered_map>
 
 namespace strun::rt {
 
@@ -25,13 +26,16 @@ std::string idCode(size_t n) {
 struct Scope {
     std::string name;
     std::vector<std::unique_ptr<Scope>> children;  // declaration order
+    std::unordered_map<std::string, Scope*> byName;  // an array of structures has a scope per element
     std::vector<std::string> vars;                 // "$var ... $end" lines
     Scope& child(const std::string& childName) {
-        for (auto& c : children)
-            if (c->name == childName) return *c;
-        children.push_back(std::make_unique<Scope>());
-        children.back()->name = childName;
-        return *children.back();
+        auto [it, fresh] = byName.try_emplace(childName, nullptr);
+        if (fresh) {
+            children.push_back(std::make_unique<Scope>());
+            children.back()->name = childName;
+            it->second = children.back().get();
+        }
+        return *it->second;
     }
     void write(std::FILE* out) const {
         for (const std::string& v : vars) std::fputs(v.c_str(), out);
@@ -69,7 +73,8 @@ VcdRecorder::VcdRecorder(std::FILE* out, const std::vector<std::string>& taskNam
         const VcdSignal& s = signals_[i];
         signalIds_.push_back(idCode(taskNames.size() + i));
         Scope* scope = &root;
-        for (const std::string& name : s.scopes) scope = &scope->child(reference(name));
+        if (s.scopes)
+            for (const std::string& name : *s.scopes) scope = &scope->child(reference(name));
         std::string decl;
         switch (s.kind) {
             case VcdSignal::Kind::Bit: decl = "$var wire 1 "; break;

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,7 @@ namespace strun::rt {
 
 struct VcdSignal {
     enum class Kind : uint8_t { Bit, Vector, Real32, Real64 };
-    std::vector<std::string> scopes;  // enclosing scopes, outermost first ("Main", "valve")
+    std::shared_ptr<const std::vector<std::string>> scopes;  // enclosing scopes, outermost first ("Main", "valve"); shared by the elements of an array
     std::string name;                 // the leaf ("cmd", "levels(3)")
     Kind kind = Kind::Vector;
     const uint8_t* addr = nullptr;

@@ -137,8 +137,11 @@ struct StringToDcTimeNode final : exec::Expr {
             for (int k = fracStart; k < fracEnd; ++k) frac = frac * 10 + (text[k] - '0');
             for (; digits < 9; ++digits) frac *= 10;
         }
-        int64_t dc = date.value() + frac - kDcEpochFrom1970;
-        return dc < 0 ? 0 : dc;
+        // Before 2000 there is no DC time. From 2000 on, unsigned: the
+        // fraction of a date late in 2262 takes the sum past INT64_MAX, which
+        // a T_DCTIME64 (ULINT) holds (signed, it overflowed).
+        if (date.value() < kDcEpochFrom1970) return 0;
+        return static_cast<int64_t>(static_cast<uint64_t>(date.value() - kDcEpochFrom1970) + static_cast<uint64_t>(frac));
     }
 };
 

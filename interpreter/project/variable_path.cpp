@@ -200,10 +200,11 @@ std::optional<VariableRef> resolveVariablePath(const sema::ProgramModel& model, 
 
 namespace {
 
-void expand(const VariableRef& ref, std::vector<std::string>& scopes, const std::string& leaf,
-            const std::function<void(const ElementaryVar&)>& visit) {
+// False once `visit` asked to stop.
+bool expand(const VariableRef& ref, std::vector<std::string>& scopes, const std::string& leaf,
+            const std::function<bool(const ElementaryVar&)>& visit) {
     const Type* t = ref.type;
-    if (opaque(t)) return;
+    if (opaque(t)) return true;
     if (t->kind == TK::Struct || t->kind == TK::FunctionBlock) {
         scopes.push_back(leaf);
         std::vector<const Type*> chain;
@@ -211,13 +212,13 @@ void expand(const VariableRef& ref, std::vector<std::string>& scopes, const std:
         for (const Type* c : chain)
             for (const auto& f : c->fields) {
                 VariableRef member{ref.path + "." + f.name, f.type, ref.addr + f.offset, -1, ref.constant, ref.program};
-                expand(member, scopes, f.name, visit);
+                if (!expand(member, scopes, f.name, visit)) return false;
             }
         scopes.pop_back();
-        return;
+        return true;
     }
     if (t->kind == TK::Array) {
-        if (t->dims.empty()) return;
+        if (t->dims.empty()) return true;
         uint64_t count = 1;
         for (const auto& d : t->dims) count *= uint64_t(d.count());
         uint64_t elemSize = count ? t->size / count : 0;
@@ -231,16 +232,16 @@ void expand(const VariableRef& ref, std::vector<std::string>& scopes, const std:
             }
             for (size_t d = 0; d < idx.size(); ++d) sub += (d ? "," : "") + std::to_string(idx[d]);
             VariableRef element{ref.path + "[" + sub + "]", t->elem, ref.addr + n * elemSize, -1, ref.constant, ref.program};
-            expand(element, scopes, leaf + "[" + sub + "]", visit);
+            if (!expand(element, scopes, leaf + "[" + sub + "]", visit)) return false;
         }
-        return;
+        return true;
     }
-    visit(ElementaryVar{ref, scopes, leaf});
+    return visit(ElementaryVar{ref, scopes, leaf});
 }
 
 }  // namespace
 
-void forEachElementary(const sema::ProgramModel& model, const std::function<void(const ElementaryVar&)>& visit) {
+void forEachElementary(const sema::ProgramModel& model, const std::function<bool(const ElementaryVar&)>& visit) {
     std::vector<std::string> scopes;
     for (const auto& inst : model.programs) {
         scopes.assign(1, inst.name);
@@ -248,13 +249,13 @@ void forEachElementary(const sema::ProgramModel& model, const std::function<void
             if (v->section == ast::VarSection::Temp || v->byRef) continue;
             uint8_t* addr = programVarAddress(inst, *v);
             if (!addr) continue;
-            expand(VariableRef{inst.name + "." + v->name, v->type, addr, v->bit, v->constant, &inst}, scopes, v->name, visit);
+            if (!expand(VariableRef{inst.name + "." + v->name, v->type, addr, v->bit, v->constant, &inst}, scopes, v->name, visit)) return;
         }
     }
     scopes.clear();
     for (const sema::VarSym* g : model.globals) {
         if (g->byRef || !g->abs) continue;
-        expand(VariableRef{g->globalKey(), g->type, g->abs, g->bit, g->constant, nullptr}, scopes, g->globalKey(), visit);
+        if (!expand(VariableRef{g->globalKey(), g->type, g->abs, g->bit, g->constant, nullptr}, scopes, g->globalKey(), visit)) return;
     }
 }
 

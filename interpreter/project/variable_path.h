@@ -34,14 +34,16 @@ std::optional<VariableRef> resolveVariablePath(const sema::ProgramModel& model, 
 
 // An elementary variable for recording: `scopes` are the enclosing
 // instance/struct names ("Main", "valve"), `name` the leaf ("cmd", "levels[3]").
+// `scopes` is the walk's own, valid during the visit only (never copied per element).
 struct ElementaryVar {
     VariableRef ref;
-    std::vector<std::string> scopes;
+    const std::vector<std::string>& scopes;
     std::string name;
 };
 // Every elementary variable of every program instance (VAR_TEMP and
 // in-out references excepted) and every global, in declaration order;
-// struct and FB members and array elements expanded.
-void forEachElementary(const sema::ProgramModel& model, const std::function<void(const ElementaryVar&)>& visit);
+// struct and FB members and array elements expanded. The walk ends early
+// when `visit` returns false.
+void forEachElementary(const sema::ProgramModel& model, const std::function<bool(const ElementaryVar&)>& visit);
 
 }  // namespace strun::project

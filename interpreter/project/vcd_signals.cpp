@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <map>
+#include <memory>
 #include <optional>
 
 #include "interpreter/project/variable_path.h"
@@ -78,24 +79,38 @@ std::string leafName(std::string name) {
 }  // namespace
 
 std::vector<rt::VcdSignal> vcdSignals(const sema::ProgramModel& model, const std::vector<std::string>& patterns,
-                                      std::vector<std::string>& unmatched) {
+                                      std::vector<std::string>& unmatched, bool& truncated) {
     std::map<const sema::ProgramInstance*, int> taskOf;
     for (size_t i = 0; i < model.tasks.size(); ++i)
         for (const auto& call : model.tasks[i].calls)
             if (call.program && !taskOf.count(call.program)) taskOf[call.program] = int(i);
     std::vector<bool> used(patterns.size(), false);
     std::vector<rt::VcdSignal> signals;
+    // The elements of one array (members of one instance) share one list of scope names.
+    std::shared_ptr<const std::vector<std::string>> scopes;
+    std::vector<std::string> scopesOf;  // what `scopes` was made from
+    truncated = false;
     forEachElementary(model, [&](const ElementaryVar& v) {
         rt::VcdSignal s;
-        if (!encode(v.ref.type, s)) return;
+        if (!encode(v.ref.type, s)) return true;
         if (!patterns.empty()) {
             bool any = false;
             for (size_t i = 0; i < patterns.size(); ++i)
                 if (matchesPattern(patterns[i], v.ref.path)) any = used[i] = true;
-            if (!any) return;
+            if (!any) return true;
         }
-        for (const std::string& scope : v.scopes) s.scopes.push_back(leafName(scope));
-        if (s.scopes.empty()) s.scopes.push_back("globals");
+        if (signals.size() >= kMaxVcdSignals) {
+            truncated = true;
+            return false;
+        }
+        if (!scopes || v.scopes != scopesOf) {
+            scopesOf = v.scopes;
+            auto names = std::make_shared<std::vector<std::string>>();
+            for (const std::string& scope : v.scopes) names->push_back(leafName(scope));
+            if (names->empty()) names->push_back("globals");
+            scopes = std::move(names);
+        }
+        s.scopes = scopes;
         s.name = leafName(v.name);
         s.addr = v.ref.addr;
         s.bit = v.ref.bit;
@@ -104,8 +119,9 @@ std::vector<rt::VcdSignal> vcdSignals(const sema::ProgramModel& model, const std
             s.task = it == taskOf.end() ? -2 : it->second;  // -2: no task runs it, sampled never
         }
         signals.push_back(std::move(s));
+        return true;
     });
-    for (size_t i = 0; i < patterns.size(); ++i)
+    for (size_t i = 0; i < patterns.size() && !truncated; ++i)  // a cut walk did not try every pattern
         if (!used[i]) unmatched.push_back(patterns[i]);
     return signals;
 }

@@ -13,9 +13,14 @@
 
 namespace strun::project {
 
-// `unmatched` gets the patterns that match no recordable variable.
+// At most this many variables are recorded (docs/limits.md): past it the
+// rest is left out with a warning, and --watch picks what to record.
+inline constexpr size_t kMaxVcdSignals = 100000;
+
+// `unmatched` gets the patterns that match no recordable variable;
+// `truncated` is set when more than kMaxVcdSignals would be recorded.
 std::vector<rt::VcdSignal> vcdSignals(const sema::ProgramModel& model, const std::vector<std::string>& patterns,
-                                      std::vector<std::string>& unmatched);
+                                      std::vector<std::string>& unmatched, bool& truncated);
 
 // Which tasks get a running/idle waveform: every task (the contract's
 // timeline), or, when a --watch is `task:PATTERN`, only the tasks such

@@ -8,6 +8,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "interpreter/ast/ast.h"
@@ -158,6 +159,11 @@ private:
     void declareMethodInstanceVars(PouInfo* fb, uint32_t& instOff, std::vector<Field>& fields);
     void buildDefaultConfiguration();
     void instantiateProgram(const std::string& name, PouInfo* pou, const ast::Loc& loc);
+    // The program instance of that upper-case name, or null (hashed: a name is looked up per identifier).
+    const ProgramInstance* findProgram(const std::string& upperName) const {
+        auto it = programIndex_.find(upperName);
+        return it == programIndex_.end() ? nullptr : &model_.programs[it->second];
+    }
 
     // ---- bodies (checker_stmt.cpp / checker_expr.cpp / checker_call.cpp)
     void checkBodies();
@@ -251,6 +257,7 @@ private:
     bool isNamespace(const ast::Expr& e) const;
     std::map<std::string, std::pair<const Type*, const Enumerator*>> enumValues_;  // unqualified, unique ones
     std::set<std::string> ambiguousEnumValues_;
+    std::unordered_map<std::string, size_t> programIndex_;  // upper-case instance name -> model_.programs index
 
     // state while checking one body
     PouInfo* pou_ = nullptr;

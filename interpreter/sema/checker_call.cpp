@@ -34,6 +34,9 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
     for (VarSym* p : params)
         if (p->section != ast::VarSection::Output) inputsInOrder.push_back(p);
     std::set<VarSym*> seen;
+    // Named arguments by folded name, built once per call (not a scan per argument).
+    std::unordered_map<std::string, VarSym*> byName;
+    size_t firstFree = 0;  // inputsInOrder before it are all given
     size_t positionalCount = 0;
     for (const auto& a : call.args) positionalCount += a.name.empty() ? 1 : 0;
     if (positionalCount > inputsInOrder.size()) {
@@ -51,8 +54,8 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
         if (a.name.empty() && sawNamed) {
             // CODESYS/TwinCAT: a positional argument after named ones takes the
             // first input not given yet, in declaration order (decision 0091).
-            for (VarSym* p : inputsInOrder)
-                if (!seen.count(p)) { param = p; break; }
+            while (firstFree < inputsInOrder.size() && seen.count(inputsInOrder[firstFree])) ++firstFree;
+            if (firstFree < inputsInOrder.size()) param = inputsInOrder[firstFree];
             if (!param) {
                 ck.error(a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
                 ok = false;
@@ -68,8 +71,9 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
         } else {
             sawNamed = true;
             std::string key = ck.canonicalParameter(owner, upper(a.name));
-            for (VarSym* p : params)
-                if (upper(p->name) == key) param = p;
+            if (byName.empty())
+                for (VarSym* p : params) byName[upper(p->name)] = p;  // the last of a name, as the scan found it
+            if (auto it = byName.find(key); it != byName.end()) param = it->second;
             if (!param) {
                 std::vector<std::string> names;
                 for (const VarSym* p : params) names.push_back(p->name);

@@ -18,11 +18,10 @@ namespace strun::sema {
 
 void Checker::instantiateProgram(const std::string& name, PouInfo* pou, const ast::Loc& loc) {
     layoutPou(pou);
-    for (auto& p : model_.programs)
-        if (upper(p.name) == upper(name)) {
-            error(loc, fmt::format("duplicate program instance '{}'", name));
-            return;
-        }
+    if (!programIndex_.try_emplace(upper(name), model_.programs.size()).second) {
+        error(loc, fmt::format("duplicate program instance '{}'", name));
+        return;
+    }
     ProgramInstance inst;
     inst.name = name;
     inst.pou = pou;
@@ -217,10 +216,12 @@ void Checker::buildConfiguration() {
     std::vector<rt::TaskSpec> specs;
     for (auto& t : model_.tasks) specs.push_back(t.spec);
     for (const auto& v : rt::checkTaskRules(profile(), specs)) error(v.loc, v.message);
+    // Indices, not pointers: the unassigned-program task below is added to model_.tasks.
+    std::unordered_map<std::string, size_t> taskByName;  // the first of a name, as a scan finds it
+    for (size_t i = 0; i < model_.tasks.size(); ++i) taskByName.try_emplace(upper(model_.tasks[i].spec.name), i);
     auto findTask = [&](const std::string& name) -> ConfiguredTask* {
-        for (auto& t : model_.tasks)
-            if (upper(t.spec.name) == upper(name)) return &t;
-        return nullptr;
+        auto it = taskByName.find(upper(name));
+        return it == taskByName.end() ? nullptr : &model_.tasks[it->second];
     };
     // Program instances and FB bindings
     for (const ast::ProgramConfig* pc : programDecls) {
@@ -242,6 +243,7 @@ void Checker::buildConfiguration() {
                 dt.spec.priority = profile().unassignedTaskPriority;
                 dt.spec.isScanProgram = true;
                 model_.tasks.push_back(std::move(dt));
+                taskByName.try_emplace(upper(model_.tasks.back().spec.name), model_.tasks.size() - 1);
                 task = &model_.tasks.back();
             }
         }
@@ -298,8 +300,7 @@ void Checker::buildConfiguration() {
         for (PouInfo* p : pouOrder_) {
             if (p->kind != ast::PouKind::Program || libraryFiles_.count(p->ast->loc.file)) continue;
             const std::string key = upper(p->name);
-            if (std::none_of(model_.programs.begin(), model_.programs.end(), [&](const ProgramInstance& i) { return upper(i.name) == key; }))
-                instantiateProgram(p->name, p, p->ast->loc);
+            if (!findProgram(key)) instantiateProgram(p->name, p, p->ast->loc);
         }
     if (!options_.testProgram.empty()) addTestProgram(options_.testProgram);
     for (const auto& t : model_.tasks)

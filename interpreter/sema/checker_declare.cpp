@@ -230,11 +230,12 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         t->align = align;
         image.resize(t->size);
         bool nonZero = false;
+        std::unordered_map<std::string, const ast::VarDecl*> declOf;  // the last declaration of a name, as before
+        for (const auto& f : spec->fields)
+            for (const auto& n : f.names) declOf[upper(n)] = &f;
         for (const auto& fld : t->fields) {
-            const ast::VarDecl* fd = nullptr;
-            for (const auto& f : spec->fields)
-                for (const auto& n : f.names)
-                    if (upper(n) == upper(fld.name)) fd = &f;
+            auto found = declOf.find(upper(fld.name));
+            const ast::VarDecl* fd = found == declOf.end() ? nullptr : found->second;
             writeDefault(image.data() + fld.offset, fld.type);
             if (fd && fd->init) writeInitial(image.data() + fld.offset, fld.type, fd->init.get(), fd->loc);
         }
@@ -266,8 +267,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
             if (ev.value && !constIntExpr(ev.value.get(), v, "an enumeration value")) v = next;
             if (!ev.value && pastLargest)
                 error(ev.loc, fmt::format("the enumeration value '{}' would follow the largest LINT: give it an explicit value", ev.name));
-            for (const auto& other : t.enumerators)
-                if (upper(other.name) == upper(ev.name)) error(ev.loc, fmt::format("duplicate enumeration value '{}'", ev.name));
+            if (t.findEnumerator(upper(ev.name))) error(ev.loc, fmt::format("duplicate enumeration value '{}'", ev.name));
             t.enumerators.push_back({ev.name, v});
             pastLargest = v == std::numeric_limits<int64_t>::max();
             next = pastLargest ? v : v + 1;
@@ -282,10 +282,9 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
             else enumValues_[ek] = {created, &e};
         }
         if (decl->init && decl->init->expr && decl->init->expr->kind == ast::ExprKind::Name) {
-            bool found = false;
-            for (const auto& e : created->enumerators)
-                if (upper(e.name) == upper(decl->init->expr->name)) { created->enumDefault = e.value; found = true; }
-            if (!found) error(decl->init->loc, fmt::format("'{}' is not a value of '{}'", decl->init->expr->name, decl->name));
+            const Enumerator* named = created->findEnumerator(upper(decl->init->expr->name));
+            if (named) created->enumDefault = named->value;
+            if (!named) error(decl->init->loc, fmt::format("'{}' is not a value of '{}'", decl->init->expr->name, decl->name));
         }
         created->defaultImage.resize(created->size);
         writeScalar(created->defaultImage.data(), created, constInt(created->enumDefault, created->base, decl->loc));
@@ -900,15 +899,19 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
             for (const auto& item : init->items) {
                 int64_t repeat = 1;
                 if (item.repeat && !constIntExpr(item.repeat.get(), repeat, "a repetition count")) repeat = 1;
-                if (repeat < 0) repeat = 0;
-                for (int64_t r = 0; r < repeat; ++r) {
-                    if (k >= t->elemCount) {
-                        error(init->loc, fmt::format("too many initial values for {} elements", t->elemCount));
-                        return;
-                    }
-                    if (item.value) writeInitial(p + k * t->elem->size, t->elem, item.value.get(), loc);
-                    ++k;
+                if (repeat <= 0) continue;
+                if (static_cast<uint64_t>(repeat) > t->elemCount - k) {
+                    error(init->loc, fmt::format("too many initial values for {} elements", t->elemCount));
+                    return;
                 }
+                // `N(x)`: x is checked and written once, then its bytes copied
+                // (an initialiser of 50 million elements makes no nodes per element).
+                uint8_t* first = p + k * t->elem->size;
+                if (item.value) {
+                    writeInitial(first, t->elem, item.value.get(), loc);
+                    for (int64_t r = 1; r < repeat; ++r) std::memcpy(first + uint64_t(r) * t->elem->size, first, t->elem->size);
+                }
+                k += static_cast<uint64_t>(repeat);
             }
             return;
         }

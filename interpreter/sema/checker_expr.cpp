@@ -187,11 +187,7 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
             if (!t) return bad(e.loc);
             const std::string& v = e.valueText;
             if (t->kind == TK::Enum) {
-                for (const auto& en : t->enumerators)
-                    if (upper(en.name) == upper(v)) {
-                        Checked c = constInt(en.value, t, e.loc);
-                        return c;
-                    }
+                if (const Enumerator* en = t->findEnumerator(upper(v))) return constInt(en->value, t, e.loc);
                 enumValueError(e.loc, v, t);
                 return bad(e.loc);
             }
@@ -416,8 +412,8 @@ Checked Checker::checkName(const ast::Expr& e) {
         }
         return constInt(en->value, et, e.loc);
     }
-    for (auto& prog : model_.programs)
-        if (upper(prog.name) == key) {
+    if (const ProgramInstance* found = findProgram(key)) {
+            const ProgramInstance& prog = *found;
             Checked c;
             c.ok = true;
             c.loc = e.loc;
@@ -674,8 +670,7 @@ Checked Checker::checkMember(const ast::Expr& e) {
             if (typeDecls_.count(bkey)) {
                 const Type* t = resolveTypeDecl(bkey, baseExpr.loc);
                 if (t && t->kind == TK::Enum) {
-                    for (const auto& en : t->enumerators)
-                        if (upper(en.name) == upper(e.name)) return constInt(en.value, t, e.loc);
+                    if (const Enumerator* en = t->findEnumerator(upper(e.name))) return constInt(en->value, t, e.loc);
                     enumValueError(e.nameLoc.line ? e.nameLoc : e.loc, e.name, t);
                     return bad(e.loc);
                 }

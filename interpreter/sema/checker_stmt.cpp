@@ -375,8 +375,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                 maybeFb = false;
             if (callee.kind == ast::ExprKind::Name) {
                 // CODESYS: a PROGRAM called from another POU runs its (single) instance.
-                for (const auto& prog : model_.programs)
-                    if (upper(prog.name) == upper(callee.name)) maybeFb = true;
+                if (findProgram(upper(callee.name))) maybeFb = true;
             }
             if (callee.kind == ast::ExprKind::Name && pou_ && pou_->result && upper(callee.name) == upper(pou_->result->name)) maybeFb = false;
             if (isSuiteBuiltinCall(callee)) maybeFb = false;  // THIS^.AssertTrue(...) in a suite (decision 0145)

@@ -18,12 +18,44 @@ std::string upper(std::string s) {
     return s;
 }
 
+namespace {
+// `name` folded to upper case equals `upperName`, without building the folded copy.
+bool equalsFolded(const std::string& name, const std::string& upperName) {
+    if (name.size() != upperName.size()) return false;
+    for (size_t k = 0; k < name.size(); ++k) {
+        char c = name[k];
+        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+        if (c != upperName[k]) return false;
+    }
+    return true;
+}
+constexpr size_t kScannedNames = 8;  // up to this many, a scan costs less than building the index
+}  // namespace
+
+template <class T>
+const T* Type::findIn(const std::vector<T>& items, NameIndex& index, const std::string& upperName) {
+    if (items.size() <= kScannedNames) {
+        for (const T& item : items)
+            if (equalsFolded(item.name, upperName)) return &item;
+        return nullptr;
+    }
+    if (index.data != static_cast<const void*>(items.data()) || index.size > items.size()) {
+        index.positions.clear();  // replaced or reallocated: positions are kept, but so few rebuilds cost O(n) in all
+        index.size = 0;
+        index.data = items.data();
+    }
+    for (; index.size < items.size(); ++index.size) index.positions.try_emplace(upper(items[index.size].name), uint32_t(index.size));
+    auto it = index.positions.find(upperName);
+    return it == index.positions.end() ? nullptr : &items[it->second];
+}
+
 const Field* Type::findField(const std::string& upperName) const {
     for (const Type* t = this; t; t = t->parent)
-        for (const auto& f : t->fields)
-            if (upper(f.name) == upperName) return &f;
+        if (const Field* f = findIn(t->fields, t->fieldIndex_, upperName)) return f;
     return nullptr;
 }
+
+const Enumerator* Type::findEnumerator(const std::string& upperName) const { return findIn(enumerators, enumIndex_, upperName); }
 
 bool isInteger(TK k) { return k >= TK::SInt && k <= TK::ULInt; }
 bool isSignedInt(TK k) { return k >= TK::SInt && k <= TK::LInt; }

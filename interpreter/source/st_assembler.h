@@ -12,13 +12,15 @@
 
 namespace strun::source {
 
-// Line and column (1-based) of byte offsets of one text.
+// Line and column (1-based) of byte offsets of one text. Lines end as XML
+// ends them (XML 1.0 section 2.11, which pugixml applies to the text it
+// hands over): CR LF, a lone LF, or a lone CR (old Mac files, some exports).
 class TextPositions {
 public:
     explicit TextPositions(std::string_view text) {
         lineStarts_.push_back(0);
         for (size_t i = 0; i < text.size(); ++i)
-            if (text[i] == '\n') lineStarts_.push_back(i + 1);
+            if (text[i] == '\n' || (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n'))) lineStarts_.push_back(i + 1);
     }
     std::pair<int, int> at(std::ptrdiff_t offset) const {
         if (offset < 0) return {1, 1};

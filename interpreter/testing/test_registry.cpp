@@ -296,7 +296,9 @@ bool FaultCapture::onAttention() {
             f.fault = fmt::format("WATCHDOG: the test ran longer than the task watchdog ({}) in one cycle", stdlib::formatDuration(r.watchdog));
             r.ignoreCurrent = false;
             r.recordFailure(std::move(f));
-            r.suites[static_cast<size_t>(r.currentSuite)].tests[static_cast<size_t>(r.currentTest)].finished = true;
+            TestCase& t = r.suites[static_cast<size_t>(r.currentSuite)].tests[static_cast<size_t>(r.currentTest)];
+            t.finished = true;
+            t.finishedAt = machine->now;  // its JUnit time: never left at 0 (a negative duration)
         }
         abortedByTest = true;
         budgetEnd = rt::kNever;
@@ -315,8 +317,9 @@ void FaultCapture::onFault(rt::DiagCode code, std::string_view pou, int line, st
     }
     TestCase& t = r.suites[static_cast<size_t>(r.currentSuite)].tests[static_cast<size_t>(r.currentTest)];
     if (t.skipped) {
-        // A disabled test's code still runs (as in TcUnit); its faults count for nothing.
-        if (code == rt::DiagCode::CallDepth) abortedByTest = true;
+        // A disabled test's code still runs (as in TcUnit); its faults count for nothing,
+        // and a refused call (CALL_DEPTH) gives 0 and lets the suite go on (decision 0253).
+        if (code == rt::DiagCode::CallDepth && ctx) ctx->aborting = false;
         return;
     }
     Failure f;
@@ -329,10 +332,16 @@ void FaultCapture::onFault(rt::DiagCode code, std::string_view pou, int line, st
     r.ignoreCurrent = false;  // a fault after TEST_FINISHED in the same cycle still belongs to the test
     r.recordFailure(std::move(f));
     r.ignoreCurrent = wasIgnored;
-    // CALL_DEPTH aborts the activation: the test cannot go on, the others can.
+    // CALL_DEPTH fails and finishes the test. The activation is not cut
+    // short: the refused call gives 0, the nesting unwinds call by call and
+    // the suite's code goes on, so the tests after this one still run in
+    // this and every later cycle (decision 0253; cutting the activation
+    // short every cycle starved them).
     if (code == rt::DiagCode::CallDepth) {
         t.finished = true;
-        abortedByTest = true;
+        t.finishedAt = machine ? machine->now : t.startedAt;
+        if (ctx) ctx->aborting = false;
+        else abortedByTest = true;
     }
 }
 

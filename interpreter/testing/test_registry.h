@@ -65,7 +65,7 @@ public:
 
     rt::AttentionHandler* inner = nullptr;
     rt::Machine* machine = nullptr;
-    const exec::Ctx* ctx = nullptr;  // the task context running the suite (the position of a WATCHDOG)
+    exec::Ctx* ctx = nullptr;  // the task context running the suite (the position of a WATCHDOG; CALL_DEPTH lets it go on)
     rt::PlcTime budgetEnd = rt::kNever;
     bool abortedByTest = false;  // the abort unwinding now was caused by a test fault
 

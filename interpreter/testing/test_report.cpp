@@ -1,11 +1,14 @@
 #include "interpreter/testing/test_report.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <tuple>
 
 #include <fmt/format.h>
 
+#include "interpreter/ast/utf8_input.h"
 #include "interpreter/sema/types.h"
 #include "interpreter/testing/test_registry.h"
 
@@ -17,7 +20,13 @@ std::string fileName(int file, const SourceSet& sources) {
     return file >= 0 && file < sources.size() ? sources.file(file).path : std::string("<unknown>");
 }
 
-std::string xmlEscape(const std::string& s) {
+// Names and messages come from the program (string literals, identifiers in
+// any bytes): the report is UTF-8 and must always parse, so bytes that are
+// not UTF-8 become U+FFFD, as do U+FFFE and U+FFFF, which XML 1.0 forbids.
+std::string xmlEscape(const std::string& raw) {
+    std::string s = ast::sanitizeUtf8(raw);
+    for (size_t at = 0; (at = s.find("\xEF\xBF", at)) != std::string::npos; at += 3)
+        if (at + 2 < s.size() && (s[at + 2] == '\xBE' || s[at + 2] == '\xBF')) s[at + 2] = '\xBD';
     std::string out;
     out.reserve(s.size());
     for (char ch : s) {
@@ -36,7 +45,7 @@ std::string xmlEscape(const std::string& s) {
     return out;
 }
 
-std::string seconds(rt::PlcTime ns) { return fmt::format("{:.6f}", static_cast<double>(ns) / 1e9); }
+std::string seconds(rt::PlcTime ns) { return fmt::format("{:.6f}", static_cast<double>(std::max<rt::PlcTime>(ns, 0)) / 1e9); }
 
 // The part of a failure after the location (the JUnit message).
 std::string reason(const Failure& f) {
@@ -84,7 +93,7 @@ TestCounts printResults(const TestRegistry& reg, const SourceSet& sources, std::
 bool writeJUnit(const TestRegistry& reg, const SourceSet& sources, rt::PlcTime totalTime, const std::string& path, std::string& error) {
     std::ofstream xml(path, std::ios::binary | std::ios::trunc);
     if (!xml) {
-        error = "cannot write '" + path + "'";
+        error = "cannot write '" + path + "': " + std::strerror(errno);
         return false;
     }
     int tests = 0, failures = 0, skipped = 0;
@@ -129,9 +138,9 @@ bool writeJUnit(const TestRegistry& reg, const SourceSet& sources, rt::PlcTime t
         xml << "  </testsuite>\n";
     }
     xml << "</testsuites>\n";
-    xml.flush();
+    xml.close();  // the flush and the close are checked: a full disk leaves no half report unreported
     if (!xml) {
-        error = "cannot write '" + path + "'";
+        error = "cannot write '" + path + "'; the report is incomplete";
         return false;
     }
     return true;

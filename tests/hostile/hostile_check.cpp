@@ -1,6 +1,10 @@
 // Hostile inputs too big to commit: each case generates its program in a
 // temporary directory, runs strun on it, and checks the exit status, a
 // stderr pattern, the wall time and the peak memory (docs/limits.md).
+// A case with `runs` > 1 runs the same command again (a --retain file
+// saved by one run is read by the next). A case with `growth` also runs
+// the program made for a quarter of its size and checks that the CPU time
+// grows linearly, not quadratically: a behaviour, not a speed (issue 30).
 //   hostile_check STRUN CASE      one case (each is a ctest: hostile.CASE)
 //   hostile_check --list          the case names
 // STRUN_SLOW_FACTOR=N multiplies the time limits (sanitizer builds).
@@ -11,6 +15,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -28,7 +33,47 @@ struct Case {
     std::string stderrPattern;
     double maxSeconds;
     long maxMegabytes;
+    int runs = 1;
+    std::function<std::string(int)> growth = {};  // the program for size n; `program` is growth(kGrowthSize)
 };
+
+constexpr int kGrowthSize = 100000;
+
+// A program of `n` generated pieces between a head and a tail.
+std::string generated(const std::string& head, int n, const std::function<std::string(int)>& piece, const std::string& tail) {
+    std::string s = head;
+    for (int i = 0; i < n; ++i) s += piece(i);
+    return s + tail;
+}
+
+// Each name-matching class of the checker at n: enumeration values (declared, qualified, as an initial value),
+// structure members (declared, initialised by name, accessed), named arguments of a block and a function,
+// program instances of a configuration.
+std::string manyEnumValues(int n) {
+    std::string uses;
+    for (int i = 0; i < 1000; ++i) uses += "x := E#v" + std::to_string(i * (n / 1000)) + "; x := E.v" + std::to_string(n - 1 - i) + ";\n";
+    return generated("TYPE E : (", n, [](int i) { return (i ? ", v" : "v") + std::to_string(i); },
+                     "); END_TYPE\nPROGRAM Main VAR x : E := v" + std::to_string(n - 1) + "; END_VAR\n" + uses + "END_PROGRAM\n");
+}
+std::string manyMembers(int n) {
+    std::string uses;
+    for (int i = 0; i < 1000; ++i) uses += "s.m" + std::to_string(n - 1 - i) + " := " + std::to_string(i) + ";\n";
+    return generated("TYPE S : STRUCT\n", n, [](int i) { return "m" + std::to_string(i) + " : INT := 1;\n"; },
+                     "END_STRUCT END_TYPE\nPROGRAM Main VAR s : S := (m" + std::to_string(n - 1) + " := 2, m0 := 3); END_VAR\n" + uses +
+                         "END_PROGRAM\n");
+}
+std::string manyNamedArguments(int n) {
+    std::string head = generated("FUNCTION_BLOCK F VAR_INPUT\n", n, [](int i) { return "a" + std::to_string(i) + " : INT;\n"; },
+                                 "END_VAR END_FUNCTION_BLOCK\nPROGRAM Main VAR f : F; END_VAR\nf(");
+    // Named in reverse order (a scan from the first parameter finds each last), the last one positional
+    // after the named ones (it takes the first input not given yet).
+    return generated(head, n - 1, [n](int i) { return "a" + std::to_string(n - 1 - i) + " := 1, "; }, "2);\nEND_PROGRAM\n");
+}
+std::string manyProgramInstances(int n) {
+    return generated("PROGRAM Main VAR x : INT; END_VAR x := x + 1; END_PROGRAM\nCONFIGURATION C RESOURCE R ON PLC\n"
+                     "TASK T (INTERVAL := T#1s, PRIORITY := 1);\n",
+                     n, [](int i) { return "PROGRAM P" + std::to_string(i) + " WITH T : Main;\n"; }, "END_RESOURCE END_CONFIGURATION\n");
+}
 
 std::string chain(int n, const std::function<std::string(int)>& link, const std::string& tail) {
     std::string s;
@@ -40,7 +85,27 @@ const char* kDeep = "nested more than 1000 deep";
 
 std::vector<Case> cases() {
     const std::string main = "PROGRAM Main VAR x : INT; END_VAR x := x + 1; END_PROGRAM\n";
+    auto grown = [](std::function<std::string(int)> g) { return [g] { return g(kGrowthSize); }; };
     return {
+        // Issue 30: names matched through hashed, once-folded tables.
+        {"enum_100000_values", grown(manyEnumValues), {"check", "@"}, 0, "", 60, 1500, 1, manyEnumValues},
+        {"struct_100000_members", grown(manyMembers), {"check", "@"}, 0, "", 60, 1500, 1, manyMembers},
+        {"named_arguments_100000", grown(manyNamedArguments), {"check", "@"}, 0, "", 60, 1500, 1, manyNamedArguments},
+        {"program_instances_100000", grown(manyProgramInstances), {"check", "@"}, 0, "", 60, 2000, 1, manyProgramInstances},
+        // `[N(x)]` checks x once: 50 million DINT (200 MB) without a node per element.
+        {"array_initialiser_50_million",
+         [] { return std::string("PROGRAM Main VAR a : ARRAY[0..49999999] OF DINT := [50000000(7)]; s : DINT; END_VAR\n"
+                                 "s := a[0] + a[49999999]; END_PROGRAM\n"); },
+         {"run", "--virtual", "--cycles", "1", "@"}, 0, "", 60, 900},
+        // --vcd of ten million array elements: a bounded number recorded, scope names shared.
+        {"vcd_10_million_elements",
+         [] { return std::string("PROGRAM Main VAR a : ARRAY[0..9999999] OF BYTE; END_VAR a[0] := a[0] + 1; END_PROGRAM\n"); },
+         {"run", "--virtual", "--cycles", "2", "--vcd", "@.vcd", "@"}, 0, "more than 100000 variables to record", 60, 400},
+        // A 64 MiB RETAIN array saved and read back in pieces: never its hex text whole in memory
+        // (the run itself holds about 200 MB: the instance and its initial image; the restore adds one value's buffer).
+        {"retain_64_mib_array",
+         [] { return std::string("PROGRAM Main VAR RETAIN a : ARRAY[0..16777215] OF DINT; END_VAR a[16777215] := a[16777215] + 1; END_PROGRAM\n"); },
+         {"run", "--virtual", "--cycles", "1", "--retain", "@.retain", "@"}, 0, "", 120, 300, 2},
         {"struct_chain_10000",
          [] { return chain(10000, [](int i) { return "TYPE S" + std::to_string(i) + " : STRUCT a : INT; n : S" + std::to_string(i + 1) + "; END_STRUCT; END_TYPE\n"; },
                            "TYPE S10000 : STRUCT a : INT; END_STRUCT; END_TYPE\nPROGRAM Main VAR x : S0; END_VAR x.a := 1; END_PROGRAM\n"); },
@@ -101,6 +166,15 @@ std::string readAll(const std::string& path) {
     return ss.str();
 }
 
+struct Outcome {
+    int status = 0;
+    double seconds = 0, cpuSeconds = 0;
+    long megabytes = 0;
+    std::string err;
+};
+Outcome runOnce(const std::vector<std::string>& args, const std::string& errFile, double maxSeconds);
+bool check(const Case& c, const Outcome& o, double slow, int run);
+
 int runCase(const std::string& strun, const Case& c) {
     char dirTemplate[] = "/tmp/strun-hostile-XXXXXX";
     const char* dir = mkdtemp(dirTemplate);
@@ -110,36 +184,74 @@ int runCase(const std::string& strun, const Case& c) {
     }
     const std::string file = std::string(dir) + "/" + c.name + ".st";
     const std::string errFile = std::string(dir) + "/stderr.txt";
-    if (std::string text = c.program(); !text.empty()) std::ofstream(file, std::ios::binary) << text;
     std::vector<std::string> args{strun};
-    for (const auto& a : c.args) args.push_back(a == "@" ? file : a);
+    for (const auto& a : c.args) args.push_back(a.rfind('@', 0) == 0 ? file + a.substr(1) : a);  // "@.vcd": beside the program
     double slow = 1;
     if (const char* f = std::getenv("STRUN_SLOW_FACTOR")) slow = std::max(1.0, std::atof(f));
 
+    bool ok = true;
+    double cpuQuarter = 0;
+    if (c.growth) {
+        std::ofstream(file, std::ios::binary | std::ios::trunc) << c.growth(kGrowthSize / 4);
+        Outcome quarter = runOnce(args, errFile, c.maxSeconds * slow);
+        cpuQuarter = quarter.cpuSeconds;
+    }
+    if (std::string text = c.program(); !text.empty()) std::ofstream(file, std::ios::binary | std::ios::trunc) << text;
+    Outcome o;
+    for (int run = 0; run < c.runs && ok; ++run) {
+        o = runOnce(args, errFile, c.maxSeconds * slow);
+        ok = check(c, o, slow, run);
+    }
+    std::filesystem::remove_all(dir);
+    if (ok && c.growth) {
+        // Linear: four times the size costs about four times the CPU (less: start-up is shared); quadratic: sixteen.
+        const double ratio = cpuQuarter > 0 ? o.cpuSeconds / cpuQuarter : 0;
+        std::cout << "  CPU " << cpuQuarter << " s at " << kGrowthSize / 4 << ", " << o.cpuSeconds << " s at " << kGrowthSize << " (x" << ratio
+                  << ")\n";
+        if (o.cpuSeconds > 1.0 * slow && ratio > 8) {
+            std::cout << "  grows faster than linearly\n";
+            ok = false;
+        }
+    }
+    return ok ? 0 : 1;
+}
+
+}  // namespace
+
+namespace {
+
+Outcome runOnce(const std::vector<std::string>& arguments, const std::string& errFile, double maxSeconds) {
+    std::vector<std::string> args = arguments;
     auto start = std::chrono::steady_clock::now();
     pid_t pid = fork();
     if (pid == 0) {
         std::freopen(errFile.c_str(), "w", stderr);
         std::freopen("/dev/null", "w", stdout);
-        alarm(static_cast<unsigned>(c.maxSeconds * slow * 3) + 5);  // a hang is killed, and fails below
+        alarm(static_cast<unsigned>(maxSeconds * 3) + 5);  // a hang is killed, and fails below
         std::vector<char*> argv;
         for (auto& a : args) argv.push_back(a.data());
         argv.push_back(nullptr);
         execv(argv[0], argv.data());
         _exit(127);
     }
-    int status = 0;
+    Outcome o;
     rusage usage{};
-    wait4(pid, &status, 0, &usage);
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    long megabytes = usage.ru_maxrss / 1024;
-    std::string err = readAll(errFile);
-    std::remove(file.c_str());
-    std::remove(errFile.c_str());
-    rmdir(dir);
+    wait4(pid, &o.status, 0, &usage);
+    o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    o.cpuSeconds = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) + double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e6;
+    o.megabytes = usage.ru_maxrss / 1024;
+    o.err = readAll(errFile);
+    return o;
+}
 
+bool check(const Case& c, const Outcome& o, double slow, int run) {
+    const int status = o.status;
+    const double seconds = o.seconds;
+    const long megabytes = o.megabytes;
+    const std::string& err = o.err;
     bool ok = true;
-    std::cout << c.name << ": " << seconds << " s, " << megabytes << " MB peak\n";
+    std::cout << c.name << (run ? " (run " + std::to_string(run + 1) + ")" : std::string()) << ": " << seconds << " s, " << megabytes
+              << " MB peak\n";
     if (!WIFEXITED(status)) {
         std::cout << "  killed by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0) << "\n";
         ok = false;
@@ -164,7 +276,7 @@ int runCase(const std::string& strun, const Case& c) {
         ok = false;
     }
     if (!ok) std::cout << "---- stderr (first 2000 bytes)\n" << err.substr(0, 2000) << "\n";
-    return ok ? 0 : 1;
+    return ok;
 }
 
 }  // namespace
