@@ -107,6 +107,7 @@ struct Writer {
             if (x.priority != y.priority && x.priority > 0 && y.priority > 0) return x.priority < y.priority;
             return x.x < y.x;
         });
+        out.body.insert(out.body.end(), c.conditionNetworks.begin(), c.conditionNetworks.end());
         std::vector<std::string> fire(c.transitions.size());
         std::vector<size_t> done;
         for (size_t t : order) {
