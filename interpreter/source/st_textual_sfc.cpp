@@ -285,6 +285,10 @@ struct Reader {
             }
         }
         if (!result.errors.empty()) return;
+        if (inserts.empty()) {  // INITIAL_STEP only in a comment or a string: plain ST, no origins
+            result.text = src;
+            return;
+        }
         // The text with the SFC elements blanked and each chart's ST inserted where its POU's body starts.
         std::string text = src;
         for (auto [from, to] : blanked)
