@@ -276,6 +276,15 @@ void printRuntimeFault(std::ostream& out, const RuntimeFault& fault, const Sourc
     // Only plain ST text: a converted file's (XML) runtime positions are not mapped here.
     const bool st = fault.loc.file >= 0 && fault.loc.file < sources.size() && sources.file(fault.loc.file).origins.empty() &&
                     fault.loc.line > 0;
+    // A fault in ST made from an LD/FBD/SFC element names the element (fault
+    // positions are already those of the file the user has: the element at that line).
+    std::string element;
+    if (fault.loc.file >= 0 && fault.loc.file < sources.size())
+        for (const LineOrigin& o : sources.file(fault.loc.file).origins)
+            if (o.line == fault.loc.line && !o.element.empty()) {
+                element = o.element;
+                break;
+            }
     if (format == DiagnosticFormat::Json) {
         nlohmann::ordered_json j;
         j["code"] = fault.code;
@@ -287,6 +296,7 @@ void printRuntimeFault(std::ostream& out, const RuntimeFault& fault, const Sourc
         j["task"] = fault.task;
         j["message"] = fault.message;
         j["notes"] = nlohmann::ordered_json::array();
+        if (!element.empty()) j["notes"].push_back({{"message", "in " + element}});
         j["suggestions"] = nlohmann::ordered_json::array();
         out << j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
         return;
@@ -295,6 +305,7 @@ void printRuntimeFault(std::ostream& out, const RuntimeFault& fault, const Sourc
     style.on = color;
     out << style.paint(kBold, fault.where + ':') << ' ' << style.paint(kRed, "runtime error:") << ' '
         << style.paint(kBold, fault.code + " in " + fault.task + ": " + fault.message) << '\n';
+    if (!element.empty()) out << style.paint(kCyan, "note:") << " in " << element << '\n';
     if (!st) return;
     const Where w = locate(sources, fault.loc);
     const Excerpt e = excerptFor(w, nullptr);

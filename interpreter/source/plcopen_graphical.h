@@ -57,6 +57,17 @@ struct Translation {
 // An LD or FBD network (<LD>/<FBD> element) as ST statements.
 void translateNetwork(XmlConversion& conv, const pugi::xml_node& lang, bool ld, PouContext& ctx, Translation& out);
 
+// Transition conditions drawn as LD/FBD networks inside an SFC body: each
+// condition's value is written to `variable`.
+struct ChartCondition {
+    pugi::xml_node transition;
+    pugi::xml_node pointIn;  // the condition's <connectionPointIn>
+    std::string variable;
+    std::string label;
+};
+void translateChartConditions(XmlConversion& conv, const pugi::xml_node& sfc, PouContext& ctx, const std::vector<ChartCondition>& conditions,
+                              Translation& out);
+
 // An SFC chart (<SFC> element) as ST statements.
 void translateChart(XmlConversion& conv, const pugi::xml_node& lang, PouContext& ctx, Translation& out);
 

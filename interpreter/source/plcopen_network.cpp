@@ -117,12 +117,6 @@ std::string literalType(const std::string& e) {
     return "";
 }
 
-bool isNumberLiteral(const std::string& e) {
-    if (e.empty()) return false;
-    size_t i = (e[0] == '-' || e[0] == '+') ? 1 : 0;
-    return i < e.size() && std::isdigit(static_cast<unsigned char>(e[i]));
-}
-
 bool isSimpleName(const std::string& e) {
     if (e.empty() || !(std::isalpha(static_cast<unsigned char>(e[0])) || e[0] == '_')) return false;
     for (char c : e)
@@ -144,13 +138,16 @@ struct Network {
     bool explicitOrder = false;
     int currentRoot = -1;
     bool failed = false;
+    bool inChart = false;  // the LD/FBD elements of an SFC body: its SFC elements are skipped
 
     Network(XmlConversion& c, PouContext& x, Translation& o, bool isLd) : conv(c), ctx(x), out(o), ld(isLd) {
         prefix = "_g" + std::to_string(++ctx.bodies) + "_";
     }
 
     // The start of every message: which body (E0008).
-    std::string where() const { return std::string("in the ") + (ld ? "LD" : "FBD") + " body of '" + ctx.pouName + "': "; }
+    std::string where() const {
+        return inChart ? "in the SFC chart of '" + ctx.pouName + "': " : std::string("in the ") + (ld ? "LD" : "FBD") + " body of '" + ctx.pouName + "': ";
+    }
 
     // --- reading --------------------------------------------------------
 
@@ -233,6 +230,10 @@ struct Network {
                     failed = true;
                 }
             } else if (k == "comment" || k == "error" || k == "documentation" || k == "addData") {
+                continue;
+            } else if (inChart && (k == "step" || k == "transition" || k == "selectionDivergence" || k == "selectionConvergence" ||
+                                   k == "simultaneousDivergence" || k == "simultaneousConvergence" || k == "jumpStep" ||
+                                   k == "actionBlock" || k == "macroStep")) {
                 continue;
             } else {
                 conv.error(n, where() + "the " + k + " element " + std::to_string(e.id) + " is not supported in " +
@@ -574,11 +575,12 @@ struct Network {
         static const std::map<std::string, std::string> compare = {{"GT", " > "}, {"GE", " >= "}, {"EQ", " = "}, {"LE", " <= "}, {"LT", " < "}, {"NE", " <> "}};
         std::string s;
         if (e.stdFunction && infix.count(t) && args.size() >= 2) {
-            for (size_t k = 0; k < args.size(); ++k) s += (k ? infix.at(t) : "") + args[k];
+            // The operator stands on the block's line: a fault of the operation (DIV_BY_ZERO) names the block.
+            for (size_t k = 0; k < args.size(); ++k) s += (k ? at(i) + infix.at(t) : "") + args[k];
             return at(i) + "(" + s + ")";
         }
         if (e.stdFunction && compare.count(t) && args.size() >= 2) {
-            for (size_t k = 0; k + 1 < args.size(); ++k) s += (k ? " AND " : "") + std::string("(") + args[k] + compare.at(t) + args[k + 1] + ")";
+            for (size_t k = 0; k + 1 < args.size(); ++k) s += (k ? " AND " : "") + std::string("(") + args[k] + at(i) + compare.at(t) + args[k + 1] + ")";
             return at(i) + (args.size() > 2 ? "(" + s + ")" : s);
         }
         if (e.stdFunction && t == "NOT" && args.size() == 1) return at(i) + negate(args[0]);
@@ -827,8 +829,22 @@ struct Network {
 
     // --- order ------------------------------------------------------------------
 
-    void run(const pugi::xml_node& lang) {
+    void run(const pugi::xml_node& lang, const std::vector<ChartCondition>* conditions = nullptr) {
         read(lang);
+        if (conditions)
+            for (const ChartCondition& c : *conditions) {
+                // A transition whose condition is drawn as a network: an output variable of the network.
+                Element e;
+                e.kind = Kind::OutVar;
+                e.node = c.transition;
+                e.id = c.transition.attribute("localId").as_int();
+                readPosition(e);
+                e.text = c.variable;
+                e.label = c.label;
+                e.ins.push_back({"", false, "", connectionsOf(c.pointIn)});
+                byId[e.id] = static_cast<int>(els.size());
+                els.push_back(std::move(e));
+            }
         if (failed) return;
         link();
         if (failed) return;
@@ -874,6 +890,13 @@ void copyStText(XmlConversion& conv, const pugi::xml_node& n, const std::string&
             copyStText(conv, c, element, out, depth + 1);
         }
     }
+}
+
+void translateChartConditions(XmlConversion& conv, const pugi::xml_node& sfc, PouContext& ctx, const std::vector<ChartCondition>& conditions,
+                              Translation& out) {
+    Network n(conv, ctx, out, false);
+    n.inChart = true;
+    n.run(sfc, &conditions);
 }
 
 std::string PouContext::typeOf(const std::string& name) const {

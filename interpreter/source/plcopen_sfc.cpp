@@ -37,6 +37,14 @@ struct Chart {
 
     Chart(XmlConversion& c, PouContext& x, Translation& o) : conv(c), ctx(x), out(o) { prefix = "_g" + std::to_string(++ctx.bodies) + "_"; }
 
+    // LD/FBD elements an SFC body may hold for its transition conditions.
+    static const std::set<std::string>& networkElements() {
+        static const std::set<std::string> k = {"inVariable", "outVariable", "inOutVariable", "block", "connector", "continuation",
+                                                "contact", "coil", "leftPowerRail", "rightPowerRail", "error"};
+        return k;
+    }
+    std::vector<ChartCondition> drawnConditions;
+
     void fail(const pugi::xml_node& n, const std::string& what) {
         conv.error(n, "in the SFC chart of '" + ctx.pouName + "': " + what);
         failed = true;
@@ -92,7 +100,7 @@ struct Chart {
             } else if (k == "macroStep") {
                 fail(n, "macro step " + std::to_string(id) + " is not supported (docs/graphical.md)");
             } else if (k != "selectionDivergence" && k != "selectionConvergence" && k != "simultaneousDivergence" &&
-                       k != "simultaneousConvergence" && k != "jumpStep" && k != "actionBlock" && k != "inVariable") {
+                       k != "simultaneousConvergence" && k != "jumpStep" && k != "actionBlock" && !networkElements().count(k)) {
                 fail(n, "the " + k + " element " + std::to_string(id) + " is not supported in SFC bodies (docs/graphical.md)");
             }
         }
@@ -263,7 +271,10 @@ struct Chart {
                 expr = "(" + textOf(child(byId[refs[0]], "expression")) + ")";
                 return;
             }
-            fail(t, label + ": a condition drawn in the chart must be one variable; write a named transition in LD or FBD instead");
+            // A network drawn in the chart: translated with the others (translateChartConditions), into a BOOL.
+            expr = prefix + "c" + std::string(t.attribute("localId").value());
+            declare(t, expr + " : BOOL;", label);
+            drawnConditions.push_back({t, in, expr, label});
             return;
         }
         fail(t, label + " has no condition");
@@ -296,6 +307,14 @@ struct Chart {
         if (failed) return;
         for (size_t t = 0; t < transitions.size(); ++t) conditionLines(transitions[t], model.transitions[t]);
         if (failed) return;
+        if (!drawnConditions.empty()) {
+            Translation nets;
+            const size_t errors = conv.result.errors.size();
+            translateChartConditions(conv, lang, ctx, drawnConditions, nets);
+            if (conv.result.errors.size() != errors) return;
+            model.conditionNetworks = std::move(nets.body);
+            out.declarations.insert(out.declarations.end(), nets.declarations.begin(), nets.declarations.end());
+        }
         failed = !writeSfcChart(model, prefix, out, [&](SfcChart::Where w, const std::string& what) {
             conv.result.errors.push_back({w.line, w.col, "in the SFC chart of '" + ctx.pouName + "': " + what});
         });

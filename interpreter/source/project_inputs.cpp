@@ -48,6 +48,10 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
         converted = readPlcOpen(text);
     } else if (mayHoldTextualSfc(text)) {
         converted = convertTextualSfc(text);  // ST with textual SFC: the SFC elements become ST (docs/graphical.md)
+        if (converted.errors.empty() && converted.origins.empty()) {  // no chart after all: plain ST
+            userFiles.push_back(sources.add(path, std::move(text)));
+            return;
+        }
     } else {
         userFiles.push_back(sources.add(path, std::move(text)));
         return;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 namespace strun::source {
 
@@ -60,26 +61,66 @@ struct Writer {
         line(a.at, "END_IF;", a.label);
     }
 
+    // Explores the activity states the chart can reach (every condition may be
+    // TRUE or FALSE; one transition at a time). A transition that activates a
+    // step still active is unsafe (a simultaneous branch left through a
+    // selection convergence); a step active in no reachable state can never
+    // become active (also a selection divergence closed by a simultaneous
+    // convergence). Charts whose states exceed kMaxStates get the simpler
+    // check: a step is reachable when some transition can lead to it.
+    static constexpr size_t kMaxStates = 20000;
+
     bool reachable(const std::function<void(SfcChart::Where, const std::string&)>& fail) {
-        std::vector<bool> seen(c.steps.size(), false);
+        const size_t n = c.steps.size();
+        std::vector<bool> start(n, false);
         bool any = false;
-        for (size_t s = 0; s < c.steps.size(); ++s)
-            if (c.steps[s].initial) seen[s] = any = true;
+        for (size_t s = 0; s < n; ++s)
+            if (c.steps[s].initial) start[s] = any = true;
         if (!any) {
             fail(c.steps.empty() ? SfcChart::Where{} : c.steps[0].at, "the SFC chart has no initial step");
             return false;
         }
-        // A transition can fire once all its preceding steps can be active.
-        for (bool grew = true; grew;) {
-            grew = false;
+        std::vector<bool> seen = start;
+        std::set<std::vector<bool>> states{start};
+        std::vector<std::vector<bool>> work{start};
+        bool complete = true;
+        while (!work.empty()) {
+            std::vector<bool> state = std::move(work.back());
+            work.pop_back();
             for (const SfcChart::Transition& t : c.transitions) {
-                if (t.pre.empty() || !std::all_of(t.pre.begin(), t.pre.end(), [&](int s) { return seen[static_cast<size_t>(s)]; })) continue;
-                for (int s : t.post)
-                    if (!seen[static_cast<size_t>(s)]) seen[static_cast<size_t>(s)] = grew = true;
+                if (t.pre.empty() || !std::all_of(t.pre.begin(), t.pre.end(), [&](int s) { return state[static_cast<size_t>(s)]; })) continue;
+                std::vector<bool> next = state;
+                for (int s : t.pre) next[static_cast<size_t>(s)] = false;
+                for (int s : t.post) {
+                    if (next[static_cast<size_t>(s)]) {
+                        fail(t.at, t.label + " can activate " + stepLabel(s) + " while it is still active (an unsafe chart: a simultaneous "
+                                   "branch must end in a simultaneous convergence)");
+                        return false;
+                    }
+                    next[static_cast<size_t>(s)] = true;
+                    seen[static_cast<size_t>(s)] = true;
+                }
+                if (states.size() >= kMaxStates) {
+                    complete = false;
+                    break;
+                }
+                if (states.insert(next).second) work.push_back(std::move(next));
+            }
+            if (!complete) break;
+        }
+        if (!complete) {
+            seen = start;
+            for (bool grew = true; grew;) {
+                grew = false;
+                for (const SfcChart::Transition& t : c.transitions) {
+                    if (t.pre.empty() || !std::all_of(t.pre.begin(), t.pre.end(), [&](int s) { return seen[static_cast<size_t>(s)]; })) continue;
+                    for (int s : t.post)
+                        if (!seen[static_cast<size_t>(s)]) seen[static_cast<size_t>(s)] = grew = true;
+                }
             }
         }
         bool ok = true;
-        for (size_t s = 0; s < c.steps.size(); ++s)
+        for (size_t s = 0; s < n; ++s)
             if (!seen[s]) {
                 fail(c.steps[s].at, stepLabel(static_cast<int>(s)) + " can never become active (no path from the initial step reaches it)");
                 ok = false;
@@ -107,6 +148,7 @@ struct Writer {
             if (x.priority != y.priority && x.priority > 0 && y.priority > 0) return x.priority < y.priority;
             return x.x < y.x;
         });
+        out.body.insert(out.body.end(), c.conditionNetworks.begin(), c.conditionNetworks.end());
         std::vector<std::string> fire(c.transitions.size());
         std::vector<size_t> done;
         for (size_t t : order) {

@@ -48,6 +48,7 @@ struct SfcChart {
         Where at;
     };
     std::vector<Step> steps;
+    std::vector<plcopen::StLine> conditionNetworks;  // evaluated before the transitions
     std::vector<Transition> transitions;
     std::vector<Action> actions;
 };

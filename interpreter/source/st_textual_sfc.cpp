@@ -10,6 +10,7 @@
 // changed (decision 0233).
 #include "interpreter/source/st_textual_sfc.h"
 
+#include <array>
 #include <cctype>
 #include <cstring>
 #include <map>
@@ -285,6 +286,10 @@ struct Reader {
             }
         }
         if (!result.errors.empty()) return;
+        if (inserts.empty()) {  // INITIAL_STEP only in a comment or a string: plain ST, no origins
+            result.text = src;
+            return;
+        }
         // The text with the SFC elements blanked and each chart's ST inserted where its POU's body starts.
         std::string text = src;
         for (auto [from, to] : blanked)
@@ -321,17 +326,28 @@ struct Reader {
 }  // namespace
 
 bool mayHoldTextualSfc(const std::string& text) {
-    // memmem is fast: three case forms of `_STEP`, then the word before it.
-    for (const char* needle : {"_STEP", "_step", "_Step"}) {
-        const char* from = text.data();
-        const char* end = text.data() + text.size();
-        while (from < end) {
-            const void* hit = memmem(from, static_cast<size_t>(end - from), needle, 5);
-            if (!hit) break;
-            const char* h = static_cast<const char*>(hit);
-            if (h - text.data() >= 7 && upper(std::string(h - 7, 7)) == "INITIAL") return true;
-            from = h + 5;
+    // Case-insensitive Boyer-Moore-Horspool for INITIAL_STEP: most bytes of
+    // ST let it skip several bytes, so plain ST pays well under one
+    // instruction per byte (it runs on every ST file).
+    static constexpr char kWord[] = "INITIAL_STEP";
+    static constexpr size_t kLen = sizeof(kWord) - 1;
+    static const auto tables = [] {
+        std::pair<std::array<unsigned char, 256>, std::array<unsigned char, 256>> t;  // skip, folded
+        for (int c = 0; c < 256; ++c) {
+            t.first[static_cast<size_t>(c)] = kLen;
+            t.second[static_cast<size_t>(c)] = static_cast<unsigned char>(std::toupper(c));
         }
+        for (size_t k = 0; k + 1 < kLen; ++k) {
+            const auto u = static_cast<unsigned char>(kWord[k]);
+            t.first[u] = t.first[static_cast<unsigned char>(std::tolower(u))] = static_cast<unsigned char>(kLen - 1 - k);
+        }
+        return t;
+    }();
+    const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
+    for (size_t at = 0; at + kLen <= text.size(); at += tables.first[bytes[at + kLen - 1]]) {
+        size_t k = kLen;
+        while (k > 0 && tables.second[bytes[at + k - 1]] == static_cast<unsigned char>(kWord[k - 1])) --k;
+        if (k == 0) return true;
     }
     return false;
 }
