@@ -1,4 +1,5 @@
 // strun run [options] FILE...: compile the FILEs as one project and run it.
+#include <filesystem>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -21,6 +22,7 @@
 #include "runtime/vcd_recorder.h"
 #include "interpreter/project/dump_json.h"
 #include "interpreter/project/retain_store.h"
+#include "runtime/file_sandbox.h"
 #include "interpreter/project/task_runner.h"
 #include "runtime/plc_profile.h"
 #include "runtime/scheduler.h"
@@ -117,6 +119,10 @@ CLI::App* addRunCommand(CLI::App& app, CommandLine& line) {
     run->add_option("--retain", line.retainFile,
                     "keep RETAIN/PERSISTENT variables in FILE: restored at start, saved periodically and at the end")
         ->type_name("FILE");
+    run->add_option("--files", line.filesDir,
+                    "the directory the PLC's file blocks (FB_FileOpen ...) work in; no path leaves it (default: "
+                    "strun-files beside the --retain file, else a new temporary directory)")
+        ->type_name("DIR");
     run->add_flag("--cold", line.cold, "cold start: ignore the --retain file at start (initial values)");
     run->add_option_function<std::string>(
            "--retain-every", [&line](const std::string& text) { line.retainEvery = validatedDuration(text); },
@@ -183,6 +189,10 @@ int runCommand(const CommandLine& line) {
         return usage(std::string(line.cold ? "--cold" : "--retain-every") + " needs --retain FILE");
     }
 
+    // --files: where FB_FileOpen and the other file blocks work (decision 0221).
+    if (!line.filesDir.empty()) rt::fileSandbox().setRoot(line.filesDir);
+    else if (!line.retainFile.empty()) rt::fileSandbox().setRoot((std::filesystem::path(line.retainFile).parent_path() / "strun-files").string());
+
     std::vector<std::unique_ptr<project::TaskRunner>> runners;
     std::vector<rt::TaskBody*> bodies;
     for (const auto& t : model.tasks) {
@@ -197,6 +207,7 @@ int runCommand(const CommandLine& line) {
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
     if (retain) retain->save();  // however the run ended
+    rt::fileSandbox().finish();
     printFaultReport(std::cerr, scheduler, compiled.sources, line.diagnostics, stderrWantsColor(line.diagnostics.color));
     if (!line.dump && !line.quiet) printRunSummary(std::cerr, scheduler, state);
     if (line.dump) {

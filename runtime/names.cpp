@@ -15,6 +15,7 @@ const char* diagCodeName(DiagCode code) {
     case DiagCode::NullPointer: return "NULL_POINTER";
     case DiagCode::TaskError: return "TASK_ERROR";
     case DiagCode::SystemWatchdog: return "SYSTEM_WATCHDOG";
+    case DiagCode::Log: return "LOG";
     }
     return "UNKNOWN";
 }

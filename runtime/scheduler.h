@@ -90,13 +90,16 @@ public:
     // The faults that sent the PLC to STOP/HALT (usually one), in order.
     const std::vector<DiagEntry>& stopFaults() const { return stopFaults_; }
     const std::vector<std::string>& sourceFiles() const { return options_.sourceFiles; }
-    std::string currentTaskName() const;
+    std::string currentTaskName() const override;
+    int currentTaskIndex() const override;
+    bool taskInfo(int index, TaskInfo& out) const override;
     // Activations started, all tasks together (the benchmark's task switches).
     uint64_t activations() const { return activations_; }
 
     // AttentionHandler (called by the interpreter).
     bool onAttention() override;
     void onFault(DiagCode code, std::string_view pou, int line, std::string message, int file = -1, int col = 0) override;
+    void onLog(std::string_view pou, int line, std::string message, int file = -1, int col = 0) override;
     PlcTime currentTime() override;
     int64_t calendarNanos() override;
     int64_t taskStartCalendarNanos() override;

@@ -312,6 +312,11 @@ const std::vector<CodeInfo> kCatalogue = {
      "An integer `/` or MOD had the divisor 0 while the program ran. The divisor 1 is used instead and execution "
      "continues; the entry stays in the diagnostic buffer. Test the divisor first.",
      "q := a / b;", "IF b <> 0 THEN\n    q := a / b;\nEND_IF"},
+    {"LOG", K::Runtime, "a message the program logged (runtime)",
+     "Not a fault: the program logged a message with Tc2_System ADSLOGSTR, ADSLOGDINT or ADSLOGLREAL. It is "
+     "printed on stderr as `ADSLOG <PLC time> <task> <kind>: <message>` and kept in the diagnostic buffer with "
+     "its kind (error, warning, hint, log from the ADSLOG_MSGTYPE_* flags). Nothing else follows.",
+     "", ""},
     {"NULL_POINTER", K::Runtime, "null or invalid pointer (runtime)",
      "A null POINTER or REFERENCE was dereferenced, or a pointer that leads outside the project's memory, or a "
      "method was called through an interface that holds no instance. Like ARRAY_BOUNDS: the program-error task "
