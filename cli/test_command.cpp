@@ -1,4 +1,5 @@
 #include "cli/test_command.h"
+#include "runtime/file_sandbox.h"
 
 #include <iostream>
 
@@ -91,6 +92,7 @@ int testCommand(const CommandLine& line, const TestCommandLine& test) {
         std::cerr << "strun: warning: no test suite runs: declare instances of FUNCTION_BLOCKs that EXTEND FB_TestSuite "
                      "in a PROGRAM that calls RUN(), or leave RUN() out and strun adds one\n";
     testing::TestRunResult result = testing::runTests(*model, run, test.filter);
+    rt::fileSandbox().finish();  // the file blocks' temporary directory (docs/libraries.md)
     testing::TestCounts counts = testing::printResults(reg, sources, std::cout);
     std::cout.flush();
     if (!test.junit.empty() && !testing::writeJUnit(reg, sources, result.endTime, test.junit, error)) {
