@@ -121,7 +121,7 @@ CLI::App* addRunCommand(CLI::App& app, CommandLine& line) {
         ->type_name("FILE");
     run->add_option("--files", line.filesDir,
                     "the directory the PLC's file blocks (FB_FileOpen ...) work in; no path leaves it (default: "
-                    "strun-files beside the --retain file, else a new temporary directory)")
+                    "strun-files beside the --retain file, else a temporary directory removed at the end)")
         ->type_name("DIR");
     run->add_flag("--cold", line.cold, "cold start: ignore the --retain file at start (initial values)");
     run->add_option_function<std::string>(
