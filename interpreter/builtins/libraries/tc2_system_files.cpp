@@ -32,10 +32,12 @@ struct FileOpNode final : exec::Expr {
     static int64_t result(uint32_t err, int64_t ok) { return err ? -static_cast<int64_t>(err) : ok; }
     static uint8_t* address(int64_t v) { return reinterpret_cast<uint8_t*>(static_cast<intptr_t>(v)); }
 
-    // The buffer [p, p + n) must be the project's memory (as MEMCPY's).
+    // The buffer [p, p + n) must be the project's memory (as MEMCPY's). A
+    // null buffer is the block's error (1803), not a fault.
     bool inside(Ctx& c, const uint8_t* p, uint64_t n) {
         if (n == 0) return true;
-        if (p && c.m->memory.contains(p, n)) return true;
+        if (!p) return false;
+        if (c.m->memory.contains(p, n)) return true;
         exec::reportMemoryFault(c, site, fmt::format("file block: the buffer of {} bytes lies outside the project's memory", n));
         return false;
     }
