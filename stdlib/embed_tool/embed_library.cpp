@@ -78,6 +78,9 @@ std::vector<Token> tokens(const std::string& t) {
             i = e == std::string::npos ? n : e;
         } else if (c == '{') {
             size_t e = t.find('}', i);
+            // {attribute 'qualified_only'}: the next TYPE's values are reached only qualified.
+            if (t.substr(i, e == std::string::npos ? std::string::npos : e - i).find("qualified_only") != std::string::npos)
+                out.push_back({"{Q", false});
             i = e == std::string::npos ? n : e + 1;
         } else if (c == '\'' || c == '"') {
             size_t j = i + 1;
@@ -106,12 +109,17 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
     enum class Block { None, Type, Globals };
     Block block = Block::None;
     int structDepth = 0, parenDepth = 0;
+    bool pendingQualified = false, qualified = false;  // enumeration values of a qualified_only TYPE are not names of their own
     auto add = [&](const std::string& w, char kind) { out.push_back({upperOf(w), w, library, kind, file}); };
     auto at = [&](size_t k) -> const Token* { return k < tk.size() ? &tk[k] : nullptr; };
     auto isChar = [&](size_t k, char c) { const Token* t = at(k); return t && !t->word && t->text[0] == c; };
     for (size_t k = 0; k < tk.size(); ++k) {
         const Token& t = tk[k];
         if (!t.word) {
+            if (t.text == "{Q") {
+                pendingQualified = true;
+                continue;
+            }
             if (block == Block::Type) {
                 if (t.text == "(") ++parenDepth;
                 if (t.text == ")") --parenDepth;
@@ -142,6 +150,8 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
         if (u == "TYPE") {
             block = Block::Type;
             structDepth = parenDepth = 0;
+            qualified = pendingQualified;
+            pendingQualified = false;
             continue;
         }
         if (u == "VAR_GLOBAL") {
@@ -153,7 +163,7 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
             if (u == "END_STRUCT" || u == "END_UNION") --structDepth;
             if (structDepth == 0 && parenDepth == 0 && isChar(k + 1, ':') && !isChar(k + 2, '=')) add(t.text, 'T');
             // Enumeration values: words directly inside the type's parentheses, after '(' or ','.
-            if (structDepth == 0 && parenDepth == 1 && (isChar(k - 1, '(') || isChar(k - 1, ',')) && k > 0) add(t.text, 'E');
+            if (!qualified && structDepth == 0 && parenDepth == 1 && k > 0 && (isChar(k - 1, '(') || isChar(k - 1, ','))) add(t.text, 'E');
         } else if (block == Block::Globals) {
             const bool starts = k > 0 && (isChar(k - 1, ';') || isChar(k - 1, ',') || (tk[k - 1].word && (upperOf(tk[k - 1].text) == "VAR_GLOBAL" ||
                                                                                                      upperOf(tk[k - 1].text) == "CONSTANT" ||

@@ -120,3 +120,9 @@ TEST_CASE("the registry knows names of libraries strun does not provide", "[libr
     // Names of absent libraries select nothing.
     CHECK(selectedPaths({"s : FB_MBReadRegs;"}).empty());
 }
+
+TEST_CASE("values of a qualified_only enumeration select nothing by themselves", "[library]") {
+    // TcEventSeverity.Error: a project's own `Error` must not load Tc3_EventLogger.
+    for (const auto& p : selectedPaths({"Error := TRUE; Info := 1; Warning := 2;"})) CHECK(p.find("Tc3_EventLogger") == std::string::npos);
+    CHECK(has(selectedPaths({"s : TcEventSeverity;"}), "stdlib/Tc3_EventLogger/Tc3_EventLogger.st"));
+}
