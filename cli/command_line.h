@@ -34,6 +34,7 @@ struct CommandLine {
     std::string vcdFile;                     // --vcd FILE
     std::vector<std::string> watches;        // --watch PATTERN
     std::string retainFile;                  // --retain FILE
+    std::string filesDir;                    // --files DIR: the sandbox of the PLC's file blocks
     bool cold = false;                       // --cold
     std::optional<int64_t> retainEvery;      // --retain-every, ns
     LiveOptions live;                        // --force, --paused, --serve, --serve-token (cli/live_options.h)

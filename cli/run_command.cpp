@@ -1,5 +1,6 @@
 // strun run [options] FILE...: compile the FILEs as one project and run it.
 #include <algorithm>
+#include <filesystem>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -26,6 +27,7 @@
 #include "runtime/vcd_recorder.h"
 #include "interpreter/project/dump_json.h"
 #include "interpreter/project/retain_store.h"
+#include "runtime/file_sandbox.h"
 #include "interpreter/project/task_runner.h"
 #include "interpreter/project/variable_path.h"
 #include "runtime/output_files.h"
@@ -152,6 +154,10 @@ CLI::App* addRunCommand(CLI::App& app, CommandLine& line) {
     run->add_option("--retain", line.retainFile,
                     "keep RETAIN/PERSISTENT variables in FILE: restored at start, saved periodically and at the end")
         ->type_name("FILE");
+    run->add_option("--files", line.filesDir,
+                    "the directory the PLC's file blocks (FB_FileOpen ...) work in; no path leaves it (default: "
+                    "strun-files beside the --retain file, else a temporary directory removed at the end)")
+        ->type_name("DIR");
     run->add_flag("--cold", line.cold, "cold start: ignore the --retain file at start (initial values)");
     run->add_option_function<std::string>(
            "--retain-every", [&line](const std::string& text) { line.retainEvery = validatedDuration(text); },
@@ -219,6 +225,10 @@ int runCommand(const CommandLine& line) {
         return usage(std::string(line.cold ? "--cold" : "--retain-every") + " needs --retain FILE");
     }
 
+    // --files: where FB_FileOpen and the other file blocks work (decision 0221).
+    if (!line.filesDir.empty()) rt::fileSandbox().setRoot(line.filesDir);
+    else if (!line.retainFile.empty()) rt::fileSandbox().setRoot((std::filesystem::path(line.retainFile).parent_path() / "strun-files").string());
+
     // --vcd: the recorder observes the run; without it the scheduler has no observer at all.
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> vcdFile(nullptr, std::fclose);
     std::unique_ptr<rt::VcdRecorder> recorder;
@@ -277,6 +287,7 @@ int runCommand(const CommandLine& line) {
     // Every output is checked to its end: one that failed is reported and the exit status is 2.
     bool outputFailed = retain && !retain->save();  // however the run ended
     if (vcdFile && !closeOutput(vcdFile.release(), "--vcd", line.vcdFile)) outputFailed = true;
+    rt::fileSandbox().finish();
     printFaultReport(std::cerr, scheduler, compiled.sources, line.diagnostics, stderrWantsColor(line.diagnostics.color));
     if (!line.dump && !line.quiet)
         printRunSummary(std::cerr, scheduler, state, line.diagnostics.format,

@@ -1,4 +1,5 @@
 #include "cli/test_command.h"
+#include "runtime/file_sandbox.h"
 
 #include <algorithm>
 #include <fstream>
@@ -65,6 +66,7 @@ SliceOutcome runSlice(sema::ProgramModel& model, const rt::RunOptions& run, cons
     SliceOutcome outcome;
     testing::TestRegistry& reg = *model.tests;
     testing::TestRunResult result = testing::runTests(model, run, test.filter);
+    rt::fileSandbox().finish();  // the file blocks' temporary directory (docs/libraries.md)
     outcome.counts = testing::printResults(reg, sources, std::cout, summary, color);
     std::cout.flush();
     std::string error;

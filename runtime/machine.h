@@ -38,6 +38,7 @@ enum class DiagCode {
     TaskError,     // TASK_ERROR: other runtime failure of a task (message says which)
     SystemWatchdog,  // SYSTEM_WATCHDOG: a family's firmware watchdog (M241: high priorities held the CPU)
     IoFault,       // IO_FAULT: a --modbus-client device stopped answering (once per outage); the run goes on
+    Log,           // LOG: a message the program logged (Tc2_System ADSLOGSTR ...); no reaction
 };
 const char* diagCodeName(DiagCode code);
 
@@ -109,6 +110,9 @@ public:
     // `file` (an index of the project's source files, -1 unknown) and `col`
     // complete the location for the fault report and --dump.
     virtual void onFault(DiagCode code, std::string_view pou, int line, std::string message, int file = -1, int col = 0) = 0;
+    // A message the program logs (Tc2_System ADSLOGSTR ...): recorded in the
+    // diagnostic buffer as LOG, nothing else follows.
+    virtual void onLog(std::string_view pou, int line, std::string message, int file = -1, int col = 0) {}
     // Current PLC time in ns (virtual clock: Machine::now; real clock: read now).
     virtual PlcTime currentTime() = 0;
     // Calendar date-time now, as nanoseconds since 1970-01-01-00:00:00 (UTC),
@@ -120,6 +124,21 @@ public:
     // The running task's period (0: not a cyclic task) and a request to change
     // it (M241 GetCurrentTaskCycle / SetCurrentTaskCycle). False: refused.
     virtual PlcTime currentTaskInterval() { return 0; }
+    // The running task's name ("" when none) and its 1-based place in the
+    // task list (0 when none): Tc2_System ADSLOG lines, GETCURTASKINDEX.
+    virtual std::string currentTaskName() const { return {}; }
+    virtual int currentTaskIndex() const { return 0; }
+    // Task `index` (1-based, as currentTaskIndex) for Tc2_System's _TaskInfo[];
+    // false when there is none.
+    struct TaskInfo {
+        std::string_view name;
+        int priority = 0;
+        PlcTime interval = 0;        // 0: not cyclic
+        uint64_t started = 0;        // activations started, the running one included
+        PlcTime lastExec = 0;        // execution time of the last completed activation
+        bool overrun = false;        // its last release found it still busy
+    };
+    virtual bool taskInfo(int index, TaskInfo& out) const { return false; }
     virtual bool setCurrentTaskInterval(PlcTime) { return false; }
 };
 

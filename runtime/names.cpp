@@ -16,6 +16,7 @@ const char* diagCodeName(DiagCode code) {
     case DiagCode::TaskError: return "TASK_ERROR";
     case DiagCode::SystemWatchdog: return "SYSTEM_WATCHDOG";
     case DiagCode::IoFault: return "IO_FAULT";
+    case DiagCode::Log: return "LOG";
     }
     return "UNKNOWN";
 }

@@ -830,12 +830,18 @@ void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::stri
     case DiagCode::CallDepth:
     case DiagCode::TaskError:
     case DiagCode::SystemWatchdog: faultStop(current, code, PlcState::Stop); return;
+    case DiagCode::Log: return;
     }
 }
 
 void Scheduler::recordOutsideFault(DiagCode code, std::string message) {
     trace(nullptr, "error", diagCodeName(code));
     record(code, nullptr, "", 0, std::move(message));
+}
+
+void Scheduler::onLog(std::string_view pou, int line, std::string message, int file, int col) {
+    refreshNow();
+    record(DiagCode::Log, stack_.empty() ? nullptr : stack_.back(), pou, line, std::move(message), file, col);
 }
 
 void Scheduler::record(DiagCode code, const TaskRun* task, std::string_view pou, int line, std::string message, int file, int col) {
@@ -885,6 +891,19 @@ void Scheduler::observeRunning(const TaskRun& task, bool running) {
 }
 
 std::string Scheduler::currentTaskName() const { return stack_.empty() ? std::string() : stack_.back()->spec.name; }
+int Scheduler::currentTaskIndex() const { return stack_.empty() ? 0 : static_cast<int>(stack_.back() - tasks_.data()) + 1; }
+
+bool Scheduler::taskInfo(int index, TaskInfo& out) const {
+    if (index < 1 || static_cast<size_t>(index) > tasks_.size()) return false;
+    const TaskRun& t = tasks_[static_cast<size_t>(index) - 1];
+    out.name = t.spec.name;
+    out.priority = t.spec.priority;
+    out.interval = t.period;
+    out.started = t.started;
+    out.lastExec = t.lastExec;
+    out.overrun = t.overruns != 0;
+    return true;
+}
 
 // ---------------------------------------------------------------- output
 

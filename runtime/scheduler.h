@@ -111,7 +111,9 @@ public:
     // The faults that sent the PLC to STOP/HALT (usually one), in order.
     const std::vector<DiagEntry>& stopFaults() const { return stopFaults_; }
     const std::vector<std::string>& sourceFiles() const { return options_.sourceFiles; }
-    std::string currentTaskName() const;
+    std::string currentTaskName() const override;
+    int currentTaskIndex() const override;
+    bool taskInfo(int index, TaskInfo& out) const override;
     // The body of the running activation (the innermost when preempted); null between activations.
     const TaskBody* runningBody() const { return stack_.empty() ? nullptr : stack_.back()->body; }
     // The statistics of every task, in task order, into `out` (resized; no
@@ -125,6 +127,7 @@ public:
     // AttentionHandler (called by the interpreter).
     bool onAttention() override;
     void onFault(DiagCode code, std::string_view pou, int line, std::string message, int file = -1, int col = 0) override;
+    void onLog(std::string_view pou, int line, std::string message, int file = -1, int col = 0) override;
     PlcTime currentTime() override;
     int64_t calendarNanos() override;
     int64_t taskStartCalendarNanos() override;

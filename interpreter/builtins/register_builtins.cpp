@@ -17,7 +17,6 @@ void registerBuiltins(sema::Checker& checker) {
     bind::registerTime(checker);
     bind::registerClock(checker);
     bind::registerTaskCycle(checker);
-    bind::registerTwinCat(checker);
     bind::registerMemory(checker);
     registerParameterAliases(checker);
 }

@@ -12,7 +12,6 @@ void registerStrings(sema::Checker& ck);   // LEN LEFT RIGHT MID CONCAT INSERT D
 void registerConvert(sema::Checker& ck);   // *_TO_STRING, STRING_TO_*, BCD, endianness, IS_VALID
 void registerTime(sema::Checker& ck);      // ADD_TIME ... DAY_OF_WEEK
 void registerClock(sema::Checker& ck);     // the PLC clock read by the ST timer blocks, TIME()
-void registerTwinCat(sema::Checker& ck);   // Tc2_System: ADSLOGSTR, ADSLOGDINT, ADSLOGLREAL
 void registerMemory(sema::Checker& ck);    // MEMCPY MEMMOVE MEMSET MEMCMP (bounds-checked against the memory map)
 void registerTaskCycle(sema::Checker& ck); // GetCurrentTaskCycle, SetCurrentTaskCycle (--target m241)
 

@@ -81,6 +81,10 @@ void reportMemoryFault(Ctx& c, const Site& site, std::string message) {
     c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(at(c, site)), at(c, site).line, std::move(message), at(c, site).file, at(c, site).col);
 }
 
+void reportLog(Ctx& c, const Site& site, std::string message) {
+    c.m->handler->onLog(pouOf(at(c, site)), at(c, site).line, std::move(message), at(c, site).file, at(c, site).col);
+}
+
 PouCode* CallPou::dispatch(Ctx& c, uint8_t* inst) {
     // The instance may come from a pointer or interface forged by arithmetic:
     // it must lie in project memory and start with a real class descriptor.

@@ -201,6 +201,8 @@ struct Index1Place final : Expr {
 uint8_t* indexFault(Ctx& c, const Site& site, int64_t value, int64_t lo, int64_t count);
 // A memory function (MEMCPY, ...) given a range outside the project's memory: NULL_POINTER.
 void reportMemoryFault(Ctx& c, const Site& site, std::string message);
+// A message the program logs (Tc2_System ADSLOGSTR ...): LOG in the diagnostic buffer.
+void reportLog(Ctx& c, const Site& site, std::string message);
 
 // a[i] on an array variable at a known place (instance, frame or absolute):
 // the element address and its load in one node, the hot path of array code.

@@ -9,6 +9,7 @@
 #include "interpreter/project/library_selection.h"
 #include "interpreter/project/syntax_recovery.h"
 #include "interpreter/sema/checker.h"
+#include "interpreter/builtins/libraries/task_info.h"
 #include "interpreter/builtins/register_builtins.h"
 #include "interpreter/testing/register_tcunit.h"
 #include "interpreter/testing/suite_finder.h"
@@ -39,7 +40,8 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     // was most of the cost of a small compile.
     std::vector<std::string_view> userTexts;
     for (int f : userFiles) userTexts.push_back(sources.file(f).text);
-    const std::vector<const stdlib::EmbeddedSource*> wanted = embeddedSourcesFor(userTexts);
+    const LibrarySelection selection = selectLibraries(userTexts);
+    const std::vector<const stdlib::EmbeddedSource*>& wanted = selection.files;
     std::vector<size_t> borrowed;  // indices into library->units, parallel to the first units
     std::vector<int> toParse;      // the library files (unless lent), then the user's
     if (library) {
@@ -86,10 +88,11 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     sema::Checker& checker = *checkerOwner;
     if (extras && extras->observer) checker.setExprObserver(extras->observer);
     checker.setLibraryFiles(libraryFiles);
-    checker.setLibraryNames(embeddedLibraryNames().types, embeddedLibraryNames().functions);
     checker.setCompileOptions(options);
     if (const rt::PlcProfile* profile = rt::findProfile(options.target)) checker.setProfile(*profile);
     stdlib::registerBuiltins(checker);
+    // Native functions of the vendor libraries the project names (decision 0220).
+    stdlib::registerLibraryBuiltins(checker, selection.nativeLibraries);
     model->tests = std::make_shared<testing::TestRegistry>();
     testing::registerTcUnit(checker, *model->tests);
     // The checker recurses once per nested declaration and expression level;
@@ -111,6 +114,12 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
         return nullptr;
     }
     testing::recordProject(*model, *model->tests);
+    // Tc2_System's _TaskInfo[] follows the tasks (only when its file was selected).
+    for (const stdlib::EmbeddedSource* src : wanted)
+        if (src->library == "Tc2_System") {
+            if (exec::Stmt* refresh = stdlib::makeTaskInfoRefresh(*model)) model->activationPrologue.push_back(refresh);
+            break;
+        }
     // The AST is referenced by nothing at run time: all names are resolved.
     return model;
 }

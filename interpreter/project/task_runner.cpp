@@ -49,6 +49,8 @@ bool TaskRunner::runActivation() {
         runInitCalls();
         if (c.aborting) return false;
     }
+    if (!model_.activationPrologue.empty())
+        for (exec::Stmt* s : model_.activationPrologue) s->exec(c);
     for (const sema::Invocation& inv : calls_) {
         c.depth = 0;
         c.stackTop = stack_.data();

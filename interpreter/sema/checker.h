@@ -231,6 +231,9 @@ private:
     // The instance name a suggestion declares for block type `typeName` (its first letter: t for TON).
     static std::string instanceNameFor(const std::string& typeName);
     std::set<std::pair<const PouInfo*, std::string>> unresolvedVars_;
+    // Structure members whose type is unknown: declared for their uses, which
+    // are not reported again (one missing type is one error).
+    std::set<std::pair<const Type*, std::string>> unresolvedMembers_;
     // ---- CODESYS FB_init (checker_fb_init.cpp)
     void buildFbInitCalls();
     void collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth);
@@ -270,7 +273,6 @@ private:
     bool assignedResult_ = false;
     std::vector<std::unique_ptr<ast::TypeDecl>> inlineEnumDecls_;
     std::set<int> libraryFiles_;
-    std::vector<std::string> libraryTypeNames_, libraryFunctionNames_;  // also of library files not loaded
     ExprObserver* observer_ = nullptr;
     Diagnostic discarded_;  // what warning() hands back for the library's own lines (never printed)
     const rt::PlcProfile* profile_ = &rt::defaultProfile();
@@ -278,12 +280,6 @@ private:
 public:
     // Files whose POUs are the standard library (no unused-variable warnings).
     void setLibraryFiles(std::set<int> files) { libraryFiles_ = std::move(files); }
-    // The library's block types and functions, also of files the project did
-    // not load (decision 0150): candidates of "did you mean".
-    void setLibraryNames(std::vector<std::string> types, std::vector<std::string> functions) {
-        libraryTypeNames_ = std::move(types);
-        libraryFunctionNames_ = std::move(functions);
-    }
     // strun lsp: told about every checked expression (expr_observer.h).
     void setExprObserver(ExprObserver* observer) { observer_ = observer; }
     // strun debug: an expression typed in an editor, checked in the scope of

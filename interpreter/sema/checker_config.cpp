@@ -12,6 +12,7 @@
 #include "interpreter/source/twincat_tasks.h"
 #include "runtime/plc_profile.h"
 #include "runtime/task_rules.h"
+#include "stdlib/library_registry.h"
 #include "stdlib/time_literals.h"
 
 namespace strun::sema {
@@ -372,9 +373,10 @@ bool Checker::externalInput(const ast::Expr& value, rt::TaskSpec& spec) {
 
 void Checker::run(std::vector<ast::CompilationUnit>& units) {
     // Library names code writes in front of standard blocks and functions
-    // (Tc2_Standard.TON, Tc2_System.MEMCPY): strun's library answers to them.
-    for (const char* library : {"TC2_STANDARD", "TC2_SYSTEM", "TC2_UTILITIES", "TC2_ETHERCAT", "STANDARD"})
-        namespaces_.insert(library);
+    // (Tc2_Standard.TON, Tc2_System.MEMCPY): strun's library answers to them,
+    // for every library of the registry (decision 0220).
+    namespaces_.insert("STANDARD");
+    for (const stdlib::LibraryInfo& library : stdlib::libraries()) namespaces_.insert(upper(std::string(library.name)));
     for (auto& u : units) collect(u);
     breakInheritanceCycles();
     // Types and enumerations first, so that enumeration values are known everywhere.

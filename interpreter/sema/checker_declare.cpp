@@ -206,7 +206,11 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         uint32_t unionSize = 0;
         for (const auto& f : spec->fields) {
             const Type* ft = resolveTypeSpec(f.type.get(), decl->name);
-            if (!ft || rejectByValueCycle(ft, f.type ? f.type->loc : f.loc)) continue;
+            if (!ft) {
+                for (const std::string& name : f.names) unresolvedMembers_.insert({t, upper(name)});
+                continue;
+            }
+            if (rejectByValueCycle(ft, f.type ? f.type->loc : f.loc)) continue;
             for (size_t n = 0; n < f.names.size(); ++n) {
                 if (t->findField(upper(f.names[n]))) {
                     error(f.loc, fmt::format("duplicate member '{}' in structure '{}'", f.names[n], decl->name));
@@ -777,8 +781,9 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
         globals_[key] = raw;
     }
     // The library's own lists (GVL_Param_TcUnit) are not the project's state:
-    // they stay out of --dump, --vcd and the names --set can write.
-    if (!libraryFiles_.count(loc.file)) model_.globals.push_back(raw);
+    // they stay out of --dump, --vcd and the names --set can write; except a
+    // simulation's controls, named strun_* (Tc2_EtherCAT's bus, decision 0220).
+    if (!libraryFiles_.count(loc.file) || key.rfind("STRUN_", 0) == 0) model_.globals.push_back(raw);
     model_.globalStore.push_back(std::move(v));
     return raw;
 }

@@ -258,10 +258,12 @@ VarSym* Checker::lookupVar(const std::string& key) {
             }
     }
     // strun's embedded library sees no user globals: a user's `max : INT` must not
-    // change what MAX means inside stdlib/util.st (defect 1 of issue 8).
-    if (pou_ && pou_->ast && libraryFiles_.count(pou_->ast->loc.file)) return nullptr;
+    // change what MAX means inside stdlib/util.st (defect 1 of issue 8). It
+    // sees its own (Tc3_Module's S_OK, Tc2_MC2's error codes).
     auto g = globals_.find(key);
-    return g == globals_.end() ? nullptr : g->second;
+    if (g == globals_.end()) return nullptr;
+    if (pou_ && pou_->ast && libraryFiles_.count(pou_->ast->loc.file) && !libraryFiles_.count(g->second->loc.file)) return nullptr;
+    return g->second;
 }
 
 const Enumerator* Checker::lookupEnumValue(const std::string& key, const Type** enumType) {
@@ -542,6 +544,11 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
         if (found) return p;
     }
     if (!f) {
+        // A member declared with an unknown type: that error is the root cause.
+        if (unresolvedMembers_.count({t, key})) return bad(loc);
+        if (t->kind == TK::FunctionBlock)
+            for (const PouInfo* p = t->pou; p; p = p->parent)
+                if (unresolvedVars_.count({p, key})) return bad(loc);
         std::vector<std::string> members;
         for (const Field& field : t->fields) members.push_back(field.name);
         // A mistyped method call (`fbMotor.Resett()`) reaches here too: its methods are candidates.

@@ -5,6 +5,7 @@
 
 #include "interpreter/sema/checker.h"
 #include "interpreter/source/closest_name.h"
+#include "stdlib/library_registry.h"
 
 namespace strun::sema {
 
@@ -28,6 +29,11 @@ std::string Checker::closestDeclared(const std::string& typed, const std::vector
 }
 
 void Checker::suggest(Diagnostic& d, const std::string& typed, const std::vector<std::string>& declared) const {
+    // A name of a vendor library (provided or not) says where it comes from (decision 0220).
+    if (std::string hint = stdlib::libraryHint(typed); !hint.empty()) {
+        d.withHelp(hint);
+        return;
+    }
     // One or two letters are one edit from too many names to guess which was meant.
     if (typed.size() < 3) return;
     const std::string best = closestDeclared(typed, declared);
@@ -58,7 +64,10 @@ std::vector<std::string> Checker::typeNames() const {
     for (const auto& [key, decl] : typeDecls_) out.push_back(decl->name);
     for (const auto& [key, p] : pous_)
         if (p->kind == ast::PouKind::FunctionBlock || p->kind == ast::PouKind::Interface) out.push_back(p->name);
-    out.insert(out.end(), libraryTypeNames_.begin(), libraryTypeNames_.end());
+    // The library's block types, also of files the project did not load
+    // (decisions 0150, 0220): read from the registry only when a name is not found.
+    for (const stdlib::LibraryName& n : stdlib::libraryNames())
+        if (n.kind == 'B' || n.kind == 'I' || n.kind == 'T') out.emplace_back(n.written);
     return out;
 }
 
@@ -67,7 +76,8 @@ std::vector<std::string> Checker::functionNames() const {
     for (const auto& [key, p] : pous_)
         if (p->kind == ast::PouKind::Function) out.push_back(p->name);
     for (const auto& [key, fn] : builtins_) out.push_back(key);
-    out.insert(out.end(), libraryFunctionNames_.begin(), libraryFunctionNames_.end());
+    for (const stdlib::LibraryName& n : stdlib::libraryNames())
+        if (n.kind == 'F' || n.kind == 'X') out.emplace_back(n.written);
     return out;
 }
 

@@ -56,6 +56,10 @@ struct ProgramModel {
     // first activation of any task (innermost instances first).
     std::vector<exec::Stmt*> initCalls;
     bool initDone = false;
+    // Run at the start of every activation of every task, before its
+    // programs: library work tied to the task cycle (Tc2_System's _TaskInfo[]).
+    // Empty unless the project uses such a library.
+    std::vector<exec::Stmt*> activationPrologue;
     uint32_t maxFrameSize = 0;                      // largest frame of any POU (sizes the frame stacks)
     uint32_t largestType = 0;                       // largest element type (sizes the fault sink)
     rt::Machine machine;                            // the process image lives here; addresses point into it

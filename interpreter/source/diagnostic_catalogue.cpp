@@ -320,6 +320,11 @@ const std::vector<CodeInfo> kCatalogue = {
      "message names the device and what failed. It is recorded once per outage: its inputs keep their last values "
      "and strun reconnects with a back-off until it answers again. The PLC keeps running (docs/modbus.md).",
      "", ""},
+    {"LOG", K::Runtime, "a message the program logged (runtime)",
+     "Not a fault: the program logged a message with Tc2_System ADSLOGSTR, ADSLOGDINT or ADSLOGLREAL. It is "
+     "printed on stderr as `ADSLOG <PLC time> <task> <kind>: <message>` and kept in the diagnostic buffer with "
+     "its kind (error, warning, hint, log from the ADSLOG_MSGTYPE_* flags). Nothing else follows.",
+     "", ""},
     {"NULL_POINTER", K::Runtime, "null or invalid pointer (runtime)",
      "A null POINTER or REFERENCE was dereferenced, or a pointer that leads outside the project's memory, or a "
      "method was called through an interface that holds no instance. Like ARRAY_BOUNDS: the program-error task "

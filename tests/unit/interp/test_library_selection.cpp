@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include "interpreter/project/library_selection.h"
+#include "stdlib/library_registry.h"
 
 namespace {
 
@@ -46,21 +47,22 @@ TEST_CASE("selected files come in the order of the embedded library", "[library]
     CHECK(has(paths, "stdlib/edges.st"));
     CHECK(has(paths, "stdlib/counters.st"));
     CHECK(has(paths, "stdlib/timers.st"));
+    // In the order of the embedded library: stdlib/st first, sorted.
     CHECK(std::is_sorted(paths.begin(), paths.end()));
 }
 
 TEST_CASE("a type a library file declares selects it (T_MaxString, T_DCTIME64)", "[library]") {
     auto paths = selectedPaths({"PROGRAM Main VAR s : T_MaxString; t : t_dctime64; END_VAR END_PROGRAM"});
-    CHECK(has(paths, "stdlib/tc2_system.st"));
-    CHECK(has(paths, "stdlib/tc2_ethercat.st"));
-    CHECK_FALSE(has(paths, "stdlib/tc2_utilities.st"));
+    CHECK(has(paths, "stdlib/Tc2_System/Tc2_System.st"));
+    CHECK(has(paths, "stdlib/Tc2_EtherCAT/Tc2_EtherCAT.st"));
+    CHECK_FALSE(has(paths, "stdlib/Tc2_Utilities/string_helpers.st"));
     CHECK_FALSE(has(paths, "stdlib/tcunit.st"));
 }
 
 TEST_CASE("a Tc2_Utilities helper pulls in the type file it uses", "[library]") {
     auto paths = selectedPaths({"PROGRAM Main VAR s : STRING; END_VAR s := DWORD_TO_HEXSTR(16#AB, 2, FALSE); END_PROGRAM"});
-    CHECK(has(paths, "stdlib/tc2_utilities.st"));
-    CHECK(has(paths, "stdlib/tc2_system.st"));
+    CHECK(has(paths, "stdlib/Tc2_Utilities/string_helpers.st"));
+    CHECK(has(paths, "stdlib/Tc2_System/Tc2_System.st"));
 }
 
 TEST_CASE("every library block and function is a 'did you mean' candidate, as declared", "[library]") {
@@ -72,4 +74,55 @@ TEST_CASE("every library block and function is a 'did you mean' candidate, as de
     CHECK(in(names.functions, "WRITE_PROTECTED_INT"));
     CHECK_FALSE(in(names.types, "WRITE_PROTECTED_INT"));  // a FUNCTION is no type
     CHECK_FALSE(in(names.functions, "TON"));
+}
+
+// Decision 0220: the vendor libraries and their native functions.
+
+namespace {
+strun::project::LibrarySelection select(std::string_view text) { return strun::project::selectLibraries({text}); }
+bool hasLibrary(const strun::project::LibrarySelection& s, std::string_view lib) {
+    return std::find(s.nativeLibraries.begin(), s.nativeLibraries.end(), lib) != s.nativeLibraries.end();
+}
+}  // namespace
+
+TEST_CASE("a project naming no vendor library gets no file and no native function", "[library]") {
+    auto s = select("PROGRAM Main VAR t : TON; x : INT; END_VAR t(IN := TRUE, PT := T#1s); x := x + 1; END_PROGRAM");
+    CHECK(s.nativeLibraries.empty());
+    for (const auto* f : s.files) CHECK(f->library.empty());
+}
+
+TEST_CASE("a native function selects its library's natives, a constant its file", "[library]") {
+    auto s = select("PROGRAM Main ADSLOGSTR(ADSLOG_MSGTYPE_ERROR, 'x %s', 'y'); END_PROGRAM");
+    CHECK(hasLibrary(s, "Tc2_System"));
+    bool systemFile = false;
+    for (const auto* f : s.files) systemFile |= f->path == "stdlib/Tc2_System/Tc2_System.st";
+    CHECK(systemFile);
+}
+
+TEST_CASE("a global constant, an enumeration value and a block select their files", "[library]") {
+    auto paths = selectedPaths({"x := S_OK;"});
+    CHECK(has(paths, "stdlib/Tc3_Module/Tc3_Module.st"));
+    paths = selectedPaths({"d := MC_Negative_Direction;"});
+    CHECK(has(paths, "stdlib/Tc2_MC2/types.st"));
+    CHECK_FALSE(has(paths, "stdlib/Tc2_MC2/axis_ref.st"));
+    paths = selectedPaths({"a : AXIS_REF; p : MC_Power;"});
+    CHECK(has(paths, "stdlib/Tc2_MC2/axis_ref.st"));
+    CHECK(has(paths, "stdlib/Tc2_MC2/motion_blocks.st"));
+    CHECK(has(paths, "stdlib/Tc2_MC2/types.st"));
+    CHECK(hasLibrary(strun::project::selectLibraries({"a : AXIS_REF;"}), "Tc2_MC2"));  // the axis' clock
+}
+
+TEST_CASE("the registry knows names of libraries strun does not provide", "[library]") {
+    CHECK(strun::stdlib::libraryHint("fb_mbreadregs").find("comes from library Tc2_ModbusSrv, which strun does not provide") != std::string::npos);
+    CHECK(strun::stdlib::libraryHint("MC_Power") == "'MC_Power' comes from library Tc2_MC2");
+    CHECK(strun::stdlib::libraryHint("NoSuchName").empty());
+    CHECK(strun::stdlib::findLibrary("tc2_system") != nullptr);
+    // Names of absent libraries select nothing.
+    CHECK(selectedPaths({"s : FB_MBReadRegs;"}).empty());
+}
+
+TEST_CASE("values of a qualified_only enumeration select nothing by themselves", "[library]") {
+    // TcEventSeverity.Error: a project's own `Error` must not load Tc3_EventLogger.
+    for (const auto& p : selectedPaths({"Error := TRUE; Info := 1; Warning := 2;"})) CHECK(p.find("Tc3_EventLogger") == std::string::npos);
+    CHECK(has(selectedPaths({"s : TcEventSeverity;"}), "stdlib/Tc3_EventLogger/Tc3_EventLogger.st"));
 }

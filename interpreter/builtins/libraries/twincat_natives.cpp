@@ -1,11 +1,14 @@
-// TwinCAT library functions application and test code calls (Tc2_System):
-// ADSLOGSTR, ADSLOGDINT, ADSLOGLREAL write their message to stderr (the
-// TwinCAT error list's stand-in), one line each, with the argument in place
-// of the format's %s / %d / %f. They return 0 like TwinCAT.
-// Task and distributed-clock time (Tc2_System F_GetTaskTime, Tc2_EtherCAT
-// F_GetCurDcTaskTime64 / F_GetCurDcTickTime64 / DCTIME64_TO_STRING /
-// STRING_TO_DCTIME64) come from the PLC calendar (--start on the virtual
-// clock), decision 0095.
+// Native functions of the Beckhoff libraries, registered only for projects
+// that name one of them (decision 0220):
+// Tc2_System: ADSLOGSTR, ADSLOGDINT, ADSLOGLREAL write one line to stderr:
+// `ADSLOG <PLC time> <task> <kind>: <message>`, the message being the format
+// with its first %x replaced by the argument (TwinCAT: %s, %d, %f); they
+// return 0 like TwinCAT. F_GetTaskTime (the task's start) and
+// F_GetSystemTime (now) count 100 ns since 1601 from the PLC calendar
+// (--start on the virtual clock); GETCURTASKINDEXEX is the running task's
+// 1-based place in strun's task list.
+// Tc2_EtherCAT: distributed-clock time (F_GetCurDcTaskTime64,
+// F_GetCurDcTickTime64, DCTIME64_TO_STRING, STRING_TO_DCTIME64), decision 0095.
 #include <cstdio>
 #include <cstring>
 
@@ -14,8 +17,10 @@
 #include "stdlib/calendar.h"
 
 #include "interpreter/builtins/bind_support.h"
-#include "interpreter/builtins/register_groups.h"
+#include "interpreter/builtins/libraries/library_natives.h"
+#include "runtime/duration_text.h"
 #include "interpreter/builtins/string_nodes.h"
+#include "interpreter/exec/value_nodes.h"
 
 namespace strun::stdlib::bind {
 
@@ -24,10 +29,12 @@ namespace {
 enum class LogArg : uint8_t { String, Dint, Lreal };
 
 struct AdsLogNode final : exec::Expr {
+    Expr* maskExpr;
     Expr* format;
     Expr* arg;
     LogArg kind;
-    AdsLogNode(Expr* f, Expr* a, LogArg k) : format(f), arg(a), kind(k) {}
+    exec::Site site;
+    AdsLogNode(Expr* m, Expr* f, Expr* a, LogArg k, exec::Site s) : maskExpr(m), format(f), arg(a), kind(k), site(s) {}
     int64_t i(Ctx& c) override {
         std::string_view f = viewOf<char>(format, c);
         char number[64];
@@ -39,17 +46,32 @@ struct AdsLogNode final : exec::Expr {
                                          : std::snprintf(number, sizeof number, "%f", arg->f(c));
             value = std::string_view(number, n > 0 ? static_cast<size_t>(n) : 0);
         }
-        // The first %x of the format takes the value (TwinCAT: %s, %d, %f).
-        size_t at = f.find('%');
-        std::fputs("ADSLOG: ", stderr);
+        // The message: the first %x of the format takes the value (TwinCAT: %s, %d, %f).
+        std::string message;
+        const size_t at = f.find('%');
         if (at == std::string_view::npos || at + 1 >= f.size()) {
-            std::fwrite(f.data(), 1, f.size(), stderr);
+            message.assign(f);
         } else {
-            std::fwrite(f.data(), 1, at, stderr);
-            std::fwrite(value.data(), 1, value.size(), stderr);
-            std::fwrite(f.data() + at + 2, 1, f.size() - at - 2, stderr);
+            message.assign(f.substr(0, at));
+            message.append(value);
+            message.append(f.substr(at + 2));
         }
-        std::fputc('\n', stderr);
+        const uint64_t mask = static_cast<uint64_t>(maskExpr->i(c));
+        const char* severity = (mask & 0x04) ? "error" : (mask & 0x02) ? "warning" : (mask & 0x01) ? "hint" : "log";
+        // ADSLOG <PLC time> <task> <severity>: <message>
+        rt::AttentionHandler* h = c.m->handler;
+        std::string line = "ADSLOG ";
+        rt::appendDuration(line, h ? h->currentTime() : c.m->now);
+        const std::string task = h ? h->currentTaskName() : std::string();
+        line += ' ';
+        line += task.empty() ? "-" : task;
+        line += ' ';
+        line += severity;
+        line += ": ";
+        line += message;
+        line += '\n';
+        std::fwrite(line.data(), 1, line.size(), stderr);
+        if (h) exec::reportLog(c, site, std::string(severity) + ": " + message);
         return 0;
     }
 };
@@ -69,7 +91,7 @@ void addAdsLog(Checker& ck, const char* name, LogArg kind) {
             arg = ck.coerce(arg, ck.types().elementary(kind == LogArg::Dint ? TK::DInt : TK::LReal), arg.loc, call.name.c_str());
             if (!arg.ok) return arg;
         }
-        auto* n = ck.pool().make<AdsLogNode>(format.node, arg.node, kind);
+        auto* n = ck.pool().make<AdsLogNode>(mask.node, format.node, arg.node, kind, ck.site(call.loc));
         return makeResult(ck, n, ck.types().elementary(TK::DInt), call, a, false);
     });
 }
@@ -79,15 +101,18 @@ void addAdsLog(Checker& ck, const char* name, LogArg kind) {
 constexpr int64_t kDcEpochFrom1970 = 946'684'800LL * stdlib::kNsPerSecond;
 constexpr int64_t kFileTimeEpochTo1970 = 11'644'473'600LL * 10'000'000LL;
 
-enum class Clock : uint8_t { TaskFileTime, TaskDc, TickDc };
+enum class Clock : uint8_t { TaskFileTime, SystemFileTime, TaskDc, TickDc, TaskStartPlc };
 
 struct TwinCatClockNode final : exec::Expr {
     Clock which;
     explicit TwinCatClockNode(Clock w) : which(w) {}
     int64_t i(Ctx& c) override {
         rt::AttentionHandler& h = *c.m->handler;
-        int64_t calendar = which == Clock::TickDc ? h.calendarNanos() : h.taskStartCalendarNanos();
-        if (which == Clock::TaskFileTime) return calendar / 100 + kFileTimeEpochTo1970;
+        // PLC time (ns) at which the running activation started: the simulated
+        // axes of Tc2_MC2 advance to it, as an NC task's cycle would.
+        if (which == Clock::TaskStartPlc) return h.currentTime() - (h.calendarNanos() - h.taskStartCalendarNanos());
+        int64_t calendar = which == Clock::TickDc || which == Clock::SystemFileTime ? h.calendarNanos() : h.taskStartCalendarNanos();
+        if (which == Clock::TaskFileTime || which == Clock::SystemFileTime) return calendar / 100 + kFileTimeEpochTo1970;
         int64_t dc = calendar - kDcEpochFrom1970;
         // A calendar before 2000 (the default --start is 1970): the DC clock
         // starts at 0 with the PLC, so differences still measure PLC time.
@@ -153,10 +178,35 @@ void addClock(Checker& ck, const char* name, Clock which) {
     });
 }
 
+struct TaskIndexNode final : exec::Expr {
+    int64_t i(Ctx& c) override { return c.m->handler ? c.m->handler->currentTaskIndex() : 0; }
+};
+
 }  // namespace
 
-void registerTwinCat(Checker& ck) {
+void registerTc2SystemNatives(Checker& ck) {
     addClock(ck, "F_GETTASKTIME", Clock::TaskFileTime);
+    addClock(ck, "F_GETSYSTEMTIME", Clock::SystemFileTime);
+    ck.addBuiltin("GETCURTASKINDEXEX", [](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);
+        return makeResult(ck, ck.pool().make<TaskIndexNode>(), ck.types().elementary(TK::Byte), call, a, false);
+    });
+    addAdsLog(ck, "ADSLOGSTR", LogArg::String);
+    addAdsLog(ck, "ADSLOGDINT", LogArg::Dint);
+    addAdsLog(ck, "ADSLOGLREAL", LogArg::Lreal);
+    registerTc2SystemFileNatives(ck);
+}
+
+void registerTc2Mc2Natives(Checker& ck) {
+    ck.addBuiltin("F_STRUN_TASKSTARTNANOS", [](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);
+        return makeResult(ck, ck.pool().make<TwinCatClockNode>(Clock::TaskStartPlc), ck.types().elementary(TK::LInt), call, a, false);
+    });
+}
+
+void registerTc2EtherCatNatives(Checker& ck) {
     addClock(ck, "F_GETCURDCTASKTIME64", Clock::TaskDc);
     addClock(ck, "F_GETCURDCTICKTIME64", Clock::TickDc);
     ck.addBuiltin("DCTIME64_TO_STRING", [](Checker& ck, CallArgs& call) -> Checked {
@@ -174,9 +224,6 @@ void registerTwinCat(Checker& ck) {
         if (!isStringArg(a[0], false)) return argError(ck, a[0], call.name, "in must be a STRING");
         return makeResult(ck, ck.pool().make<StringToDcTimeNode>(a[0].node), ck.types().elementary(TK::ULInt), call, a, false);
     });
-    addAdsLog(ck, "ADSLOGSTR", LogArg::String);
-    addAdsLog(ck, "ADSLOGDINT", LogArg::Dint);
-    addAdsLog(ck, "ADSLOGLREAL", LogArg::Lreal);
 }
 
 }  // namespace strun::stdlib::bind

@@ -1,0 +1,290 @@
+// embed_library: the build step that puts strun's ST library into the binary.
+//
+//   embed_library OUT.cpp ST_DIR LIBRARIES_DIR
+//
+// Writes OUT.cpp holding
+//   - every ST_DIR/*.st (the IEC standard blocks and TcUnit) and every
+//     LIBRARIES_DIR/<Library>/*.st as an EmbeddedSource (stdlib/embedded_sources.h),
+//   - the library registry (stdlib/library_registry.h): every library folder
+//     with its vendor and status (LIBRARIES_DIR/<Library>/library.txt), and
+//     one row per name a library provides or is known to have, sorted by
+//     upper-case name: the names the .st files declare (POUs, types, enumeration
+//     values, global variables), the native functions library.txt lists, and
+//     the names of the library strun does not provide.
+// The scan runs here, once per build, so that start-up never reads the
+// library texts to learn what they declare (decision 0220).
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Name {
+    std::string upper, written, library;
+    char kind;   // F function, B function block, I interface, P program, N namespace, T type,
+                 // E enumeration value, G global variable, X native function, U not provided
+    int file;    // index of the embedded source, -1 for X and U
+};
+
+struct Library {
+    std::string name, vendor, status, summary;
+};
+
+std::string upperOf(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+bool isWordStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool isWordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+std::string readFile(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// A token of the declaration scan: a word, or one significant character.
+struct Token {
+    std::string text;  // the word as written, or the character
+    bool word;
+};
+
+// The tokens of ST text without comments, pragmas and string literals.
+std::vector<Token> tokens(const std::string& t) {
+    std::vector<Token> out;
+    size_t i = 0, n = t.size();
+    while (i < n) {
+        char c = t[i];
+        if (c == '(' && i + 1 < n && t[i + 1] == '*') {
+            size_t e = t.find("*)", i + 2);
+            i = e == std::string::npos ? n : e + 2;
+        } else if (c == '/' && i + 1 < n && t[i + 1] == '*') {
+            size_t e = t.find("*/", i + 2);
+            i = e == std::string::npos ? n : e + 2;
+        } else if (c == '/' && i + 1 < n && t[i + 1] == '/') {
+            size_t e = t.find('\n', i);
+            i = e == std::string::npos ? n : e;
+        } else if (c == '{') {
+            size_t e = t.find('}', i);
+            // {attribute 'qualified_only'}: the next TYPE's values are reached only qualified.
+            if (t.substr(i, e == std::string::npos ? std::string::npos : e - i).find("qualified_only") != std::string::npos)
+                out.push_back({"{Q", false});
+            i = e == std::string::npos ? n : e + 1;
+        } else if (c == '\'' || c == '"') {
+            size_t j = i + 1;
+            while (j < n && t[j] != c) j += t[j] == '$' ? 2 : 1;
+            i = j + 1;
+        } else if (isWordStart(c)) {
+            size_t j = i;
+            while (j < n && isWordChar(t[j])) ++j;
+            out.push_back({t.substr(i, j - i), true});
+            i = j;
+        } else if (std::isdigit(static_cast<unsigned char>(c))) {
+            while (i < n && (isWordChar(t[i]) || t[i] == '#' || t[i] == '.')) ++i;
+        } else if (std::isspace(static_cast<unsigned char>(c))) {
+            ++i;
+        } else {
+            out.push_back({std::string(1, c), false});
+            ++i;
+        }
+    }
+    return out;
+}
+
+// The names one library file declares.
+void scanDeclarations(const std::string& text, const std::string& library, int file, std::vector<Name>& out) {
+    const std::vector<Token> tk = tokens(text);
+    enum class Block { None, Type, Globals };
+    Block block = Block::None;
+    int structDepth = 0, parenDepth = 0;
+    bool pendingQualified = false, qualified = false;  // enumeration values of a qualified_only TYPE are not names of their own
+    auto add = [&](const std::string& w, char kind) { out.push_back({upperOf(w), w, library, kind, file}); };
+    auto at = [&](size_t k) -> const Token* { return k < tk.size() ? &tk[k] : nullptr; };
+    auto isChar = [&](size_t k, char c) { const Token* t = at(k); return t && !t->word && t->text[0] == c; };
+    for (size_t k = 0; k < tk.size(); ++k) {
+        const Token& t = tk[k];
+        if (!t.word) {
+            if (t.text == "{Q") {
+                pendingQualified = true;
+                continue;
+            }
+            if (block == Block::Type) {
+                if (t.text == "(") ++parenDepth;
+                if (t.text == ")") --parenDepth;
+            }
+            continue;
+        }
+        const std::string u = upperOf(t.text);
+        if (u == "END_TYPE" || u == "END_VAR") {
+            block = Block::None;
+            continue;
+        }
+        if (u == "FUNCTION_BLOCK" || u == "FUNCTION" || u == "INTERFACE" || u == "PROGRAM" || u == "NAMESPACE") {
+            const Token* next = at(k + 1);
+            if (next && next->word) {
+                std::string name = next->text;
+                // FUNCTION_BLOCK ABSTRACT/FINAL/PUBLIC X
+                size_t j = k + 1;
+                while (at(j) && at(j)->word &&
+                       (upperOf(at(j)->text) == "ABSTRACT" || upperOf(at(j)->text) == "FINAL" || upperOf(at(j)->text) == "PUBLIC" ||
+                        upperOf(at(j)->text) == "INTERNAL"))
+                    ++j;
+                if (at(j) && at(j)->word) name = at(j)->text;
+                add(name, u == "FUNCTION_BLOCK" ? 'B' : u == "FUNCTION" ? 'F' : u == "INTERFACE" ? 'I' : u == "PROGRAM" ? 'P' : 'N');
+                k = j;
+            }
+            continue;
+        }
+        if (u == "TYPE") {
+            block = Block::Type;
+            structDepth = parenDepth = 0;
+            qualified = pendingQualified;
+            pendingQualified = false;
+            continue;
+        }
+        if (u == "VAR_GLOBAL") {
+            block = Block::Globals;
+            continue;
+        }
+        if (block == Block::Type) {
+            if (u == "STRUCT" || u == "UNION") ++structDepth;
+            if (u == "END_STRUCT" || u == "END_UNION") --structDepth;
+            if (structDepth == 0 && parenDepth == 0 && isChar(k + 1, ':') && !isChar(k + 2, '=')) add(t.text, 'T');
+            // Enumeration values: words directly inside the type's parentheses, after '(' or ','.
+            if (!qualified && structDepth == 0 && parenDepth == 1 && k > 0 && (isChar(k - 1, '(') || isChar(k - 1, ','))) add(t.text, 'E');
+        } else if (block == Block::Globals) {
+            const bool starts = k > 0 && (isChar(k - 1, ';') || isChar(k - 1, ',') || (tk[k - 1].word && (upperOf(tk[k - 1].text) == "VAR_GLOBAL" ||
+                                                                                                     upperOf(tk[k - 1].text) == "CONSTANT" ||
+                                                                                                     upperOf(tk[k - 1].text) == "PERSISTENT" ||
+                                                                                                     upperOf(tk[k - 1].text) == "RETAIN")));
+            if (starts && (isChar(k + 1, ',') || (isChar(k + 1, ':') && !isChar(k + 2, '=')))) add(t.text, 'G');
+        }
+    }
+}
+
+// library.txt: `key: value` lines; `native:` and `absent:` may repeat and
+// take blank-separated names; `#` starts a comment line.
+Library readLibraryFile(const fs::path& p, const std::string& name, std::vector<Name>& out) {
+    Library lib{name, "", "", ""};
+    std::istringstream in(readFile(p));
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        size_t colon = line.find(':');
+        if (colon == std::string::npos) continue;
+        std::string key = line.substr(0, colon), value = line.substr(colon + 1);
+        while (!value.empty() && std::isspace(static_cast<unsigned char>(value.front()))) value.erase(value.begin());
+        while (!value.empty() && std::isspace(static_cast<unsigned char>(value.back()))) value.pop_back();
+        if (key == "vendor") lib.vendor = value;
+        else if (key == "status") lib.status = value;
+        else if (key == "summary") lib.summary = value;
+        else if (key == "native" || key == "absent") {
+            std::istringstream words(value);
+            for (std::string w; words >> w;) out.push_back({upperOf(w), w, name, key == "native" ? 'X' : 'U', -1});
+        } else {
+            std::cerr << p.string() << ": unknown key '" << key << "'\n";
+            std::exit(1);
+        }
+    }
+    if (lib.status != "real" && lib.status != "partial" && lib.status != "interface" && lib.status != "absent") {
+        std::cerr << p.string() << ": status must be real, partial, interface or absent\n";
+        std::exit(1);
+    }
+    return lib;
+}
+
+std::vector<fs::path> sortedFiles(const fs::path& dir, const std::string& ext) {
+    std::vector<fs::path> files;
+    if (fs::is_directory(dir))
+        for (const auto& e : fs::directory_iterator(dir))
+            if (e.is_regular_file() && e.path().extension() == ext) files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+// A C++ raw string literal of any text (split where the delimiter would end it).
+std::string rawLiteral(const std::string& text) {
+    std::string out = "R\"strun_st(";
+    size_t at = 0;
+    for (size_t hit; (hit = text.find(")strun_st\"", at)) != std::string::npos; at = hit + 1) out += text.substr(at, hit + 1 - at) + ")strun_st\" R\"strun_st(";
+    return out + text.substr(at) + ")strun_st\"";
+}
+
+std::string quoted(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out + "\"";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 4) {
+        std::cerr << "usage: embed_library OUT.cpp ST_DIR LIBRARIES_DIR\n";
+        return 2;
+    }
+    struct Source {
+        std::string path, library, text;
+    };
+    std::vector<Source> sources;
+    std::vector<Name> names;
+    std::vector<Library> libraries;
+    for (const fs::path& f : sortedFiles(argv[2], ".st")) sources.push_back({"stdlib/" + f.filename().string(), "", readFile(f)});
+    std::vector<fs::path> dirs;
+    if (fs::is_directory(argv[3]))
+        for (const auto& e : fs::directory_iterator(argv[3]))
+            if (e.is_directory()) dirs.push_back(e.path());
+    std::sort(dirs.begin(), dirs.end());
+    for (const fs::path& dir : dirs) {
+        const std::string lib = dir.filename().string();
+        if (!fs::exists(dir / "library.txt")) {
+            std::cerr << dir.string() << ": no library.txt\n";
+            return 1;
+        }
+        libraries.push_back(readLibraryFile(dir / "library.txt", lib, names));
+        for (const fs::path& f : sortedFiles(dir, ".st")) sources.push_back({"stdlib/" + lib + "/" + f.filename().string(), lib, readFile(f)});
+    }
+    for (size_t i = 0; i < sources.size(); ++i) scanDeclarations(sources[i].text, sources[i].library, static_cast<int>(i), names);
+    std::sort(names.begin(), names.end(), [](const Name& a, const Name& b) {
+        return a.upper != b.upper ? a.upper < b.upper : a.file != b.file ? a.file < b.file : a.kind < b.kind;
+    });
+    names.erase(std::unique(names.begin(), names.end(),
+                            [](const Name& a, const Name& b) { return a.upper == b.upper && a.file == b.file && a.kind == b.kind; }),
+                names.end());
+
+    std::ostringstream o;
+    o << "// generated by stdlib/embed_tool/embed_library.cpp: do not edit\n"
+         "#include \"stdlib/embedded_sources.h\"\n#include \"stdlib/library_registry.h\"\n"
+         "namespace strun::stdlib {\n"
+         "const std::vector<EmbeddedSource>& embeddedSources() {\n  static const std::vector<EmbeddedSource> sources = {\n";
+    for (const Source& s : sources) o << "    {" << quoted(s.path) << ", " << rawLiteral(s.text) << ", " << quoted(s.library) << "},\n";
+    o << "  };\n  return sources;\n}\n";
+    o << "static const LibraryInfo kLibraries[] = {\n";
+    for (const Library& l : libraries)
+        o << "    {" << quoted(l.name) << ", " << quoted(l.vendor) << ", " << quoted(l.status) << ", " << quoted(l.summary) << "},\n";
+    o << "};\nstd::span<const LibraryInfo> libraries() { return kLibraries; }\n";
+    o << "static const LibraryName kNames[] = {\n";
+    for (const Name& n : names)
+        o << "    {" << quoted(n.upper) << ", " << quoted(n.written) << ", " << quoted(n.library) << ", '" << n.kind << "', " << n.file << "},\n";
+    o << "};\nstd::span<const LibraryName> libraryNames() { return kNames; }\n";
+    o << "}  // namespace strun::stdlib\n";
+    const std::string text = o.str();
+    const fs::path out = argv[1];
+    if (fs::exists(out) && readFile(out) == text) return 0;  // unchanged: nothing rebuilds
+    std::ofstream(out, std::ios::binary) << text;
+    return 0;
+}
