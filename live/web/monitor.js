@@ -93,26 +93,40 @@
       let same = 0;
       while (same < open.length && same < scopePaths.length && open[same] === scopePaths[same]) same++;
       for (let i = same; i < scopePaths.length; i++)
-        html.push(`<tr class="scope" data-scope="${esc(scopePaths[i])}" data-depth="${i}"><td colspan="5" style="padding-left:${6 + 14 * i}px">${esc(scopes[i])}</td></tr>`);
+        html.push(`<div class="scope" data-scope="${esc(scopePaths[i])}" data-depth="${i}" style="padding-left:${6 + 14 * i}px">${esc(scopes[i])}</div>`);
       open = scopePaths;
       const depth = scopePaths.length;
-      html.push(`<tr class="var" data-i="${index++}" data-path="${esc(v.path)}" data-scope="${esc(scopePaths[scopePaths.length - 1])}">` +
-        `<td style="padding-left:${6 + 14 * depth}px" title="${esc(v.path)}">${esc(p[p.length - 1])}</td><td>${esc(v.type)}</td>` +
-        `<td class="value"></td><td class="edit"><button type="button" class="btn-edit" title="write or force">✎</button></td><td class="trend"></td></tr>`);
+      html.push(`<div class="row var" data-i="${index++}" data-path="${esc(v.path)}" data-scope="${esc(scopePaths[scopePaths.length - 1])}">` +
+        `<span class="name" style="padding-left:${6 + 14 * depth}px" title="${esc(v.path)}">${esc(p[p.length - 1])}</span><span class="type">${esc(v.type)}</span>` +
+        `<span class="value"></span><span class="edit"><button type="button" class="btn-edit" title="write or force">✎</button></span><span class="trend"></span></div>`);
     }
     const body = $("vars-body");
     body.innerHTML = html.join("");
-    for (const tr of body.querySelectorAll("tr.var")) {
+    for (const tr of body.querySelectorAll(".var")) {
       const v = list[+tr.dataset.i];
-      rows.set(v.path, { tr, value: tr.cells[2], type: v.type, scope: tr.dataset.scope });
+      rows.set(v.path, { tr, value: tr.querySelector(".value"), edit: tr.querySelector(".edit"), trend: tr.querySelector(".trend"), type: v.type, scope: tr.dataset.scope });
     }
+    for (const r of rows.values()) onScreen.observe(r.tr);
     $("var-count").textContent = list.length + " variables";
   }
 
+  // Only rows on (or near) the screen get their values written into the
+  // page; the others are brought up to date when they scroll into view.
+  const visible = new Set();
+  const onScreen = new IntersectionObserver((entries) => {
+    for (const e of entries) {
+      const path = e.target.dataset.path;
+      if (!e.isIntersecting) { visible.delete(path); continue; }
+      visible.add(path);
+      const row = rows.get(path);
+      if (row && values.has(path)) row.value.textContent = show(values.get(path));
+    }
+  }, { rootMargin: "300px 0px" });
+
   $("vars-body").addEventListener("click", (e) => {
-    const scopeRow = e.target.closest("tr.scope");
+    const scopeRow = e.target.closest(".scope");
     if (scopeRow) { toggleScope(scopeRow); return; }
-    const tr = e.target.closest("tr.var");
+    const tr = e.target.closest(".var");
     if (!tr) return;
     const path = tr.dataset.path;
     if (e.target.classList.contains("btn-edit")) openEditor(tr, path);
@@ -122,14 +136,14 @@
     else if (e.target.classList.contains("btn-trend")) toggleTrend(path);
   });
   $("vars-body").addEventListener("keydown", (e) => {
-    if (e.key === "Enter" && e.target.classList.contains("edit-value")) send("/api/write", e.target.closest("tr").dataset.path, e.target.closest("tr"));
+    if (e.key === "Enter" && e.target.classList.contains("edit-value")) send("/api/write", e.target.closest(".var").dataset.path, e.target.closest(".var"));
   });
 
   function toggleScope(tr) {
     const scope = tr.dataset.scope;
     const collapse = !tr.classList.contains("collapsed");
     tr.classList.toggle("collapsed", collapse);
-    for (const row of $("vars-body").rows) {
+    for (const row of $("vars-body").children) {
       if (row === tr) continue;
       const s = row.dataset.scope || "";
       if (s === scope || s.startsWith(scope + ".")) row.classList.toggle("folded", collapse);
@@ -138,7 +152,7 @@
   }
 
   function openEditor(tr, path) {
-    const cell = tr.cells[3];
+    const cell = rows.get(path).edit;
     const current = values.has(path) ? show(values.get(path)) : "";
     cell.innerHTML = `<input class="edit-value" value="${esc(current)}" aria-label="value for ${esc(path)}">` +
       `<button type="button" class="btn-write" title="write once">W</button>` +
@@ -185,7 +199,7 @@
         for (let i = 1; i <= sp.length; i++) visibleScopes.add(sp.slice(0, i).join("."));
       }
     }
-    for (const tr of $("vars-body").querySelectorAll("tr.scope"))
+    for (const tr of $("vars-body").querySelectorAll(".scope"))
       tr.hidden = !visibleScopes.has(tr.dataset.scope) || tr.classList.contains("folded");
     $("var-count").textContent = (text ? shown + " of " : "") + rows.size + " variables";
   }
@@ -209,6 +223,7 @@
     queueValues.frame = 0;
     for (const [path, value] of pending) {
       values.set(path, value);
+      if (!visible.has(path)) continue;
       const row = rows.get(path);
       if (row) row.value.textContent = show(value);
     }
@@ -218,7 +233,9 @@
   async function streamEvents() {
     while (!ended) {
       try {
-        const res = await fetch("/api/events?every=200ms", { headers: headers(false) });
+        // Large projects get fewer, larger events: parsing dominates then.
+        const every = rows.size > 2000 ? "500ms" : "200ms";
+        const res = await fetch("/api/events?every=" + every, { headers: headers(false) });
         if (!res.ok || !res.body) throw new Error("events: " + res.status);
         $("connection").textContent = "live";
         const reader = res.body.getReader();
@@ -338,13 +355,13 @@
   // ---------------------------------------------------------------- trend
   function toggleTrend(path) {
     const row = rows.get(path);
-    if (trends.has(path)) { trends.delete(path); row.tr.cells[4].textContent = ""; }
+    if (trends.has(path)) { trends.delete(path); row.trend.textContent = ""; }
     else {
       const color = palette[trends.size % palette.length];
       const v = values.get(path);
       const n = v === true ? 1 : v === false ? 0 : typeof v === "number" ? v : parseFloat(v);
       trends.set(path, { color, points: Number.isNaN(n) ? [] : [[lastTimeNs, n]] });
-      row.tr.cells[4].innerHTML = `<span style="color:${color}">●</span>`;
+      row.trend.innerHTML = `<span style="color:${color}">●</span>`;
     }
     $("trend-legend").innerHTML = [...trends].map(([p, t]) => `<span style="color:${t.color}">● ${esc(p)}</span>`).join("");
   }
