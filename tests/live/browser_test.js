@@ -105,10 +105,10 @@ async function waitFor(what, predicate, timeout = 15000) {
 
     // The filter box.
     await page.type("#filter", "valve");
-    await waitFor(() => page.$eval('.var[data-path="Main.counter"]', (tr) => tr.hidden), (h) => h === true);
-    if (await page.$eval('.var[data-path="Main.valve.cmd"]', (tr) => tr.hidden)) fail("the filter hid a match");
+    await waitFor(() => page.$('.var[data-path="Main.counter"]'), (e) => e === null);
+    if (!(await page.$('.var[data-path="Main.valve.cmd"]'))) fail("the filter hid a match");
     await page.$eval("#filter", (i) => { i.value = ""; i.dispatchEvent(new Event("input")); });
-    await waitFor(() => page.$eval('.var[data-path="Main.counter"]', (tr) => tr.hidden), (h) => h === false);
+    await waitFor(() => page.$('.var[data-path="Main.counter"]'), (e) => e !== null);
 
     if (screenshot) {
       await api(url, "/api/resume", {});
