@@ -212,6 +212,23 @@ def case_paused_real_clock(strun):
         s.stop()
 
 
+def case_external_task(strun):
+    import os
+    prog = os.path.join(os.path.dirname(DEMO), "external_task.st")
+    s = serve(strun, "--target", "m241", "--virtual", "--paused", files=(prog,))
+    try:
+        s.post("/api/step", {"task": "Cyc", "cycles": 1})
+        check(s.value("H.presses") == 0, "no edge yet")
+        s.post("/api/write", {"name": "FI0", "value": "TRUE"})
+        s.post("/api/step", {"task": "Cyc", "cycles": 2})
+        check(s.value("H.presses") == 1, f"the live write's edge released the EXTERNAL task: {s.value('H.presses')}")
+        s.post("/api/write", {"name": "%IX0.0", "value": "FALSE"})
+        s.post("/api/step", {"task": "Cyc", "cycles": 2})
+        check(s.value("H.presses") == 2, f"and the falling edge: {s.value('H.presses')}")
+    finally:
+        s.stop()
+
+
 def case_events(strun):
     s = serve(strun)
     try:
