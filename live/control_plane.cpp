@@ -336,10 +336,18 @@ void ControlPlane::drainRequests() {
         draining_.swap(requests_);
         requestsPending_.store(false, std::memory_order_relaxed);
     }
+    bool inputsChanged = false;
     for (Request& r : draining_) {
         auto same = [&](const Target& f) { return f.key == r.target.key; };
         switch (r.kind) {
-        case Request::Kind::Write: store(r.target, r.target.dest); break;
+        case Request::Kind::Write: {
+            const size_t n = r.target.bit >= 0 ? 1 : r.target.bytes.size();
+            uint8_t before[8] = {};
+            if (r.target.input) std::memcpy(before, r.target.dest, std::min<size_t>(n, sizeof before));
+            store(r.target, r.target.dest);
+            if (r.target.input && std::memcmp(before, r.target.dest, std::min<size_t>(n, sizeof before)) != 0) inputsChanged = true;
+            break;
+        }
         case Request::Kind::Force: {
             auto it = std::find_if(activeForces_.begin(), activeForces_.end(), same);
             if (it != activeForces_.end()) *it = std::move(r.target);
@@ -353,6 +361,8 @@ void ControlPlane::drainRequests() {
         }
     }
     draining_.clear();
+    // As a --set write to an input does: EXTERNAL tasks see the edge.
+    if (inputsChanged && running_) running_->physicalInputsChanged(running_->now());
 }
 
 void ControlPlane::store(const Target& t, uint8_t* dest) {
@@ -433,7 +443,10 @@ std::vector<TimelineEvent> ControlPlane::timeline(uint64_t from) const {
 
 // ---------------------------------------------------------------- the scheduler's side
 
-void ControlPlane::runStarting(rt::Scheduler& scheduler) { scheduler_ = &scheduler; }
+void ControlPlane::runStarting(rt::Scheduler& scheduler) {
+    scheduler_ = &scheduler;
+    running_ = &scheduler;
+}
 
 bool ControlPlane::holdWhilePaused() {
     if (!paused_.load(std::memory_order_acquire)) return false;
@@ -486,6 +499,7 @@ void ControlPlane::taskRunning(size_t task, bool running, PlcTime now) {
 
 void ControlPlane::runEnded(const rt::Scheduler& scheduler) {
     scheduler_ = &scheduler;
+    running_ = nullptr;
     endTime_ = scheduler.endTime();
     publish(true);
     {

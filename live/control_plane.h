@@ -245,6 +245,7 @@ private:
     std::vector<std::string> sourceFiles_;
 
     const rt::Scheduler* scheduler_ = nullptr;
+    rt::Scheduler* running_ = nullptr;  // while the run lasts: told of input writes (EXTERNAL tasks)
 
     // Triple buffer: the scheduler fills `back_`, then exchanges it with
     // `middle_` (its low bit set: fresh); readers (under readerMutex_) take

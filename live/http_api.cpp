@@ -264,7 +264,10 @@ HttpResponse LiveHttpApi::events(const HttpRequest& request) {
     r.contentType = "text/event-stream";
     r.stream = [this, watched = std::move(watched), every](const std::function<bool(std::string_view)>& send) {
         std::shared_ptr<const Snapshot> previous;
-        std::string lastState;
+        // The state as the stream starts is no change: the first event is
+        // the values (GET /api/state has the state).
+        std::string lastState = dumpJson(json{{"state", rt::plcStateName(control_.latest()->state)},
+                                              {"paused", control_.paused() && !control_.latest()->ended}});
         auto lastSent = std::chrono::steady_clock::now();
         std::string chunk;
         for (;;) {
@@ -272,8 +275,9 @@ HttpResponse LiveHttpApi::events(const HttpRequest& request) {
             json state{{"state", rt::plcStateName(snap->state)}, {"paused", control_.paused() && !snap->ended}};
             std::string stateText = dumpJson(state);
             chunk.clear();
+            std::string stateEvent;
             if (stateText != lastState) {
-                chunk += "event: state\ndata: " + stateText + "\n\n";
+                stateEvent = "event: state\ndata: " + stateText + "\n\n";
                 lastState = stateText;
             }
             if (!previous || snap->sequence != previous->sequence) {
@@ -295,6 +299,7 @@ HttpResponse LiveHttpApi::events(const HttpRequest& request) {
                 }
                 previous = snap;
             }
+            chunk += stateEvent;
             auto now = std::chrono::steady_clock::now();
             if (chunk.empty() && now - lastSent >= kKeepAlive) chunk = ": keep-alive\n\n";
             if (!chunk.empty()) {
