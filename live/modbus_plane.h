@@ -41,7 +41,7 @@ public:
 
     // rt::LiveHooks (the scheduler's thread)
     void runStarting(rt::Scheduler& scheduler) override;
-    void holdWhilePaused() override { inner_.holdWhilePaused(); }
+    bool holdWhilePaused() override { return inner_.holdWhilePaused(); }
     void activationStarting(size_t task) override;
     void inputsLatched(size_t task) override { inner_.inputsLatched(task); }
     void activationEnding(size_t task) override { inner_.activationEnding(task); }

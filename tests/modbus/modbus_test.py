@@ -105,7 +105,8 @@ def raw_request(port, pdu, unit=1, tid=7):
 
 # ---------------------------------------------------------------- server
 def case_server():
-    run = Strun(["--for", "6s", "--set", "%IX0.3=TRUE", "--set", "%IW5=1234", os.path.join(HERE, "server_image.st")])
+    run = Strun(["--for", "6s", "--set", "%IX0.3=TRUE", "--set", "%IW5=1234", "--force", "%QW300=7",
+                 os.path.join(HERE, "server_image.st")])
     c = run.client()
     # FC 3: the counter of a 1 ms task moves.
     first = c.read_holding_registers(0, 1, slave=1).registers[0]
@@ -137,8 +138,14 @@ def case_server():
     # A write is a write, not a force: the program goes on counting from it.
     c.write_register(0, 30000, slave=1)
     check(wait_until(lambda: 30000 < c.read_holding_registers(0, 1, slave=1).registers[0] < 40000), "a write to %QW0 moves the counter once")
+    # A force holds against a Modbus write.
+    c.write_register(300, 99, slave=1)
+    time.sleep(0.1)
+    check(c.read_holding_registers(300, 1, slave=1).registers == [7], "a forced %QW300 stays 7 after a Modbus write")
     # The tables overlap where the image does: %QW0 is coils 0..15.
-    regs = c.read_holding_registers(0, 1, slave=1)
+    c.write_register(400, 0x8001, slave=1)
+    check(wait_until(lambda: c.read_coils(6400, 16, slave=1).bits[:16] == [True] + [False] * 14 + [True]),
+          "holding 400 (%QW400) is coils 6400..6415 (%QX800.0..%QX801.7), bit 0 first")
     # Exceptions: illegal data address outside the tables, illegal function for a code not served.
     for what, r in [("holding 2048", c.read_holding_registers(2048, 1, slave=1)),
                     ("holding 2040..2055", c.read_holding_registers(2040, 16, slave=1)),
