@@ -213,19 +213,8 @@ void Scheduler::mainLoop() {
         if (stopRequested_.load()) ending_ = true;
         if (ending_) return;
         if (machine_.now >= forEnd_) return;
-        if (options_.live) {
-            // Paused between two activations. PLC time stands still meanwhile,
-            // on the real clock too: the time spent paused is taken out of it,
-            // so a pause causes no overruns (decision 0171).
-            const int64_t holdStart = options_.virtualClock ? 0 : monotonicNanos();
-            if (options_.live->holdWhilePaused() && !options_.virtualClock) {
-                const int64_t paused = monotonicNanos() - holdStart;
-                monotonicOrigin_ += paused;
-                timer_->shiftOrigin(paused);
-            }
-            refreshNow();
-            if (stopRequested_.load()) ending_ = true;
-            if (ending_ || machine_.now >= forEnd_) return;
+        if (options_.live) [[unlikely]] {
+            if (!liveHold()) return;
         }
         processDue();
         if (TaskRun* next = pickReady(nullptr)) {
@@ -453,47 +442,95 @@ Scheduler::TaskRun* Scheduler::pickReady(const TaskRun* running) const {
 }
 
 void Scheduler::runActivation(TaskRun& task) {
-    refreshNow();
-    PlcTime start = machine_.now;
-    task.phase = Phase::Active;
-    task.startedAt = start;
-    task.watchdogAt = task.spec.watchdog > 0 ? start + task.spec.watchdog : kNever;
-    PlcTime latency = start - task.releasedAt;
-    task.minLatency = std::min(task.minLatency, latency);
-    task.maxLatency = std::max(task.maxLatency, latency);
-    ++task.started;
-    ++activations_;
-    stack_.push_back(&task);
-    trace(&task, task.inhibited ? "inhibited" : "start");
-    observeRunning(task, true);
-    int slot = task.spec.systemSlot;
-    if (system_) system_->enter(slot);
+    // Compiled twice: without a control plane (the common case) the body is
+    // exactly the one a run without live options had, and the only cost of
+    // the live hooks is the one null test below, once per activation.
+    auto activation = [&]<bool Live>() {
+        // Only an observer needs the task's index: not computed otherwise.
+        auto index = [&] { return size_t(&task - tasks_.data()); };
+        // A task switch for the --vcd observer (and the live timeline).
+        auto observe = [&](bool running) {
+            if constexpr (Live) observeRunning(task, running);
+            else if (options_.observer) options_.observer->taskRunning(index(), running, machine_.now);
+        };
+        refreshNow();
+        PlcTime start = machine_.now;
+        task.phase = Phase::Active;
+        task.startedAt = start;
+        task.watchdogAt = task.spec.watchdog > 0 ? start + task.spec.watchdog : kNever;
+        PlcTime latency = start - task.releasedAt;
+        task.minLatency = std::min(task.minLatency, latency);
+        task.maxLatency = std::max(task.maxLatency, latency);
+        ++task.started;
+        ++activations_;
+        stack_.push_back(&task);
+        trace(&task, task.inhibited ? "inhibited" : "start");
+        observe(true);
+        int slot = task.spec.systemSlot;
+        if (system_) system_->enter(slot);
 
-    // --set variable writes due by now, live writes and forces, then the input phase.
-    if (options_.stimulus) options_.stimulus->applyVariablesDue(start, options_.trace);
+        // --set variable writes due by now, live writes and forces, then the input phase.
+        if (options_.stimulus) options_.stimulus->applyVariablesDue(start, options_.trace);
+        if constexpr (Live) liveEvent(LiveEvent::Starting, task);
+        ProcessImage& image = machine_.image;
+        if (!system_ || !system_->inputsInhibited(slot))
+            std::memcpy(image.inputs.data(), image.physicalInputs.data(), std::min(image.inputExtent, ProcessImage::kSize));
+        if constexpr (Live) liveEvent(LiveEvent::InputsLatched, task);
+        armNextAttention();
+
+        bool completed = task.inhibited || !task.body ? true : task.body->runActivation();
+        if constexpr (Live) liveEvent(LiveEvent::Ending, task);
+
+        // An activation costs at least one statement, even an empty one, so a
+        // freewheeling task can never spin at a standstill on the virtual clock.
+        if (options_.virtualClock && machine_.now == start) machine_.now += machine_.stmtCost;
+        refreshNow();
+        if (options_.observer) {
+            options_.observer->activationEnded(index(), machine_.now);
+            observe(false);
+        } else if constexpr (Live) {
+            observe(false);
+        }
+        stack_.pop_back();
+        task.phase = Phase::Idle;
+        task.watchdogAt = kNever;
+        if (system_) system_->leave(task.spec.systemSlot);
+        finishActivation(task, completed);
+        if constexpr (Live) liveEvent(completed ? LiveEvent::EndedCompleted : LiveEvent::EndedAborted, task);
+    };
+    if (options_.live) [[unlikely]] activation.template operator()<true>();
+    else activation.template operator()<false>();
+}
+
+// The live hooks (runtime/live_hooks.h), out of line and cold: a run without
+// a control plane pays only the null tests at their call sites, and the
+// scheduler's hot functions keep the inlining they had without them.
+bool Scheduler::liveHold() {
+    // Paused between two activations. PLC time stands still meanwhile, on the
+    // real clock too: the time spent paused is taken out of it, so a pause
+    // causes no overruns (decision 0171).
+    const int64_t holdStart = options_.virtualClock ? 0 : monotonicNanos();
+    if (options_.live->holdWhilePaused() && !options_.virtualClock) {
+        const int64_t paused = monotonicNanos() - holdStart;
+        monotonicOrigin_ += paused;
+        timer_->shiftOrigin(paused);
+    }
+    refreshNow();
+    if (stopRequested_.load()) ending_ = true;
+    return !ending_ && machine_.now < forEnd_;
+}
+
+void Scheduler::liveEvent(LiveEvent event, const TaskRun& task) {
     const size_t index = size_t(&task - tasks_.data());
-    if (options_.live) options_.live->activationStarting(index);
-    ProcessImage& image = machine_.image;
-    if (!system_ || !system_->inputsInhibited(slot))
-        std::memcpy(image.inputs.data(), image.physicalInputs.data(), std::min(image.inputExtent, ProcessImage::kSize));
-    if (options_.live) options_.live->inputsLatched(index);
-    armNextAttention();
-
-    bool completed = task.inhibited || !task.body ? true : task.body->runActivation();
-    if (options_.live) options_.live->activationEnding(index);
-
-    // An activation costs at least one statement, even an empty one, so a
-    // freewheeling task can never spin at a standstill on the virtual clock.
-    if (options_.virtualClock && machine_.now == start) machine_.now += machine_.stmtCost;
-    refreshNow();
-    if (options_.observer) options_.observer->activationEnded(index, machine_.now);
-    if (options_.observer || options_.live) observeRunning(task, false);
-    stack_.pop_back();
-    task.phase = Phase::Idle;
-    task.watchdogAt = kNever;
-    if (system_) system_->leave(task.spec.systemSlot);
-    finishActivation(task, completed);
-    if (options_.live) options_.live->activationEnded(index, completed, stack_.empty());
+    switch (event) {
+    case LiveEvent::Starting: options_.live->activationStarting(index); break;
+    case LiveEvent::InputsLatched: options_.live->inputsLatched(index); break;
+    case LiveEvent::Ending: options_.live->activationEnding(index); break;
+    case LiveEvent::EndedCompleted:
+    case LiveEvent::EndedAborted: options_.live->activationEnded(index, event == LiveEvent::EndedCompleted, stack_.empty()); break;
+    case LiveEvent::Running:
+    case LiveEvent::Stopped: options_.live->taskRunning(index, event == LiveEvent::Running, machine_.now); break;
+    }
 }
 
 void Scheduler::finishActivation(TaskRun& task, bool completed) {
@@ -816,7 +853,7 @@ int64_t Scheduler::taskStartCalendarNanos() {
 
 void Scheduler::observeRunning(const TaskRun& task, bool running) {
     if (options_.observer) options_.observer->taskRunning(size_t(&task - tasks_.data()), running, machine_.now);
-    if (options_.live) options_.live->taskRunning(size_t(&task - tasks_.data()), running, machine_.now);
+    if (options_.live) [[unlikely]] liveEvent(running ? LiveEvent::Running : LiveEvent::Stopped, task);
 }
 
 std::string Scheduler::currentTaskName() const { return stack_.empty() ? std::string() : stack_.back()->spec.name; }

@@ -167,6 +167,9 @@ private:
         PlcTime minLatency = kNever, maxLatency = 0;
     };
     TaskStats statsOf(const TaskRun& task) const;
+    enum class LiveEvent : uint8_t { Starting, InputsLatched, Ending, EndedCompleted, EndedAborted, Running, Stopped };
+    [[gnu::noinline, gnu::cold]] bool liveHold();  // false: the run ends
+    [[gnu::noinline, gnu::cold]] void liveEvent(LiveEvent event, const TaskRun& task);
 
     void mainLoop();
     void idle();

@@ -36,15 +36,21 @@ def start(strun, args, prog):
 
 
 def poll_vars(url, stop):
-    while not stop.is_set():
-        urllib.request.urlopen(url + "/api/vars", timeout=10).read()
-        time.sleep(0.1)
+    try:
+        while not stop.is_set():
+            urllib.request.urlopen(url + "/api/vars", timeout=10).read()
+            time.sleep(0.1)
+    except OSError:
+        pass  # the run (and its server) has ended
 
 
 def sse(url, stop, watch=""):
-    with urllib.request.urlopen(url + "/api/events?every=100ms" + watch, timeout=30) as r:
-        while not stop.is_set():
-            r.readline()
+    try:
+        with urllib.request.urlopen(url + "/api/events?every=100ms" + watch, timeout=30) as r:
+            while not stop.is_set() and r.readline():
+                pass
+    except OSError:
+        pass
 
 
 def rss(pid):

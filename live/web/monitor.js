@@ -82,70 +82,103 @@
   const esc = (s) => s.replace(/[&<>"]/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;" }[c]));
 
   // ---------------------------------------------------------------- the tree
+  // A virtual list: `items` is the whole tree (scopes and variables, in
+  // order), `shown` what the filter and the folds leave, and only the rows
+  // around the viewport exist in the page, so 10 000 variables cost the
+  // browser no more layout than fifty.
+  const ROW = 22;
+  const items = [];        // {isScope: true, path, label, depth} or {path, label, depth, type, scope}
+  let shown = [];
+  const folded = new Set(); // scope paths folded
+  const rendered = new Map(); // path -> {tr, value, edit, trend} for the rows in the page now
+  let editing = null, editText = "";
+
   function buildTree(list) {
-    const html = [];
-    let open = [];  // scope paths currently open
-    let index = 0;
+    let open = [];
     for (const v of list) {
       const p = parts(v.path);
       const scopes = p.length > 1 ? p.slice(0, -1) : ["Globals"];
       const scopePaths = scopes.map((_, i) => scopes.slice(0, i + 1).join("."));
       let same = 0;
       while (same < open.length && same < scopePaths.length && open[same] === scopePaths[same]) same++;
-      for (let i = same; i < scopePaths.length; i++)
-        html.push(`<tr class="scope" data-scope="${esc(scopePaths[i])}" data-depth="${i}"><td colspan="5" style="padding-left:${6 + 14 * i}px">${esc(scopes[i])}</td></tr>`);
+      for (let i = same; i < scopePaths.length; i++) items.push({ isScope: true, path: scopePaths[i], label: scopes[i], depth: i });
       open = scopePaths;
-      const depth = scopePaths.length;
-      html.push(`<tr class="var" data-i="${index++}" data-path="${esc(v.path)}" data-scope="${esc(scopePaths[scopePaths.length - 1])}">` +
-        `<td style="padding-left:${6 + 14 * depth}px" title="${esc(v.path)}">${esc(p[p.length - 1])}</td><td>${esc(v.type)}</td>` +
-        `<td class="value"></td><td class="edit"><button type="button" class="btn-edit" title="write or force">✎</button></td><td class="trend"></td></tr>`);
+      const item = { path: v.path, label: p[p.length - 1], depth: scopePaths.length, type: v.type, scope: scopePaths[scopePaths.length - 1] };
+      items.push(item);
+      rows.set(v.path, item);
     }
-    const body = $("vars-body");
-    body.innerHTML = html.join("");
-    for (const tr of body.querySelectorAll("tr.var")) {
-      const v = list[+tr.dataset.i];
-      rows.set(v.path, { tr, value: tr.cells[2], type: v.type, scope: tr.dataset.scope });
-    }
-    $("var-count").textContent = list.length + " variables";
+    applyFilter();
   }
 
+  function rowHtml(it) {
+    if (it.isScope)
+      return `<div class="scope${folded.has(it.path) ? " collapsed" : ""}" data-scope="${esc(it.path)}" style="padding-left:${6 + 14 * it.depth}px">${esc(it.label)}</div>`;
+    const t = trends.get(it.path);
+    return `<div class="row var${forced.has(it.path) ? " forced" : ""}" data-path="${esc(it.path)}">` +
+      `<span class="name" style="padding-left:${6 + 14 * it.depth}px" title="${esc(it.path)}">${esc(it.label)}</span><span class="type">${esc(it.type)}</span>` +
+      `<span class="value">${values.has(it.path) ? esc(show(values.get(it.path))) : ""}</span>` +
+      `<span class="edit">${it.path === editing ? editorHtml(it.path) : '<button type="button" class="btn-edit" title="write or force">✎</button>'}</span>` +
+      `<span class="trend">${t ? `<span style="color:${t.color}">●</span>` : ""}</span></div>`;
+  }
+
+  let firstShown = -1, lastShown = -1;
+  function render(force) {
+    const body = $("vars-body");
+    body.style.height = shown.length * ROW + "px";
+    const top = body.getBoundingClientRect().top;
+    const first = Math.max(0, Math.floor(-top / ROW) - 20);
+    const last = Math.min(shown.length, Math.ceil((innerHeight - top) / ROW) + 20);
+    if (!force && first === firstShown && last === lastShown) return;
+    firstShown = first; lastShown = last;
+    const html = [];
+    for (let i = first; i < last; i++) html.push(rowHtml(shown[i]).replace(/^<div /, `<div style="top:${i * ROW}px" `));
+    body.innerHTML = html.join("");
+    rendered.clear();
+    for (const tr of body.querySelectorAll(".var"))
+      rendered.set(tr.dataset.path, { tr, value: tr.querySelector(".value"), edit: tr.querySelector(".edit"), trend: tr.querySelector(".trend") });
+    const input = body.querySelector(".edit-value");
+    if (input) { input.value = editText; input.addEventListener("input", () => (editText = input.value)); }
+  }
+  let renderQueued = false;
+  const queueRender = () => { if (!renderQueued) { renderQueued = true; requestAnimationFrame(() => { renderQueued = false; render(false); }); } };
+  addEventListener("scroll", queueRender, { passive: true });
+  addEventListener("resize", queueRender);
+
   $("vars-body").addEventListener("click", (e) => {
-    const scopeRow = e.target.closest("tr.scope");
-    if (scopeRow) { toggleScope(scopeRow); return; }
-    const tr = e.target.closest("tr.var");
+    const scopeRow = e.target.closest(".scope");
+    if (scopeRow) { toggleScope(scopeRow.dataset.scope); return; }
+    const tr = e.target.closest(".var");
     if (!tr) return;
     const path = tr.dataset.path;
-    if (e.target.classList.contains("btn-edit")) openEditor(tr, path);
+    if (e.target.classList.contains("btn-edit")) openEditor(path);
     else if (e.target.classList.contains("btn-write")) send("/api/write", path, tr);
     else if (e.target.classList.contains("btn-force")) send("/api/force", path, tr);
     else if (e.target.classList.contains("btn-release")) release(path);
     else if (e.target.classList.contains("btn-trend")) toggleTrend(path);
   });
   $("vars-body").addEventListener("keydown", (e) => {
-    if (e.key === "Enter" && e.target.classList.contains("edit-value")) send("/api/write", e.target.closest("tr").dataset.path, e.target.closest("tr"));
+    if (e.key === "Enter" && e.target.classList.contains("edit-value")) send("/api/write", e.target.closest(".var").dataset.path, e.target.closest(".var"));
   });
 
-  function toggleScope(tr) {
-    const scope = tr.dataset.scope;
-    const collapse = !tr.classList.contains("collapsed");
-    tr.classList.toggle("collapsed", collapse);
-    for (const row of $("vars-body").rows) {
-      if (row === tr) continue;
-      const s = row.dataset.scope || "";
-      if (s === scope || s.startsWith(scope + ".")) row.classList.toggle("folded", collapse);
-    }
+  function toggleScope(scope) {
+    if (folded.has(scope)) folded.delete(scope); else folded.add(scope);
     applyFilter();
   }
 
-  function openEditor(tr, path) {
-    const cell = tr.cells[3];
-    const current = values.has(path) ? show(values.get(path)) : "";
-    cell.innerHTML = `<input class="edit-value" value="${esc(current)}" aria-label="value for ${esc(path)}">` +
+  function editorHtml(path) {
+    return `<input class="edit-value" aria-label="value for ${esc(path)}">` +
       `<button type="button" class="btn-write" title="write once">W</button>` +
       `<button type="button" class="btn-force" title="force (hold)">F</button>` +
       `<button type="button" class="btn-release" title="release the force">U</button>` +
       `<button type="button" class="btn-trend" title="show in the trend plot">~</button>`;
-    cell.querySelector("input").focus();
+  }
+
+  function openEditor(path) {
+    editing = path;
+    editText = values.has(path) ? show(values.get(path)) : "";
+    render(true);
+    const input = $("vars-body").querySelector(".edit-value");
+    if (input) input.focus();
   }
 
   async function send(path, name, tr) {
@@ -163,8 +196,9 @@
     catch (err) { say(err.message, true); }
   }
 
+  // Marks the rows in the page; the others get their mark when they are drawn.
   function markForces() {
-    for (const [path, row] of rows) row.tr.classList.toggle("forced", forced.has(path));
+    for (const [path, r] of rendered) r.tr.classList.toggle("forced", forced.has(path));
   }
 
   // ---------------------------------------------------------------- filter
@@ -172,22 +206,26 @@
     const text = $("filter").value.trim().toLowerCase();
     let re = null;
     if (text.includes("*")) re = new RegExp("^" + text.split("*").map((s) => s.replace(/[.+?^${}()|[\]\\]/g, "\\$&")).join(".*") + "$");
-    const visibleScopes = new Set();
-    let shown = 0;
-    for (const [path, row] of rows) {
-      const p = path.toLowerCase();
-      const match = !text || (re ? re.test(p) : p.includes(text));
-      const hide = !match || row.tr.classList.contains("folded");
-      row.tr.hidden = hide;
-      if (match) {
-        shown++;
-        const sp = parts(row.scope);
-        for (let i = 1; i <= sp.length; i++) visibleScopes.add(sp.slice(0, i).join("."));
-      }
+    const matchingScopes = new Set();
+    let count = 0;
+    const match = new Set();
+    for (const it of items) {
+      if (it.isScope) continue;
+      const p = it.path.toLowerCase();
+      if (text && !(re ? re.test(p) : p.includes(text))) continue;
+      match.add(it);
+      count++;
+      const sp = parts(it.scope);
+      for (let i = 1; i <= sp.length; i++) matchingScopes.add(sp.slice(0, i).join("."));
     }
-    for (const tr of $("vars-body").querySelectorAll("tr.scope"))
-      tr.hidden = !visibleScopes.has(tr.dataset.scope) || tr.classList.contains("folded");
-    $("var-count").textContent = (text ? shown + " of " : "") + rows.size + " variables";
+    const isFolded = (scopePath, self) => {
+      const sp = parts(scopePath);
+      for (let i = 1; i <= sp.length - (self ? 1 : 0); i++) if (folded.has(sp.slice(0, i).join("."))) return true;
+      return false;
+    };
+    shown = items.filter((it) => (it.isScope ? matchingScopes.has(it.path) && !isFolded(it.path, true) : match.has(it) && !isFolded(it.scope, false)));
+    $("var-count").textContent = (text ? count + " of " : "") + rows.size + " variables";
+    render(true);
   }
   let filterTimer = 0;
   $("filter").addEventListener("input", () => { clearTimeout(filterTimer); filterTimer = setTimeout(applyFilter, 150); });
@@ -209,7 +247,7 @@
     queueValues.frame = 0;
     for (const [path, value] of pending) {
       values.set(path, value);
-      const row = rows.get(path);
+      const row = rendered.get(path);
       if (row) row.value.textContent = show(value);
     }
     pending.clear();
@@ -218,7 +256,9 @@
   async function streamEvents() {
     while (!ended) {
       try {
-        const res = await fetch("/api/events?every=200ms", { headers: headers(false) });
+        // Large projects get fewer, larger events: parsing dominates then.
+        const every = rows.size > 2000 ? "500ms" : "200ms";
+        const res = await fetch("/api/events?every=" + every, { headers: headers(false) });
         if (!res.ok || !res.body) throw new Error("events: " + res.status);
         $("connection").textContent = "live";
         const reader = res.body.getReader();
@@ -260,7 +300,7 @@
     $("plc-time").textContent = s.time;
     $("plc-cycle").textContent = s.cycle;
     lastTimeNs = Math.max(lastTimeNs, parseTime(s.time));
-    forced = new Set(Object.keys(s.forces).map((k) => (rows.has(k) ? k : k)));
+    forced = new Set(Object.keys(s.forces));
     markForces();
     const list = $("forces");
     list.innerHTML = Object.entries(s.forces).map(([k, v]) => `<li>${esc(k)} = ${esc(show(v))}<button type="button" data-name="${esc(k)}">release</button></li>`).join("") || "<li><i>none</i></li>";
@@ -337,14 +377,14 @@
 
   // ---------------------------------------------------------------- trend
   function toggleTrend(path) {
-    const row = rows.get(path);
-    if (trends.has(path)) { trends.delete(path); row.tr.cells[4].textContent = ""; }
+    const row = rendered.get(path);
+    if (trends.has(path)) { trends.delete(path); if (row) row.trend.textContent = ""; }
     else {
       const color = palette[trends.size % palette.length];
       const v = values.get(path);
       const n = v === true ? 1 : v === false ? 0 : typeof v === "number" ? v : parseFloat(v);
       trends.set(path, { color, points: Number.isNaN(n) ? [] : [[lastTimeNs, n]] });
-      row.tr.cells[4].innerHTML = `<span style="color:${color}">●</span>`;
+      if (row) row.trend.innerHTML = `<span style="color:${color}">●</span>`;
     }
     $("trend-legend").innerHTML = [...trends].map(([p, t]) => `<span style="color:${t.color}">● ${esc(p)}</span>`).join("");
   }

@@ -68,7 +68,7 @@ async function waitFor(what, predicate, timeout = 15000) {
     await page.goto(url, { waitUntil: "load" });
 
     // The instances are expanded: elementary values are in the page without a click.
-    const cell = 'tr[data-path="Main.counter"] td.value';
+    const cell = '.var[data-path="Main.counter"] .value';
     await page.waitForSelector(cell);
     const first = await waitFor(() => page.$eval(cell, (td) => td.textContent), (t) => t !== "");
     await waitFor(() => page.$eval(cell, (td) => td.textContent), (t) => t !== "" && Number(t) > Number(first));
@@ -76,18 +76,18 @@ async function waitFor(what, predicate, timeout = 15000) {
     if (state !== "RUN") fail("state " + state);
 
     // Force Main.x through the page: the editor of its row, value 42, F.
-    await page.click('tr[data-path="Main.x"] .btn-edit');
-    await page.waitForSelector('tr[data-path="Main.x"] .edit-value');
-    await page.$eval('tr[data-path="Main.x"] .edit-value', (i) => { i.value = ""; });
-    await page.type('tr[data-path="Main.x"] .edit-value', "42");
-    await page.click('tr[data-path="Main.x"] .btn-force');
+    await page.click('.var[data-path="Main.x"] .btn-edit');
+    await page.waitForSelector('.var[data-path="Main.x"] .edit-value');
+    await page.$eval('.var[data-path="Main.x"] .edit-value', (i) => { i.value = ""; });
+    await page.type('.var[data-path="Main.x"] .edit-value', "42");
+    await page.click('.var[data-path="Main.x"] .btn-force');
     const st = await waitFor(() => api(url, "/api/state"), (s) => s.forces["Main.x"] === 42);
     const before = st.tasks[0].cycles;
     await waitFor(() => api(url, "/api/state"), (s) => s.tasks[0].cycles > before + 5);
     const held = await api(url, "/api/vars?watch=Main.x&watch=Main.mirror");
     if (held.values["Main.x"] !== 42 || held.values["Main.mirror"] !== 43) fail("the force did not hold: " + JSON.stringify(held));
-    await page.waitForSelector('tr[data-path="Main.x"].forced');
-    await waitFor(() => page.$eval('tr[data-path="Main.x"] td.value', (td) => td.textContent), (t) => t === "42");
+    await page.waitForSelector('.var[data-path="Main.x"].forced');
+    await waitFor(() => page.$eval('.var[data-path="Main.x"] .value', (td) => td.textContent), (t) => t === "42");
 
     // Pause, then step one cycle from the page: the cycle counter advances by one.
     await page.click("#btn-pause");
@@ -105,17 +105,17 @@ async function waitFor(what, predicate, timeout = 15000) {
 
     // The filter box.
     await page.type("#filter", "valve");
-    await waitFor(() => page.$eval('tr[data-path="Main.counter"]', (tr) => tr.hidden), (h) => h === true);
-    if (await page.$eval('tr[data-path="Main.valve.cmd"]', (tr) => tr.hidden)) fail("the filter hid a match");
+    await waitFor(() => page.$('.var[data-path="Main.counter"]'), (e) => e === null);
+    if (!(await page.$('.var[data-path="Main.valve.cmd"]'))) fail("the filter hid a match");
     await page.$eval("#filter", (i) => { i.value = ""; i.dispatchEvent(new Event("input")); });
-    await waitFor(() => page.$eval('tr[data-path="Main.counter"]', (tr) => tr.hidden), (h) => h === false);
+    await waitFor(() => page.$('.var[data-path="Main.counter"]'), (e) => e !== null);
 
     if (screenshot) {
       await api(url, "/api/resume", {});
-      await page.click('tr[data-path="Main.counter"] .btn-edit');
-      await page.click('tr[data-path="Main.counter"] .btn-trend');
-      await page.click('tr[data-path="Main.word"] .btn-edit');
-      await page.click('tr[data-path="Main.word"] .btn-trend');
+      await page.click('.var[data-path="Main.counter"] .btn-edit');
+      await page.click('.var[data-path="Main.counter"] .btn-trend');
+      await page.click('.var[data-path="Main.word"] .btn-edit');
+      await page.click('.var[data-path="Main.word"] .btn-trend');
       await sleep(2500);
       await page.screenshot({ path: screenshot });
     }

@@ -86,9 +86,11 @@ TEST_CASE("a snapshot is one consistent state, never two activations mixed") {
     REQUIRE((a && b && c && d));
     std::atomic<bool> done{false};
     std::atomic<uint64_t> checked{0}, mixed{0};
+    std::atomic<bool> started{false};
     std::thread reader([&] {
         uint64_t seen = 0;
-        while (!done.load()) {
+        started.store(true);
+        while (!done.load() || checked.load() == 0) {
             run.control->waitForSnapshot(seen, std::chrono::milliseconds(5));
             auto snap = run.control->latest();
             seen = snap->sequence;
@@ -98,22 +100,19 @@ TEST_CASE("a snapshot is one consistent state, never two activations mixed") {
             ++checked;
         }
     });
-    run.run(60, "Slow");
+    while (!started.load()) std::this_thread::yield();
+    run.run(600, "Slow");
     done.store(true);
     reader.join();
     CHECK(mixed.load() == 0);
     CHECK(checked.load() > 0);
     CHECK(run.control->latest()->ended);
-    CHECK(run.value("S.c") == 60);
-    CHECK(run.value("S.d") == 60);
-    // The timeline saw Slow preempted by Fast: a Fast start between a Slow start and its end.
-    bool preempted = false;
-    bool slowRunning = false;
-    for (const live::TimelineEvent& e : run.control->timeline(0)) {
-        if (e.task == 1) slowRunning = e.running;
-        if (e.task == 0 && e.running && slowRunning) preempted = true;
-    }
-    CHECK(preempted);
+    CHECK(run.value("S.c") == 600);
+    CHECK(run.value("S.d") == 600);
+    // The timeline saw Slow preempted by Fast: Slow resumed more often than it started.
+    uint64_t slowRuns = 0;
+    for (const live::TimelineEvent& e : run.control->timeline(0)) slowRuns += e.task == 1 && e.running;
+    CHECK(slowRuns > 600);
 }
 
 TEST_CASE("forces hold at activation boundaries; writes land once") {

@@ -29,11 +29,16 @@ const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
     const page = await browser.newPage();
     await page.setViewport({ width: 1400, height: 1050 });
     await page.goto(url, { waitUntil: "load" });
-    await page.waitForSelector('tr[data-path="gLevel"] .btn-edit');
-    await page.click('tr[data-path="gLevel"] .btn-edit');
-    await page.click('tr[data-path="gLevel"] .btn-trend');
-    await page.click('tr[data-path="Trend.maxLevel"] .btn-edit');
-    await page.click('tr[data-path="Trend.maxLevel"] .btn-trend');
+    // Rows far down the list are drawn once scrolled to: pick them through the filter.
+    for (const path of ["gLevel", "Trend.maxLevel"]) {
+      await page.$eval("#filter", (i, p) => { i.value = p; i.dispatchEvent(new Event("input")); }, path);
+      await sleep(500);  // the filter applies 150 ms after the last key
+      await page.waitForSelector(`.var[data-path="${path}"] .btn-edit`);
+      await page.click(`.var[data-path="${path}"] .btn-edit`);
+      await page.waitForSelector(`.var[data-path="${path}"] .btn-trend`);
+      await page.click(`.var[data-path="${path}"] .btn-trend`);
+    }
+    await page.$eval("#filter", (i) => { i.value = ""; i.dispatchEvent(new Event("input")); });
     await sleep(7000);
     await page.evaluate(() => { document.activeElement.blur(); window.scrollTo(0, 0); });
     await sleep(300);
