@@ -13,6 +13,7 @@
 #include "cli/run_report.h"
 #include "cli/stimulus_args.h"
 #include "editors/dap/debug_values.h"
+#include "live/control_plane.h"
 #include "interpreter/project/compile.h"
 #include "interpreter/project/literal_value.h"
 #include "interpreter/source/project_inputs.h"
@@ -118,7 +119,9 @@ int DapServer::run() {
             return 0;
         }
         respond(message, ok, std::move(body), error);
-        if (command == "launch" && ok) event("initialized", nullptr);
+        // Ready for configuration requests as soon as initialize is answered;
+        // breakpoints set before `launch` are verified when it has compiled the project.
+        if (command == "initialize" && ok) event("initialized", nullptr);
         if (command == "launch" && !ok) event("terminated", nullptr);
         if ((command == "configurationDone" || command == "launch") && ok && launched_ && configured_ && !runThread_.joinable()) startRun();
     }
@@ -172,6 +175,12 @@ json DapServer::dispatch(const std::string& command, const json& args, bool& ok,
     if (command == "setVariable") return setVariable(args, ok, error);
     if (command == "exceptionInfo") {
         return {{"exceptionId", "runtime-fault"}, {"description", "runtime fault"}, {"breakMode", "always"}};
+    }
+    if (command == "continue" && session_ && !session_->stopped() && live_ && live_->control().paused()) {
+        // A run started with --paused (or paused between activations by
+        // another live front end) resumes through the control plane.
+        live_->control().resume();
+        return {{"allThreadsContinued", true}};
     }
     if (command == "continue" || command == "next" || command == "stepIn" || command == "stepOut") {
         if (!needStopped()) return nullptr;

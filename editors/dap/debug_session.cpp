@@ -45,6 +45,7 @@ void DebugSession::resume(StepMode mode) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!stopped_) return;
     step_ = mode;
+    stepping_ = mode != StepMode::None;
     stepTask_ = stoppedTask_;
     const int task = stoppedTask_;
     stepDepth_ = task >= 0 && !tracks_[static_cast<size_t>(task)].frames.empty() ? tracks_[static_cast<size_t>(task)].frames.size() - 1 : 0;
@@ -134,7 +135,7 @@ void DebugSession::observe(int task, const exec::Ctx& c) {
     track.lastLine = line;
     if (entryPending_.exchange(false)) return stopHere(task, "entry", "", {});
     if (pauseRequested_.exchange(false)) return stopHere(task, "pause", "", {});
-    {
+    if (stepping_) {
         std::unique_lock<std::mutex> lock(mutex_);
         if (step_ != StepMode::None && stepTask_ == task) {
             const bool arrived = step_ == StepMode::In || (step_ == StepMode::Over && depth <= stepDepth_) ||
@@ -188,6 +189,7 @@ void DebugSession::stopHere(int task, const std::string& reason, const std::stri
     std::unique_lock<std::mutex> lock(mutex_);
     if (terminating_) return;
     step_ = StepMode::None;
+    stepping_ = false;
     pauseRequested_ = false;
     entryPending_ = false;
     stoppedTask_ = task;

