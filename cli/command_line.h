@@ -32,6 +32,7 @@ struct CommandLine {
     std::vector<std::string> stimulusFiles;  // --stimulus FILE
     std::string vcdFile;                     // --vcd FILE
     std::vector<std::string> watches;        // --watch PATTERN
+    bool vcdText = false;                    // --vcd-text: enumerations by name, STRINGs as text
     std::string retainFile;                  // --retain FILE
     bool cold = false;                       // --cold
     std::optional<int64_t> retainEvery;      // --retain-every, ns

@@ -113,6 +113,7 @@ CLI::App* addRunCommand(CLI::App& app, CommandLine& line) {
     run->add_option("--watch", line.watches, "the variables --vcd records, by path with * wildcards (repeatable; default: all)")
         ->type_name("PATTERN")
         ->allow_extra_args(false);
+    run->add_flag("--vcd-text", line.vcdText, "--vcd records enumerations by their value names and STRINGs as text (string signals)");
     run->add_option("--stimulus", line.stimulusFiles, "a CSV file of TIME,NAME,VALUE lines: many --set at once")
         ->check(readableFileValidator())
         ->type_name("FILE")
@@ -134,6 +135,7 @@ int runCommand(const CommandLine& line) {
     std::string error;
     if (!buildRunOptions(line, run, error)) return usage(error);
     if (!line.watches.empty() && line.vcdFile.empty()) return usage("--watch selects what --vcd records: give --vcd FILE too");
+    if (line.vcdText && line.vcdFile.empty()) return usage("--vcd-text changes what --vcd records: give --vcd FILE too");
 
     Compiled compiled;
     compileCommandLine(line, compiled);
@@ -176,7 +178,8 @@ int runCommand(const CommandLine& line) {
         // --watch 'task:PATTERN' / '!task:PATTERN' choose the task waveforms (decision 0241).
         std::vector<bool> taskWaveforms = project::vcdTaskSelection(taskNames, line.watches, variablePatterns, unmatched);
         std::vector<rt::VcdSignal> signals;  // --watch with task patterns only: no variable
-        if (line.watches.empty() || !variablePatterns.empty()) signals = project::vcdSignals(model, variablePatterns, unmatched);
+        if (line.watches.empty() || !variablePatterns.empty())
+            signals = project::vcdSignals(model, variablePatterns, unmatched, line.vcdText);
         for (const std::string& pattern : unmatched) {
             // A plain path gets the resolver's reason, with its "did you mean".
             std::string why;

@@ -13,9 +13,11 @@
 
 namespace strun::project {
 
-// `unmatched` gets the patterns that match no recordable variable.
+// `unmatched` gets the patterns that match no recordable variable. `text`
+// (--vcd-text): STRING variables are recorded as text and enumerations by
+// their value names, as VCD string signals (decision 0241).
 std::vector<rt::VcdSignal> vcdSignals(const sema::ProgramModel& model, const std::vector<std::string>& patterns,
-                                      std::vector<std::string>& unmatched);
+                                      std::vector<std::string>& unmatched, bool text = false);
 
 // Which tasks get a running/idle waveform: every task (the contract's
 // timeline), or, when a --watch is `task:PATTERN`, only the tasks such
