@@ -33,6 +33,7 @@ struct CommandLine {
     std::vector<std::string> stimulusFiles;  // --stimulus FILE
     std::string vcdFile;                     // --vcd FILE
     std::vector<std::string> watches;        // --watch PATTERN
+    bool vcdText = false;                    // --vcd-text: enumerations by name, STRINGs as text
     std::string retainFile;                  // --retain FILE
     std::string filesDir;                    // --files DIR: the sandbox of the PLC's file blocks
     bool cold = false;                       // --cold

@@ -147,6 +147,7 @@ CLI::App* addRunCommand(CLI::App& app, CommandLine& line) {
     run->add_option("--watch", line.watches, "the variables --vcd records, by path with * wildcards (repeatable; default: all)")
         ->type_name("PATTERN")
         ->allow_extra_args(false);
+    run->add_flag("--vcd-text", line.vcdText, "--vcd records enumerations by their value names and STRINGs as text (string signals)");
     run->add_option("--stimulus", line.stimulusFiles, "a CSV file of TIME,NAME,VALUE lines: many --set at once")
         ->check(readableFileValidator())
         ->type_name("FILE")
@@ -176,6 +177,7 @@ int runCommand(const CommandLine& line) {
     ModbusSetup modbusSetup;  // --modbus, --modbus-client (cli/modbus_options.h)
     if (!prepareModbus(line, modbusSetup, error)) return usage(error);
     if (!line.watches.empty() && line.vcdFile.empty()) return usage("--watch selects what --vcd records: give --vcd FILE too");
+    if (line.vcdText && line.vcdFile.empty()) return usage("--vcd-text changes what --vcd records: give --vcd FILE too");
 
     Compiled compiled;
     compileCommandLine(line, compiled);
@@ -243,7 +245,7 @@ int runCommand(const CommandLine& line) {
         std::vector<rt::VcdSignal> signals;  // --watch with task patterns only: no variable
         bool truncated = false;
         if (line.watches.empty() || !variablePatterns.empty())
-            signals = project::vcdSignals(model, variablePatterns, unmatched, truncated);
+            signals = project::vcdSignals(model, variablePatterns, unmatched, truncated, line.vcdText);
         if (truncated)
             std::cerr << "strun: warning: --vcd: more than " << project::kMaxVcdSignals
                       << " variables to record; the first ones are recorded (--watch picks which)\n";

@@ -81,6 +81,8 @@ VcdRecorder::VcdRecorder(std::FILE* out, const std::vector<std::string>& taskNam
             case VcdSignal::Kind::Vector: decl = "$var wire " + std::to_string(s.width) + " "; break;
             case VcdSignal::Kind::Real32:
             case VcdSignal::Kind::Real64: decl = "$var real 64 "; break;
+            case VcdSignal::Kind::EnumName:
+            case VcdSignal::Kind::Text: decl = "$var string 1 "; break;
         }
         scope->vars.push_back(decl + signalIds_.back() + " " + reference(s.name) + " $end\n");
         for (size_t t = 0; t < byTask_.size(); ++t)
@@ -116,6 +118,13 @@ uint64_t VcdRecorder::read(const VcdSignal& s) const {
             std::memcpy(&bits, s.addr, 8);
             return bits;
         }
+        case VcdSignal::Kind::Text: {
+            // A change of the characters is a change of this hash (FNV-1a up to the NUL).
+            uint64_t h = 1469598103934665603ull;
+            for (uint32_t i = 0; i < s.size && s.addr[i] != 0; ++i) h = (h ^ s.addr[i]) * 1099511628211ull;
+            return h;
+        }
+        case VcdSignal::Kind::EnumName:
         case VcdSignal::Kind::Vector: break;
     }
     uint64_t raw = 0;
@@ -149,6 +158,36 @@ void VcdRecorder::writeValue(const VcdSignal& s, uint64_t value, const std::stri
                 r = std::to_chars(text + 1, text + sizeof text - 1, d);
             }
             buffer_.append(text, r.ptr);
+            buffer_ += ' ';
+            break;
+        }
+        case VcdSignal::Kind::EnumName: {
+            buffer_ += 's';
+            bool named = false;
+            for (const auto& [v, name] : s.names)
+                if (uint64_t(v) == value) {
+                    buffer_ += name;
+                    named = true;
+                    break;
+                }
+            if (!named) buffer_ += std::to_string(int64_t(value));  // a value without a name
+            buffer_ += ' ';
+            break;
+        }
+        case VcdSignal::Kind::Text: {
+            // VCD values are blank-separated tokens: blanks, controls and '\\' as \xNN.
+            buffer_ += 's';
+            for (uint32_t i = 0; i < s.size && s.addr[i] != 0; ++i) {
+                unsigned char c = s.addr[i];
+                if (c <= ' ' || c == '\\' || c == 0x7f) {
+                    static const char hex[] = "0123456789ABCDEF";
+                    buffer_ += "\\x";
+                    buffer_ += hex[c >> 4];
+                    buffer_ += hex[c & 15];
+                } else {
+                    buffer_ += char(c);
+                }
+            }
             buffer_ += ' ';
             break;
         }

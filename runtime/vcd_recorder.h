@@ -19,7 +19,9 @@
 namespace strun::rt {
 
 struct VcdSignal {
-    enum class Kind : uint8_t { Bit, Vector, Real32, Real64 };
+    // EnumName / Text (--vcd-text): string signals GTKWave shows as text: an
+    // enumeration's value name, a STRING's characters.
+    enum class Kind : uint8_t { Bit, Vector, Real32, Real64, EnumName, Text };
     std::shared_ptr<const std::vector<std::string>> scopes;  // enclosing scopes, outermost first ("Main", "valve"); shared by the elements of an array
     std::string name;                 // the leaf ("cmd", "levels(3)")
     Kind kind = Kind::Vector;
@@ -29,6 +31,7 @@ struct VcdSignal {
     int width = 8;           // Vector: bits written
     bool isSigned = false;   // Vector: sign-extend before scaling
     int64_t scale = 1;       // Vector: written value = stored value * scale (TIME ms -> ns)
+    std::vector<std::pair<int64_t, std::string>> names;  // EnumName: value -> name (size, isSigned as Vector)
     int task = -1;           // owning task index; -1: sampled at the end of every task's activations; -2: never (no task runs it)
 };
 

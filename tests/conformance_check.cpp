@@ -330,7 +330,7 @@ VcdChanges parseVcd(const std::string& text) {
         }
         if (now < 0) return out.error = "a value before the first #time", out;
         std::string value, id;
-        if (word[0] == 'b' || word[0] == 'r') {
+        if (word[0] == 'b' || word[0] == 'r' || word[0] == 's') {
             value = word;
             in >> id;
         } else {

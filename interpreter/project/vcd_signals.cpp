@@ -35,10 +35,21 @@ bool matchesPattern(std::string_view pattern, std::string_view text) {
 
 namespace {
 
-// How a type is drawn; false for what is not recorded (strings).
-bool encode(const sema::Type* t, rt::VcdSignal& s) {
+// How a type is drawn; false for what is not recorded (strings, unless
+// `text`: then STRINGs as text and enumerations by their value names).
+bool encode(const sema::Type* t, rt::VcdSignal& s, bool text) {
     TK k = t->kind;
     s.size = t->size;
+    if (text && k == TK::String) {
+        s.kind = rt::VcdSignal::Kind::Text;
+        return true;
+    }
+    if (text && k == TK::Enum) {
+        s.kind = rt::VcdSignal::Kind::EnumName;
+        s.isSigned = t->base && sema::isSignedInt(t->base->kind);
+        for (const auto& e : t->enumerators) s.names.emplace_back(e.value, e.name);
+        return true;
+    }
     if (k == TK::Bool) {
         s.kind = rt::VcdSignal::Kind::Bit;
         return true;
@@ -79,7 +90,7 @@ std::string leafName(std::string name) {
 }  // namespace
 
 std::vector<rt::VcdSignal> vcdSignals(const sema::ProgramModel& model, const std::vector<std::string>& patterns,
-                                      std::vector<std::string>& unmatched, bool& truncated) {
+                                      std::vector<std::string>& unmatched, bool& truncated, bool text) {
     std::map<const sema::ProgramInstance*, int> taskOf;
     for (size_t i = 0; i < model.tasks.size(); ++i)
         for (const auto& call : model.tasks[i].calls)
@@ -92,7 +103,7 @@ std::vector<rt::VcdSignal> vcdSignals(const sema::ProgramModel& model, const std
     truncated = false;
     forEachElementary(model, [&](const ElementaryVar& v) {
         rt::VcdSignal s;
-        if (!encode(v.ref.type, s)) return true;
+        if (!encode(v.ref.type, s, text)) return true;
         if (!patterns.empty()) {
             bool any = false;
             for (size_t i = 0; i < patterns.size(); ++i)

@@ -18,9 +18,11 @@ namespace strun::project {
 inline constexpr size_t kMaxVcdSignals = 100000;
 
 // `unmatched` gets the patterns that match no recordable variable;
-// `truncated` is set when more than kMaxVcdSignals would be recorded.
+// `truncated` is set when more than kMaxVcdSignals would be recorded. `text`
+// (--vcd-text): STRING variables are recorded as text and enumerations by
+// their value names, as VCD string signals (decision 0241).
 std::vector<rt::VcdSignal> vcdSignals(const sema::ProgramModel& model, const std::vector<std::string>& patterns,
-                                      std::vector<std::string>& unmatched, bool& truncated);
+                                      std::vector<std::string>& unmatched, bool& truncated, bool text = false);
 
 // Which tasks get a running/idle waveform: every task (the contract's
 // timeline), or, when a --watch is `task:PATTERN`, only the tasks such
