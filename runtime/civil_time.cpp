@@ -42,6 +42,10 @@ int64_t dayOf(int64_t calendarNanos) {
     return day;
 }
 
-int64_t nanosOfDay(int64_t calendarNanos) { return calendarNanos - dayOf(calendarNanos) * kNanosPerDay; }
+// From the remainder: day * kNanosPerDay overflows for the first day of the range (1677-09-21).
+int64_t nanosOfDay(int64_t calendarNanos) {
+    const int64_t rest = calendarNanos % kNanosPerDay;
+    return rest < 0 ? rest + kNanosPerDay : rest;
+}
 
 }  // namespace strun::rt

@@ -62,6 +62,30 @@ grep -q "more than 100000 variables to record" "$WORK/err" || fail "no --vcd bou
 [ -s "$WORK/err" ] && fail "--watch of one element warned: $(cat "$WORK/err")"
 grep -q ' a(199999) \$end' "$WORK/one.vcd" || fail "--watch did not pick the element: $(head -20 "$WORK/one.vcd")"
 
+# Time-event tasks whose AT is at the ends of the 64-bit calendar: a DAILY one
+# from 1677 fires every day of the run (its occurrences were computed with
+# overflowing arithmetic: never), one in 2262 never within the run.
+cat > "$WORK/events.st" <<'ST'
+PROGRAM Count
+VAR n : INT; END_VAR
+n := n + 1;
+END_PROGRAM
+CONFIGURATION Plant
+    RESOURCE Cpu ON PLC
+        TASK Old (AT := LDT#1677-09-22-00:00:01, REPEAT := DAILY, PRIORITY := 5);
+        TASK OldMonth (AT := LDT#1677-09-22-00:00:01, REPEAT := MONTHLY, PRIORITY := 6);
+        TASK Late (AT := LDT#2262-04-10-23:47:16, REPEAT := HOURLY, PRIORITY := 7);
+        PROGRAM D WITH Old : Count;
+        PROGRAM M WITH OldMonth : Count;
+        PROGRAM L WITH Late : Count;
+    END_RESOURCE
+END_CONFIGURATION
+ST
+out=$("$STRUN" run --virtual --start DT#2026-01-01-00:00:00 --for 3d --dump "$WORK/events.st" 2>"$WORK/err") || fail "time events at the calendar's ends: $(cat "$WORK/err")"
+[ "$(tr -d ' \n' <<<"$out" | grep -o '"D":{"n":[0-9]*}')" = '"D":{"n":3}' ] || fail "DAILY from 1677: $out"
+[ "$(tr -d ' \n' <<<"$out" | grep -o '"M":{"n":[0-9]*}')" = '"M":{"n":0}' ] || fail "MONTHLY from 1677: $out"
+[ "$(tr -d ' \n' <<<"$out" | grep -o '"L":{"n":[0-9]*}')" = '"L":{"n":0}' ] || fail "HOURLY in 2262: $out"
+
 # STRING_TO_DCTIME64 at the end of the 64-bit calendar: the exact ULINT, no wrap; before 2000: 0.
 cat > "$WORK/dc.st" <<'ST'
 PROGRAM Main
