@@ -46,18 +46,18 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
         return false;
     }
     bool sawNamed = false;
-    for (const auto& a : call.args) {
+    for (size_t k = 0; k < call.args.size(); ++k) {
+        const ast::Arg& a = call.args[k];
         VarSym* param = nullptr;
         if (a.name.empty() && sawNamed) {
-            // CODESYS/TwinCAT: a positional argument after named ones takes the
-            // first input not given yet, in declaration order (decision 0091).
-            for (VarSym* p : inputsInOrder)
-                if (!seen.count(p)) { param = p; break; }
-            if (!param) {
+            // CODESYS/TwinCAT: a positional argument after named ones binds by
+            // its position in the call (`F(a := 1, b := 2, 3)`: c), decision 0204.
+            if (k >= inputsInOrder.size()) {
                 ck.error(a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
                 ok = false;
                 continue;
             }
+            param = inputsInOrder[k];
         } else if (a.name.empty()) {
             if (positional >= inputsInOrder.size()) {
                 ck.error(a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));

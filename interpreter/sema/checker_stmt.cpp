@@ -252,7 +252,7 @@ exec::Stmt* Checker::checkFor(const ast::Stmt& s) {
     varExpr.kind = ast::ExprKind::Name;
     varExpr.name = s.name;
     varExpr.loc = s.nameLoc.line ? s.nameLoc : s.loc;
-    Checked var = checkExpr(varExpr);
+    Checked var = checkExpr(s.target ? *s.target : varExpr);  // `FOR a[1] := ...`: a place (TwinCAT)
     Checked from = checkExpr(*s.from);
     Checked to = checkExpr(*s.to);
     Checked by;
