@@ -1122,9 +1122,7 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
     const bool intToEnum = target->kind == TK::Enum && (isInteger(from->kind) || isBitString(from->kind));
     if (enumToInt || intToEnum) {
         const Type* en = enumToInt ? from : target;
-        // {attribute 'strict'} forbids integer -> enumeration; the enumeration's
-        // value still converts to an integer as any enumeration's (decision 0207).
-        if (en->strictEnum && intToEnum) {
+        if (en->strictEnum) {
             error(loc, fmt::format("{}: cannot convert {} to {} implicitly; '{}' has {{attribute 'strict'}}", what, typeName(from),
                                    typeName(target), en->name));
             return bad(loc);
