@@ -105,7 +105,8 @@ std::string FriendlyErrorStrategy::message(antlr4::Parser* parser, antlr4::Token
     // missing ')' is news, ':=' is not.
     const bool parenthesised = expected.contains(static_cast<size_t>(L::RPAREN)) && !expected.contains(static_cast<size_t>(L::ARROW));
     for (size_t type : expected.toList()) {
-        if (parenthesised && type == static_cast<size_t>(L::ASSIGN)) continue;
+        // Nor after `b := 1` (a chained `b := 1 := ...` is not what is missing).
+        if ((parenthesised || expected.contains(static_cast<size_t>(L::SEMI))) && type == static_cast<size_t>(L::ASSIGN)) continue;
         std::string name = describeTokenType(type, vocabulary);
         if (std::find(names.begin(), names.end(), name) != names.end()) continue;
         names.push_back(name);
