@@ -81,6 +81,10 @@ pouDecl
         headerEnd=SEMI? elements+=pouElement* (body=pouBody members+=memberDecl*)? end=END_FUNCTION_BLOCK              # functionBlockDecl
     | INTERFACE modifiers+=modifier* name=identifier (EXTENDS bases+=qualifiedName (COMMA bases+=qualifiedName)*)?
         headerEnd=SEMI? members+=memberDecl* end=END_INTERFACE                                                         # interfaceDecl
+    // IEC 61131-3 Ed.3 / SIMATIC AX: a CLASS is a function block without a body.
+    | CLASS modifiers+=modifier* name=identifier
+        (EXTENDS base=qualifiedName)? (IMPLEMENTS interfaces+=qualifiedName (COMMA interfaces+=qualifiedName)*)?
+        headerEnd=SEMI? elements+=pouElement* end=END_CLASS                                            # classDecl
     ;
 
 pouElement
@@ -207,6 +211,7 @@ varSection
 
 varQualifier
     : CONSTANT | RETAIN | NON_RETAIN | PERSISTENT
+    | PUBLIC | PRIVATE | PROTECTED | INTERNAL   // Ed.3 `VAR PUBLIC` in a CLASS (decision 0209)
     ;
 
 // `a, b AT %IX0.0 : INT := 5;` — also the looser form of VAR_CONFIG

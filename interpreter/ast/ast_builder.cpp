@@ -181,6 +181,16 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
         if (fb->body) statements(fb->body->statements, out->body);
         for (auto* m : fb->members) member(m, *out, false);
         out->endLoc = loc(fb->end ? fb->end : c->getStop());
+    } else if (auto* cls = exactly<P::ClassDeclContext>(c)) {
+        // IEC 61131-3 Ed.3 CLASS: a function block without a body of its own (decision 0209).
+        out->kind = PouKind::FunctionBlock;
+        out->name = text(cls->name);
+        out->nameLoc = loc(cls->name);
+        modifiers(cls->modifiers, out->access, out->abstract, out->final);
+        if (cls->base) out->extends = text(cls->base);
+        for (auto* i : cls->interfaces) out->implements.push_back(text(i));
+        addElements(cls->elements);
+        out->endLoc = loc(cls->end ? cls->end : c->getStop());
     } else if (auto* itf = exactly<P::InterfaceDeclContext>(c)) {
         out->kind = PouKind::Interface;
         out->name = text(itf->name);

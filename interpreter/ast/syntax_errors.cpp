@@ -174,6 +174,7 @@ size_t closingKeyword(antlr4::ParserRuleContext* c) {
     if (dynamic_cast<P::FunctionDeclContext*>(c)) return L::END_FUNCTION;
     if (dynamic_cast<P::FunctionBlockDeclContext*>(c)) return L::END_FUNCTION_BLOCK;
     if (dynamic_cast<P::InterfaceDeclContext*>(c)) return L::END_INTERFACE;
+    if (dynamic_cast<P::ClassDeclContext*>(c)) return L::END_CLASS;
     if (dynamic_cast<P::MethodDeclContext*>(c)) return L::END_METHOD;
     if (dynamic_cast<P::ActionDeclContext*>(c)) return L::END_ACTION;
     if (dynamic_cast<P::PropertyDeclContext*>(c)) return L::END_PROPERTY;
