@@ -39,6 +39,8 @@ tokens {
     END_INTERFACE,
     NAMESPACE,
     END_NAMESPACE,
+    CLASS,
+    END_CLASS,
     USING,
     TYPE,
     END_TYPE,

@@ -74,13 +74,17 @@ usingDirective
 // ================================================================= POUs
 
 pouDecl
-    : PROGRAM name=identifier elements+=pouElement* (body=pouBody members+=memberDecl*)? end=END_PROGRAM   # programDecl
-    | FUNCTION name=identifier (COLON result=returnType)? vars+=varBlock* body=stmtList end=END_FUNCTION # functionDecl
+    : PROGRAM modifiers+=modifier* name=identifier headerEnd=SEMI? elements+=pouElement* (body=pouBody members+=memberDecl*)? end=END_PROGRAM   # programDecl
+    | FUNCTION modifiers+=modifier* name=identifier (COLON result=returnType)? headerEnd=SEMI? vars+=varBlock* body=stmtList end=END_FUNCTION # functionDecl
     | FUNCTION_BLOCK modifiers+=modifier* name=identifier
         (EXTENDS base=qualifiedName)? (IMPLEMENTS interfaces+=qualifiedName (COMMA interfaces+=qualifiedName)*)?
-        elements+=pouElement* (body=pouBody members+=memberDecl*)? end=END_FUNCTION_BLOCK              # functionBlockDecl
-    | INTERFACE name=identifier (EXTENDS bases+=qualifiedName (COMMA bases+=qualifiedName)*)?
-        members+=memberDecl* end=END_INTERFACE                                                         # interfaceDecl
+        headerEnd=SEMI? elements+=pouElement* (body=pouBody members+=memberDecl*)? end=END_FUNCTION_BLOCK              # functionBlockDecl
+    | INTERFACE modifiers+=modifier* name=identifier (EXTENDS bases+=qualifiedName (COMMA bases+=qualifiedName)*)?
+        headerEnd=SEMI? members+=memberDecl* end=END_INTERFACE                                                         # interfaceDecl
+    // IEC 61131-3 Ed.3 / SIMATIC AX: a CLASS is a function block without a body.
+    | CLASS modifiers+=modifier* name=identifier
+        (EXTENDS base=qualifiedName)? (IMPLEMENTS interfaces+=qualifiedName (COMMA interfaces+=qualifiedName)*)?
+        headerEnd=SEMI? elements+=pouElement* end=END_CLASS                                            # classDecl
     ;
 
 pouElement
@@ -107,7 +111,7 @@ modifier
     ;
 
 methodDecl
-    : METHOD modifiers+=modifier* name=identifier (COLON result=returnType)? vars+=varBlock* body=stmtList end=END_METHOD
+    : METHOD modifiers+=modifier* name=identifier (COLON result=returnType)? headerEnd=SEMI? vars+=varBlock* body=stmtList end=END_METHOD
     ;
 
 // CODESYS/TwinCAT action: code of a PROGRAM or FUNCTION_BLOCK working on its
@@ -117,18 +121,18 @@ actionDecl
     ;
 
 propertyDecl
-    : PROPERTY modifiers+=modifier* name=identifier COLON type=typeSpec accessors+=propertyAccessor* END_PROPERTY
+    : PROPERTY modifiers+=modifier* name=identifier COLON type=typeSpec headerEnd=SEMI? accessors+=propertyAccessor* END_PROPERTY
     ;
 
 propertyAccessor
-    : GET vars+=varBlock* body=stmtList end=END_GET      # propertyGetter
-    | SET vars+=varBlock* body=stmtList end=END_SET      # propertySetter
+    : GET modifiers+=modifier* vars+=varBlock* body=stmtList end=END_GET      # propertyGetter   // TwinCAT: `SET PROTECTED`
+    | SET modifiers+=modifier* vars+=varBlock* body=stmtList end=END_SET      # propertySetter
     ;
 
 // ================================================================= types
 
 typeDecl
-    : TYPE entries+=typeEntry* END_TYPE
+    : TYPE modifiers+=modifier* entries+=typeEntry* END_TYPE
     ;
 
 typeEntry
@@ -138,7 +142,7 @@ typeEntry
 typeSpec
     : ARRAY LBRACK ranges+=arrayRange (COMMA ranges+=arrayRange)* RBRACK OF element=typeSpec   # arrayType
     | (POINTER TO | REF_TO) element=typeSpec                                 # pointerType
-    | REFERENCE TO element=typeSpec                                          # referenceType
+    | REFERENCE TO element=typeSpec (refOperator=identifier EQ refInit=expression)?   # referenceType   // TwinCAT `r : REFERENCE TO INT REF= x;`
     | kind=(STRING | WSTRING) (LBRACK length=expression RBRACK | LPAREN length=expression RPAREN)?   # stringType
     | STRUCT fields+=varDecl* END_STRUCT                                     # structType
     | UNION fields+=varDecl* END_UNION                                       # unionType   // CODESYS: members share storage
@@ -163,7 +167,7 @@ returnType
     | (POINTER TO | REF_TO) element=returnType                               # pointerReturnType
     | REFERENCE TO element=returnType                                        # referenceReturnType
     | kind=(STRING | WSTRING) (LBRACK length=expression RBRACK | LPAREN length=expression RPAREN)?   # stringReturnType
-    | name=qualifiedName                                                     # namedReturnType
+    | name=qualifiedName (LPAREN lo=expression DOTDOT hi=expression RPAREN)?  # namedReturnType
     ;
 
 arrayRange
@@ -177,7 +181,7 @@ enumValue
 
 initializer
     : LBRACK items+=arrayInitItem (COMMA items+=arrayInitItem)* RBRACK       # arrayInit
-    | LPAREN fields+=structInitItem (COMMA fields+=structInitItem)* RPAREN   # structInit
+    | LPAREN (fields+=structInitItem (COMMA fields+=structInitItem)*)? RPAREN   # structInit   // `fb : FB_X := ();` (TwinCAT)
     | value=expression                                                       # exprInit
     ;
 
@@ -207,6 +211,7 @@ varSection
 
 varQualifier
     : CONSTANT | RETAIN | NON_RETAIN | PERSISTENT
+    | PUBLIC | PRIVATE | PROTECTED | INTERNAL   // Ed.3 `VAR PUBLIC` in a CLASS (decision 0209)
     ;
 
 // `a, b AT %IX0.0 : INT := 5;` — also the looser form of VAR_CONFIG
@@ -282,12 +287,12 @@ stmtList
 // to the ':' in CASE). The ';' after END_IF and the like is an empty
 // statement for the same reason (the builder drops it).
 statement
-    : parts+=expression (((assign=(ASSIGN | TRY_ASSIGN) parts+=expression | setOperator=identifier eq=EQ parts+=expression)? SEMI)
+    : parts+=expression (((assign=(ASSIGN | TRY_ASSIGN) parts+=expression (ASSIGN parts+=expression)* | setOperator=identifier eq=EQ parts+=expression)? SEMI)
                          | (dots=DOTDOT hi=expression)? (COMMA moreLabels+=caseLabel)* colon=COLON)   # exprStmt
     | IF conds+=expression THEN blocks+=stmtList (ELSIF conds+=expression THEN blocks+=stmtList)*
         (ELSE elseBlock=stmtList)? END_IF                                        # ifStmt
     | CASE selector=expression OF body=stmtList (ELSE elseBlock=stmtList)? END_CASE   # caseStmt
-    | FOR var=identifier ASSIGN from=expression TO to=expression (by=BY step=expression)? DO body=stmtList END_FOR  # forStmt
+    | FOR control=unaryExpr ASSIGN from=expression TO to=expression (by=BY step=expression)? DO body=stmtList END_FOR  # forStmt
     | WHILE cond=expression DO body=stmtList END_WHILE                           # whileStmt
     | REPEAT body=stmtList UNTIL cond=expression END_REPEAT                      # repeatStmt
     | EXIT SEMI                                                                  # exitStmt
@@ -328,7 +333,7 @@ unaryExpr
     | ( name=(IDENTIFIER | GET | SET | TASK | ON | WITH | READ_ONLY | READ_WRITE)
       | keywordFunction=(MOD | AND | OR | XOR)   // MOD(a, b), AND(a, b, c): the standard functions named like operators
       | special=(THIS | SUPER | DIRECT_ADDRESS)
-      | LPAREN inner=expression RPAREN
+      | LPAREN inner=expression (ASSIGN assigned=expression)? RPAREN
       ) suffixes+=postfixOp*                                              # postfixExpression
     ;
 
@@ -345,7 +350,7 @@ expressionList
     ;
 
 argList
-    : items+=arg (COMMA items+=arg)*
+    : items+=arg (commas+=COMMA items+=arg?)*   // TwinCAT/CODESYS: `F(a := 1,)`; an empty argument elsewhere is the builder's error
     ;
 
 // `name := value`, `name => variable` (`NOT name => variable`), `value`:

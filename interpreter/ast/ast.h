@@ -68,6 +68,7 @@ enum class ExprKind {
     Binary,   // kids[0] op kids[1]
     This,     // THIS   (THIS^ is Deref(This))
     Super,    // SUPER  (SUPER^ is Deref(Super))
+    Assign,   // (kids[0] := kids[1]) used as a value (CODESYS): the value assigned
 };
 
 // A call argument: positional (name empty), input `name := value`,
@@ -239,6 +240,7 @@ struct Stmt {
     std::vector<StmtList> blocks;     // IF / ELSIF blocks (same size as conds)
     std::vector<CaseBranch> cases;
     StmtList body;                    // FOR / WHILE / REPEAT body
+    // (FOR: `target` is the control variable when it is not a plain name, e.g. `FOR a[1] := ...`.)
     std::optional<StmtList> elseBlock;
 };
 

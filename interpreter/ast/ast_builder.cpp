@@ -155,6 +155,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
     if (auto* prog = exactly<P::ProgramDeclContext>(c)) {
         out->kind = PouKind::Program;
         out->name = text(prog->name);
+        modifiers(prog->modifiers, out->access, out->abstract, out->final);
         out->nameLoc = loc(prog->name);
         addElements(prog->elements);
         if (prog->body) statements(prog->body->statements, out->body);
@@ -163,6 +164,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
     } else if (auto* fn = exactly<P::FunctionDeclContext>(c)) {
         out->kind = PouKind::Function;
         out->name = text(fn->name);
+        modifiers(fn->modifiers, out->access, out->abstract, out->final);
         out->nameLoc = loc(fn->name);
         if (fn->result) out->returnType = returnType(fn->result);
         for (auto* v : fn->vars) out->vars.push_back(varBlock(v));
@@ -179,9 +181,20 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
         if (fb->body) statements(fb->body->statements, out->body);
         for (auto* m : fb->members) member(m, *out, false);
         out->endLoc = loc(fb->end ? fb->end : c->getStop());
+    } else if (auto* cls = exactly<P::ClassDeclContext>(c)) {
+        // IEC 61131-3 Ed.3 CLASS: a function block without a body of its own (decision 0209).
+        out->kind = PouKind::FunctionBlock;
+        out->name = text(cls->name);
+        out->nameLoc = loc(cls->name);
+        modifiers(cls->modifiers, out->access, out->abstract, out->final);
+        if (cls->base) out->extends = text(cls->base);
+        for (auto* i : cls->interfaces) out->implements.push_back(text(i));
+        addElements(cls->elements);
+        out->endLoc = loc(cls->end ? cls->end : c->getStop());
     } else if (auto* itf = exactly<P::InterfaceDeclContext>(c)) {
         out->kind = PouKind::Interface;
         out->name = text(itf->name);
+        modifiers(itf->modifiers, out->access, out->abstract, out->final);
         out->nameLoc = loc(itf->name);
         out->hasBody = false;
         for (auto* base : itf->bases) out->extendsList.push_back(text(base));
@@ -277,9 +290,11 @@ Property AstBuilder::property(P::PropertyDeclContext* c, const std::string& name
         if (auto* g = exactly<P::PropertyGetterContext>(a)) {
             if (out.getter) error(loc(g), "property '" + out.name + "' has more than one GET");
             out.getter = accessor(g, "GET", g->vars, g->body, g->end);
+            modifiers(g->modifiers, out.getter->access, out.getter->abstract, out.getter->final);  // `GET PRIVATE`
         } else if (auto* s = exactly<P::PropertySetterContext>(a)) {
             if (out.setter) error(loc(s), "property '" + out.name + "' has more than one SET");
             out.setter = accessor(s, "SET", s->vars, s->body, s->end);
+            modifiers(s->modifiers, out.setter->access, out.setter->abstract, out.setter->final);  // `SET PROTECTED`
         }
     }
     // An interface property written without accessor sections is read/write.

@@ -83,6 +83,10 @@ private:
     void statements(const std::vector<P::StatementContext*>& list, StmtList& out);
     StmtPtr stmt(P::StatementContext* c);
     StmtPtr exprStmt(P::ExprStmtContext* c);
+    // The inner assignments of a chain `a := b := c := 1;`, innermost first,
+    // waiting to be put before the statement exprStmt returns.
+    void flushChained(StmtList& out);
+    StmtList chained_;
     void caseBranches(const std::vector<P::StatementContext*>& items, Stmt& out);
     CaseLabel caseLabel(P::ExpressionContext* lo, const antlr4::Token* dots, P::ExpressionContext* hi, const Loc& at);
 

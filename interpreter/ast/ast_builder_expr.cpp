@@ -224,6 +224,12 @@ ExprPtr AstBuilder::primary(P::PostfixExpressionContext* c) {
             case L::SUPER: return makeExpr(ExprKind::Super, at);
             default: break;
         }
+    if (c->inner && c->assigned) {  // `(i := i + 1)`: an assignment used as a value (CODESYS)
+        auto e = makeExpr(ExprKind::Assign, loc(c->inner));
+        e->kids.push_back(expr(c->inner));
+        e->kids.push_back(expr(c->assigned));
+        return e;
+    }
     if (c->inner) return expr(c->inner);
     return placeholder(at);
 }
@@ -260,6 +266,22 @@ ExprPtr AstBuilder::literal(const antlr4::Token* token) {
 std::vector<Arg> AstBuilder::args(P::ArgListContext* c) {
     std::vector<Arg> out;
     if (c == nullptr) return out;
+    // A comma right before ')' is TwinCAT's trailing comma `F(a := 1,)`;
+    // a comma before another comma, or first in the list, leaves an empty argument.
+    if (c->commas.size() >= c->items.size()) {
+        for (size_t k = 0; k < c->commas.size(); ++k) {
+            const antlr4::Token* after = nullptr;
+            for (size_t i = c->commas[k]->getTokenIndex() + 1; i < tokens_.size(); ++i) {
+                antlr4::Token* t = tokens_.get(i);
+                if (t->getChannel() == antlr4::Token::DEFAULT_CHANNEL) { after = t; break; }
+            }
+            const bool first = c->items.empty() || c->items.front()->getStart()->getTokenIndex() > c->commas[k]->getTokenIndex();
+            if (first || (after != nullptr && after->getType() == L::COMMA)) {
+                error(loc(c->commas[k]), "empty argument: expected an expression before ','");
+                break;
+            }
+        }
+    }
     for (auto* a : c->items) {
         Arg arg;
         arg.loc = loc(a);

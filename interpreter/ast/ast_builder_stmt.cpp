@@ -33,8 +33,11 @@ void AstBuilder::stmtList(P::StmtListContext* c, StmtList& out) {
 }
 
 void AstBuilder::statements(const std::vector<P::StatementContext*>& list, StmtList& out) {
-    for (auto* s : list)
-        if (auto built = stmt(s)) out.push_back(std::move(built));
+    for (auto* s : list) {
+        StmtPtr built = stmt(s);
+        flushChained(out);
+        if (built) out.push_back(std::move(built));
+    }
 }
 
 StmtPtr AstBuilder::stmt(P::StatementContext* c) {
@@ -68,8 +71,10 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
     }
     if (auto* f = exactly<P::ForStmtContext>(c)) {
         auto s = makeStmt(StmtKind::For, at);
-        s->name = text(f->var);
-        s->nameLoc = loc(f->var);
+        s->name = text(f->control);
+        s->nameLoc = loc(f->control);
+        // `FOR Offset[1] := ...` (TwinCAT): the control variable is a place, not a name.
+        if (f->control != nullptr && bareName(f->control) == nullptr) s->target = unary(f->control);
         s->from = f->from ? expr(f->from) : placeholder(at);
         s->to = f->to ? expr(f->to) : placeholder(at);
         if (f->by) s->by = f->step ? expr(f->step) : placeholder(at);
@@ -137,8 +142,15 @@ void AstBuilder::caseBranches(const std::vector<P::StatementContext*>& items, St
             error(loc(item), "expected a CASE label ('value:') before the first statement of a CASE");
             continue;
         }
-        if (auto built = stmt(item)) out.cases.back().body.push_back(std::move(built));
+        StmtPtr built = stmt(item);
+        flushChained(out.cases.back().body);
+        if (built) out.cases.back().body.push_back(std::move(built));
     }
+}
+
+void AstBuilder::flushChained(StmtList& out) {
+    for (auto& s : chained_) out.push_back(std::move(s));
+    chained_.clear();
 }
 
 StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
@@ -189,6 +201,18 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
                                             "=', expected ':=', 'S=', 'R=', 'REF=' or '?='");
             return nullptr;
         }
+    }
+    // `a := b := 3;` (CODESYS): `b := 3;` first, then `a := b;` — the value
+    // of an assignment is the value assigned (decision 0203).
+    if (operands.size() > 2 && kind != StmtKind::Assign) {
+        error(loc(operands[2]), "only ':=' assignments can be chained (a := b := 3)");
+        return nullptr;
+    }
+    for (size_t k = operands.size() - 1; k >= 2 && kind == StmtKind::Assign; --k) {
+        auto inner = makeStmt(StmtKind::Assign, loc(operands[k - 1]));
+        inner->target = expr(operands[k - 1]);
+        inner->expr = expr(operands[k]);
+        chained_.push_back(std::move(inner));
     }
     auto s = makeStmt(kind, at);
     s->target = expr(operands[0]);

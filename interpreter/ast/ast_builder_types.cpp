@@ -2,6 +2,8 @@
 // initial values.
 #include "interpreter/ast/ast_builder.h"
 
+#include <cctype>
+
 #include "grammar/STLexer.h"
 
 namespace strun::ast {
@@ -80,6 +82,20 @@ VarDecl AstBuilder::varDecl(P::VarDeclContext* c, VarSection section) {
     if (c->address != nullptr) out.address = c->address->getText();
     out.type = typeSpec(c->type);
     if (c->init != nullptr) out.init = initializer(c->init);
+    // TwinCAT `r : REFERENCE TO INT REF= x;`: bound to x once per instance (decision 0201).
+    if (auto* ref = exactly<P::ReferenceTypeContext>(c->type); ref != nullptr && ref->refOperator != nullptr) {
+        std::string op = text(ref->refOperator);
+        for (char& ch : op) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+        if (op != "REF") {
+            error(loc(ref->refOperator), "unknown initialisation operator '" + text(ref->refOperator) + "=', expected ':=' or 'REF='");
+        } else if (out.init == nullptr) {
+            // A reference's initial value names the variable it refers to (as `:= x`).
+            out.init = std::make_unique<Init>();
+            out.init->kind = InitKind::Expr;
+            out.init->loc = loc(ref->refInit);
+            out.init->expr = ref->refInit ? expr(ref->refInit) : placeholder(out.init->loc);
+        }
+    }
     return out;
 }
 
@@ -187,7 +203,14 @@ TypeSpecPtr AstBuilder::returnType(P::ReturnTypeContext* c) {
     if (c == nullptr) return out;
     if (auto* n = exactly<P::NamedReturnTypeContext>(c)) {
         out->kind = TypeSpecKind::Named;
-        out->name = text(n->name);
+        if (n->lo != nullptr || n->hi != nullptr) {  // `METHOD M : UINT(0..9)` (TwinCAT)
+            out->kind = TypeSpecKind::Subrange;
+            if (n->name) out->elem = namedType(n->name);
+            out->lo = n->lo ? expr(n->lo) : placeholder(out->loc);
+            out->hi = n->hi ? expr(n->hi) : placeholder(out->loc);
+        } else {
+            out->name = text(n->name);
+        }
     } else {
         sharedTypeForm<P::ArrayReturnTypeContext, P::PointerReturnTypeContext, P::ReferenceReturnTypeContext,
                        P::StringReturnTypeContext>(c, *out, [&](auto* form) { return returnType(form->element); });

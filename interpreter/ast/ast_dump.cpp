@@ -43,6 +43,7 @@ std::string dump(const Expr& e) {
         case ExprKind::Name: return e.name;
         case ExprKind::This: return "THIS";
         case ExprKind::Super: return "SUPER";
+        case ExprKind::Assign: return "(:= " + kid(e, 0) + " " + kid(e, 1) + ")";
         case ExprKind::Member: return "(. " + kid(e, 0) + " " + e.name + ")";
         case ExprKind::Deref: return "(^ " + kid(e, 0) + ")";
         case ExprKind::Unary: return std::string("(") + opText(e.op) + " " + kid(e, 0) + ")";

@@ -101,7 +101,12 @@ std::string FriendlyErrorStrategy::message(antlr4::Parser* parser, antlr4::Token
     const auto& vocabulary = parser->getVocabulary();
     std::vector<std::string> names;
     std::vector<std::string> structural;
+    // `(x := v)` as a value (decision 0203) is rare: after `(a + b` the
+    // missing ')' is news, ':=' is not.
+    const bool parenthesised = expected.contains(static_cast<size_t>(L::RPAREN)) && !expected.contains(static_cast<size_t>(L::ARROW));
     for (size_t type : expected.toList()) {
+        // Nor after `b := 1` (a chained `b := 1 := ...` is not what is missing).
+        if ((parenthesised || expected.contains(static_cast<size_t>(L::SEMI))) && type == static_cast<size_t>(L::ASSIGN)) continue;
         std::string name = describeTokenType(type, vocabulary);
         if (std::find(names.begin(), names.end(), name) != names.end()) continue;
         names.push_back(name);
@@ -167,6 +172,16 @@ size_t closingKeyword(antlr4::ParserRuleContext* c) {
     if (dynamic_cast<P::VarBlockContext*>(c)) return L::END_VAR;
     if (dynamic_cast<P::ProgramDeclContext*>(c)) return L::END_PROGRAM;
     if (dynamic_cast<P::FunctionDeclContext*>(c)) return L::END_FUNCTION;
+    if (dynamic_cast<P::FunctionBlockDeclContext*>(c)) return L::END_FUNCTION_BLOCK;
+    if (dynamic_cast<P::InterfaceDeclContext*>(c)) return L::END_INTERFACE;
+    if (dynamic_cast<P::ClassDeclContext*>(c)) return L::END_CLASS;
+    if (dynamic_cast<P::MethodDeclContext*>(c)) return L::END_METHOD;
+    if (dynamic_cast<P::ActionDeclContext*>(c)) return L::END_ACTION;
+    if (dynamic_cast<P::PropertyDeclContext*>(c)) return L::END_PROPERTY;
+    if (dynamic_cast<P::PropertyGetterContext*>(c)) return L::END_GET;
+    if (dynamic_cast<P::PropertySetterContext*>(c)) return L::END_SET;
+    if (dynamic_cast<P::TypeDeclContext*>(c)) return L::END_TYPE;
+    if (dynamic_cast<P::StructTypeContext*>(c)) return L::END_STRUCT;
     return 0;
 }
 
@@ -313,6 +328,9 @@ void FriendlyErrorStrategy::reportMissingToken(antlr4::Parser* parser) {
 antlr4::Token* FriendlyErrorStrategy::singleTokenDeletion(antlr4::Parser* parser) {
     const size_t type = parser->getTokenStream()->LA(1);
     if (type == L::SEMI || isStructuralKeyword(parser->getVocabulary().getSymbolicName(type))) return nullptr;
+    // `x := a` + newline + `y := 1;` (a missing ';'): dropping `y` would make a
+    // chained assignment `x := a := 1` (decision 0203) and a phantom error.
+    if (parser->getTokenStream()->LA(2) == L::ASSIGN) return nullptr;
     return DefaultErrorStrategy::singleTokenDeletion(parser);
 }
 

@@ -54,16 +54,16 @@ bool bindFixed(Checker& ck, CallArgs& call, std::initializer_list<Formal> formal
     const Formal* f = formals.begin();
     out.assign(n, Checked{});
     std::vector<bool> given(n, false);
-    size_t positional = 0;
     for (size_t k = 0; k < call.args.size(); ++k) {
         const ast::Arg& a = call.call->args[k];
         size_t idx = n;
         if (call.names[k].empty()) {
-            if (positional >= n) {
+            // By its position in the call, also after named ones (decision 0204).
+            if (k >= n) {
                 ck.error(call.loc, fmt::format("too many arguments for '{}' (it takes {})", call.name, n));
                 return false;
             }
-            idx = positional++;
+            idx = k;
         } else {
             for (size_t j = 0; j < n; ++j)
                 if (matchesFormal(f[j].names, call.names[k])) idx = j;

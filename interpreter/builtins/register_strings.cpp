@@ -70,7 +70,10 @@ exec::Expr* concatNode(Checker& ck, const std::vector<Checked>& a, const Type* t
 
 Checked checkConcat(Checker& ck, CallArgs& call) {
     std::vector<Checked> a;
-    if (!bindExtensible(ck, call, {}, "IN", 1, 2, a)) return ck.bad(call.loc);
+    // TwinCAT/CODESYS name CONCAT's inputs STR1, STR2 (IEC: IN1, IN2).
+    bool strNames = false;
+    for (const std::string& n : call.names) strNames = strNames || n.rfind("STR", 0) == 0;
+    if (!bindExtensible(ck, call, {}, strNames ? "STR" : "IN", 1, 2, a)) return ck.bad(call.loc);
     bool wide = false;
     int64_t total = 0;
     for (const auto& v : a) {

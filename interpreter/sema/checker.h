@@ -181,6 +181,11 @@ private:
     Checked checkName(const ast::Expr& e);
     Checked checkMember(const ast::Expr& e);
     Checked checkIndex(const ast::Expr& e);
+    // TwinCAT/CODESYS forms (checker_lang_forms.cpp): s[i] on a STRING, p[i] on a
+    // POINTER, `(x := v)` used as a value.
+    Checked checkStringOrPointerIndex(const ast::Expr& e, const Checked& base);
+    Checked checkAssignmentValue(const ast::Expr& e);
+    std::vector<std::unique_ptr<ast::Stmt>> assignmentValues_;
     Checked checkUnary(const ast::Expr& e);
     Checked checkBinary(const ast::Expr& e);
     Checked checkCall(const ast::Expr& e, bool statement);

@@ -36,7 +36,6 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
     std::set<VarSym*> seen;
     // Named arguments by folded name, built once per call (not a scan per argument).
     std::unordered_map<std::string, VarSym*> byName;
-    size_t firstFree = 0;  // inputsInOrder before it are all given
     size_t positionalCount = 0;
     for (const auto& a : call.args) positionalCount += a.name.empty() ? 1 : 0;
     if (positionalCount > inputsInOrder.size()) {
@@ -49,18 +48,18 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
         return false;
     }
     bool sawNamed = false;
-    for (const auto& a : call.args) {
+    for (size_t k = 0; k < call.args.size(); ++k) {
+        const ast::Arg& a = call.args[k];
         VarSym* param = nullptr;
         if (a.name.empty() && sawNamed) {
-            // CODESYS/TwinCAT: a positional argument after named ones takes the
-            // first input not given yet, in declaration order (decision 0091).
-            while (firstFree < inputsInOrder.size() && seen.count(inputsInOrder[firstFree])) ++firstFree;
-            if (firstFree < inputsInOrder.size()) param = inputsInOrder[firstFree];
-            if (!param) {
+            // CODESYS/TwinCAT: a positional argument after named ones binds by
+            // its position in the call (`F(a := 1, b := 2, 3)`: c), decision 0204.
+            if (k >= inputsInOrder.size()) {
                 ck.error(a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
                 ok = false;
                 continue;
             }
+            param = inputsInOrder[k];
         } else if (a.name.empty()) {
             if (positional >= inputsInOrder.size()) {
                 ck.error(a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));

@@ -577,8 +577,15 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
         if (mv && (mv->section == ast::VarSection::Var || mv->section == ast::VarSection::Temp ||
                    mv->section == ast::VarSection::Stat || mv->section == ast::VarSection::Inst) &&
             t->pou->kind == ast::PouKind::FunctionBlock && !insideOwnInstance(t->pou)) {
-            error(loc, fmt::format("'{}' is an internal variable of '{}'; only its inputs and outputs are visible outside", mv->name, t->name));
-            return bad(loc);
+            // TwinCAT and CODESYS let an instance's internal variables be read
+            // from outside (`fb.count`, `ADR(fb.buffer)`); IEC 61131-3 does not
+            // (decision 0206, revising 0072): an error with --strict only.
+            if (options_.strict && !libraryFiles_.count(loc.file)) {
+                error(loc, fmt::format("'{}' is an internal variable of '{}'; only its inputs and outputs are visible outside", mv->name, t->name));
+                return bad(loc);
+            }
+            c.readOnly = true;
+            c.readOnlyWhy = fmt::format("'{}' is an internal variable of '{}'; it can be read from outside the instance, not written", mv->name, t->name);
         }
         if (mv) {
             mv->used = true;
@@ -692,6 +699,7 @@ Checked Checker::checkIndex(const ast::Expr& e) {
     Checked base = checkExpr(*e.kids[0]);
     if (!base.ok) return base;
     const Type* t = base.type;
+    if (isStringType(t->kind) || t->kind == TK::Pointer) return checkStringOrPointerIndex(e, base);
     if (t->kind != TK::Array) {
         error(e.loc, fmt::format("subscript on a value of type {}, which is not an array", typeName(t)));
         return bad(e.loc);
@@ -864,6 +872,7 @@ Checked Checker::checkExprOfKind(const ast::Expr& e) {
         case ast::ExprKind::This:
         case ast::ExprKind::Super:
             return checkThis(e, false);
+        case ast::ExprKind::Assign: return checkAssignmentValue(e);
     }
     return bad(e.loc);
 }

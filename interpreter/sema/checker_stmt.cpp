@@ -109,6 +109,19 @@ exec::Stmt* Checker::assignChecked(Checked target, Checked value, const ast::Loc
     const Type* t = target.type;
     // An integer converts to an enumeration implicitly (a warning, an error with
     // --strict or {attribute 'strict'}: coerce); another enumeration never does.
+    if (t->kind == TK::Enum && value.type && value.type->kind == TK::Enum && value.type != t && value.type->base && t->base) {
+        // Another enumeration: CODESYS converts through the integer value with a
+        // warning; an error with --strict (decision 0207).
+        if (!lenient(value.loc, fmt::format("implicit conversion from {} to {}: enumerations of different types", typeName(value.type), typeName(t))))
+            return nullptr;
+        Checked asInt = value;
+        asInt.type = value.type->base;
+        asInt = convert(asInt, t->base, value.loc);
+        if (!asInt.ok) return nullptr;
+        asInt.type = t;
+        if (asInt.node) asInt.node->type = t;
+        value = asInt;
+    }
     if (t->kind == TK::Enum && !(value.type == t) && !(value.untypedInt || isInteger(value.type->kind) || isBitString(value.type->kind))) {
         error(value.loc, fmt::format("cannot assign {} to {} (an enumeration takes only its own values)", typeName(value.type), typeName(t)));
         return nullptr;
@@ -252,7 +265,7 @@ exec::Stmt* Checker::checkFor(const ast::Stmt& s) {
     varExpr.kind = ast::ExprKind::Name;
     varExpr.name = s.name;
     varExpr.loc = s.nameLoc.line ? s.nameLoc : s.loc;
-    Checked var = checkExpr(varExpr);
+    Checked var = checkExpr(s.target ? *s.target : varExpr);  // `FOR a[1] := ...`: a place (TwinCAT)
     Checked from = checkExpr(*s.from);
     Checked to = checkExpr(*s.to);
     Checked by;

@@ -60,6 +60,12 @@ private:
                 if (!e->kids.empty()) subscripts(e->kids[0].get(), open);
                 for (const auto& a : e->args) argument(a, open);
                 return;
+            case ast::ExprKind::Assign:  // `(x := v)`: v is read, then x written
+                if (e->kids.size() == 2) {
+                    read(e->kids[1].get(), open);
+                    write(e->kids[0].get(), open);
+                }
+                return;
             default:
                 for (const auto& k : e->kids) read(k.get(), open);
         }
@@ -108,6 +114,7 @@ private:
                 else
                     writtenInExpr(v, out);
             }
+        if (e->kind == ast::ExprKind::Assign && !e->kids.empty()) out.insert(rootName(e->kids[0].get()));
         for (const auto& k : e->kids) writtenInExpr(k.get(), out);
     }
     void writtenIn(const ast::Stmt& s, std::set<std::string>& out) {

@@ -34,7 +34,8 @@ std::size_t projectBytes(const SourceSet& sources) {
 }
 
 // One file into the SourceSet: converted when it is XML.
-void addFile(const std::string& path, std::string text, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log) {
+void addFile(const std::string& path, std::string text, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log,
+             bool foundInDirectory) {
     const std::string ext = lowerExtension(path);
     Converted converted;
     if (isTwinCatObject(path)) {
@@ -42,6 +43,11 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
     } else if (ext == ".xml") {
         if (!isPlcOpenProject(text)) {
             int raw = sources.add(path, "", {}, text);
+            if (foundInDirectory) {
+                // A JUnit report or another tool's XML left in the project folder (decision 0208).
+                log.warning(ast::Loc{raw, 1, 1}, "not a PLCopen TC6 XML project: skipped");
+                return;
+            }
             log.error(ast::Loc{raw, 1, 1}, "not a PLCopen TC6 XML project (the root must be <project> in namespace http://www.plcopen.org/xml/tc6_0201)");
             return;
         }
@@ -102,7 +108,7 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
             for (const auto& f : found) {
                 std::string text;
                 if (!readSourceText(f, projectBytes(sources), text, usageError)) return false;
-                addFile(f, std::move(text), sources, userFiles, log);
+                addFile(f, std::move(text), sources, userFiles, log, true);
             }
             continue;
         }
@@ -123,7 +129,7 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
             return false;
         }
         if (!readSourceText(path, projectBytes(sources), text, usageError)) return false;
-        addFile(path, std::move(text), sources, userFiles, log);
+        addFile(path, std::move(text), sources, userFiles, log, false);
     }
     return true;
 }

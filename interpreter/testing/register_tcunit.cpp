@@ -37,7 +37,6 @@ bool bindArgs(Checker& ck, CallArgs& call, std::initializer_list<Param> params, 
     const Param* p = params.begin();
     out.assign(n, Checked{});
     std::vector<bool> given(n, false);
-    size_t positional = 0;
     for (size_t k = 0; k < call.args.size(); ++k) {
         const ast::Arg& a = call.call->args[k];
         if (a.output) {
@@ -46,7 +45,9 @@ bool bindArgs(Checker& ck, CallArgs& call, std::initializer_list<Param> params, 
         }
         size_t idx = n;
         if (call.names[k].empty()) {
-            idx = positional++;
+            // By its position in the call, also after named ones:
+            // `AssertEquals(Expected := e, Actual := a, 'msg')` (decision 0204).
+            idx = k;
             if (idx >= n) {
                 ck.error(call.loc, fmt::format("too many arguments for '{}' (it takes {})", written(call), n));
                 return false;

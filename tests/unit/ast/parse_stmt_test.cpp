@@ -62,7 +62,8 @@ TEST_CASE("statements: loops and jumps", "[parser][stmt]") {
     CHECK(stmts("RETURN;") == "{RETURN}");
     CHECK(stmts("JMP done; x := 1; done: x := 2;") == "{(jmp done) (:= x 1) (label done) (:= x 2)}");
     CHECK(stmts("lbl: ; ;") == "{(label lbl) ; ;}");
-    CHECK(stmts(";") == "{;}");
+    CHECK(stmts("x := 1; ;") == "{(:= x 1) ;}");
+    CHECK(stmts(";") == "{}");  // right after the header: the header's ';' (TwinCAT `PROGRAM P;`, decision 0200)
     CHECK(stmts("") == "{}");
 }
 
