@@ -184,17 +184,8 @@ void ProjectIndex::collectUnit(const ast::CompilationUnit& unit) {
         collectVars(config.globals, id);
         for (const auto& res : config.resources) collectVars(res.globals, id);
         for (size_t k = first; k < symbols_.size(); ++k) globalNames_.emplace(upper(symbols_[k].name), static_cast<int>(k));
-        for (const auto& res : config.resources)
-            for (const auto& p : res.programs) {
-                Symbol inst;
-                inst.kind = SymbolKind::Variable;
-                inst.name = p.instance;
-                inst.loc = p.loc;
-                inst.parent = id;
-                inst.detail = p.typeName;
-                globalNames_.emplace(upper(p.instance), add(std::move(inst), false));
-            }
-        for (const auto& p : config.programs) {
+        // Program instances, of a resource or of the configuration itself.
+        auto addInstance = [&](const auto& p) {
             Symbol inst;
             inst.kind = SymbolKind::Variable;
             inst.name = p.instance;
@@ -202,7 +193,10 @@ void ProjectIndex::collectUnit(const ast::CompilationUnit& unit) {
             inst.parent = id;
             inst.detail = p.typeName;
             globalNames_.emplace(upper(p.instance), add(std::move(inst), false));
-        }
+        };
+        for (const auto& res : config.resources)
+            for (const auto& p : res.programs) addInstance(p);
+        for (const auto& p : config.programs) addInstance(p);
     }
 }
 

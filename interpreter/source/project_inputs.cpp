@@ -74,7 +74,7 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
 }  // namespace
 
 void addProjectSourceText(const std::string& path, std::string text, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log) {
-    addFile(path, std::move(text), sources, userFiles, log);
+    addFile(path, std::move(text), sources, userFiles, log, false);
 }
 
 const char* const kStdinName = "<stdin>";
@@ -121,7 +121,7 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
             }
             stdinRead = true;
             if (!readSourceText(path, projectBytes(sources), text, usageError)) return false;
-            addFile(kStdinName, std::move(text), sources, userFiles, log);
+            addFile(kStdinName, std::move(text), sources, userFiles, log, false);
             continue;
         }
         if (!fs::exists(path, ec)) {
