@@ -44,6 +44,7 @@ ControlPlane::ControlPlane(sema::ProgramModel& model, const rt::PlcProfile& prof
         var.size = v.ref.bit >= 0 ? 1 : std::max<size_t>(v.ref.type->size, 1);
         variables_.push_back(std::move(var));
         addresses_.push_back(v.ref.addr);
+        return true;  // every variable
     });
     byUpperPath_.reserve(variables_.size());
     for (size_t i = 0; i < variables_.size(); ++i) byUpperPath_.emplace_back(variables_[i].upperPath, i);
@@ -235,6 +236,19 @@ void ControlPlane::enqueue(Request request) {
     std::lock_guard<std::mutex> lock(requestMutex_);
     requests_.push_back(std::move(request));
     requestsPending_.store(true, std::memory_order_release);
+}
+
+bool ControlPlane::writeTogether(const std::vector<NamedWrite>& writes, std::string& error) {
+    std::vector<Request> batch(writes.size());
+    for (size_t i = 0; i < writes.size(); ++i) {
+        if (!resolve(writes[i].name, writes[i].literal, batch[i].target, error)) return false;
+        batch[i].kind = Request::Kind::Write;
+    }
+    // One lock for the whole batch: drainRequests() takes all of it or none.
+    std::lock_guard<std::mutex> lock(requestMutex_);
+    for (Request& r : batch) requests_.push_back(std::move(r));
+    requestsPending_.store(true, std::memory_order_release);
+    return true;
 }
 
 bool ControlPlane::write(std::string_view name, std::string_view literal, std::string& error) {

@@ -156,6 +156,15 @@ public:
     // Writes and forces: false with the --set message ("no variable 'x' ...",
     // "300 does not fit SINT (-128..127)") when NAME or VALUE is wrong.
     bool write(std::string_view name, std::string_view literal, std::string& error);
+    // Several writes that take effect together, at the start of one activation
+    // (the items of one Modbus request, the inputs of one device poll): every
+    // NAME=VALUE is resolved first, then all are queued at once, so the
+    // scheduler never applies a part of them. False, with nothing queued, when
+    // one is refused.
+    struct NamedWrite {
+        std::string name, literal;
+    };
+    bool writeTogether(const std::vector<NamedWrite>& writes, std::string& error);
     bool force(std::string_view name, std::string_view literal, std::string& error);
     // False with `error` when NAME is wrong or not forced.
     bool unforce(std::string_view name, std::string& error);

@@ -39,12 +39,14 @@ void ModbusPlane::readImage(const std::function<void(const ImageView&)>& read) {
 }
 
 void ModbusPlane::write(std::span<const ImageWrite> writes) {
+    // One request's items (one poll's inputs) land in the same activation.
+    std::vector<ControlPlane::NamedWrite> batch;
+    batch.reserve(writes.size());
+    for (const ImageWrite& w : writes)
+        batch.push_back({rt::formatDirectAddress(w.at), w.at.size == 'X' ? (w.value ? "TRUE" : "FALSE") : std::to_string(w.value)});
     std::string error;
-    for (const ImageWrite& w : writes) {
-        std::string value = w.at.size == 'X' ? (w.value ? "TRUE" : "FALSE") : std::to_string(w.value);
-        // Cannot be refused: an address inside the image and a value of its type.
-        control_.write(rt::formatDirectAddress(w.at), value, error);
-    }
+    // Cannot be refused: addresses inside the image and values of their types.
+    control_.writeTogether(batch, error);
 }
 
 void ModbusPlane::ioFault(std::string message) {

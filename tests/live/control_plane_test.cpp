@@ -178,3 +178,22 @@ TEST_CASE("step on the virtual clock: K cycles of the task, then paused with tim
     CHECK(refusedZero);
     CHECK(run.value("S.c") == 5);
 }
+
+TEST_CASE("writes queued together land in the same activation, or none when one is refused") {
+    LiveRun run(R"(
+PROGRAM Main
+VAR a : INT; b : INT; sum : INT; END_VAR
+sum := a + b;
+END_PROGRAM)");
+    std::string error;
+    // One refused item: nothing of the batch is queued.
+    CHECK_FALSE(run.control->writeTogether({{"Main.a", "1"}, {"Main.nothing", "2"}}, error));
+    CHECK(error.find("no variable 'nothing'") != std::string::npos);
+    CHECK_FALSE(run.control->writeTogether({{"Main.a", "5"}, {"Main.b", "99999"}}, error));
+    CHECK(error.find("does not fit INT") != std::string::npos);
+    REQUIRE(run.control->writeTogether({{"Main.a", "20"}, {"%MW3", "4"}, {"Main.b", "22"}}, error));
+    run.run(1);
+    CHECK(run.value("Main.a") == 20);
+    CHECK(run.value("Main.b") == 22);
+    CHECK(run.value("Main.sum") == 42);  // both in place when the first activation ran
+}
