@@ -66,8 +66,8 @@ std::string manyNamedArguments(int n) {
     std::string head = generated("FUNCTION_BLOCK F VAR_INPUT\n", n, [](int i) { return "a" + std::to_string(i) + " : INT;\n"; },
                                  "END_VAR END_FUNCTION_BLOCK\nPROGRAM Main VAR f : F; END_VAR\nf(");
     // Named in reverse order (a scan from the first parameter finds each last), the last one positional
-    // after the named ones (it takes the first input not given yet).
-    return generated(head, n - 1, [n](int i) { return "a" + std::to_string(n - 1 - i) + " := 1, "; }, "2);\nEND_PROGRAM\n");
+    // after the named ones (it binds by its position, decision 0204: the last input, a(n-1)).
+    return generated(head, n - 1, [n](int i) { return "a" + std::to_string(n - 2 - i) + " := 1, "; }, "2);\nEND_PROGRAM\n");
 }
 std::string manyProgramInstances(int n) {
     return generated("PROGRAM Main VAR x : INT; END_VAR x := x + 1; END_PROGRAM\nCONFIGURATION C RESOURCE R ON PLC\n"
