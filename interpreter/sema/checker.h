@@ -124,6 +124,7 @@ private:
     std::map<std::string, VarSym*> listGlobals_;  // "LIST.NAME" (upper-case) of every named list's global
     void ambiguousGlobal(const VarSym* v, const ast::Loc& loc, const std::string& written);
     void writeInitial(uint8_t* base, const Type* t, const ast::Init* init, const ast::Loc& loc);
+    void writeLocatedInitial(const VarSym& v, const ast::Init* init, const ast::Loc& loc);
     void writeDefault(uint8_t* base, const Type* t);
     void writeScalar(uint8_t* p, const Type* t, const Checked& v);
     uint8_t* mapAddress(const std::string& address, const Type* t, const ast::Loc& loc, int& bit);

@@ -676,6 +676,7 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                     v->bit = bit;
                     v->storage = Storage::Abs;
                     if (!v->abs) continue;
+                    if (decl.init) writeLocatedInitial(*v, decl.init.get(), decl.loc);
                 } else if (block.section == ast::VarSection::Temp || !hasInstance) {
                     if (block.section == ast::VarSection::Stat) {
                         v->storage = Storage::Abs;
@@ -760,7 +761,7 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
         v->abs = mapAddress(decl.address, t, loc, bit);
         v->bit = bit;
         if (!v->abs) return nullptr;
-        if (decl.init) writeInitial(v->abs, t, decl.init.get(), decl.loc);
+        if (decl.init) writeLocatedInitial(*v, decl.init.get(), decl.loc);
     } else {
         // Placed in its list's block once the whole list is laid out (declareGlobals).
         listSize = alignUp(listSize, t->align);
@@ -862,6 +863,20 @@ bool Checker::isAddressInit(const VarSym* v) const {
     if (v->type->kind != TK::Pointer && v->type->kind != TK::Reference) return false;
     return v->decl->init->expr->kind != ast::ExprKind::Literal && !(v->decl->init->expr->kind == ast::ExprKind::Name &&
                                                                      upper(v->decl->init->expr->name) == "NULL");
+}
+
+// A variable AT a direct address starts with its initial value in the
+// process image, as in CODESYS (`a AT %MW0 : WORD := 400;`). A BOOL at a bit
+// address (%QX0.1) sets or clears only its own bit of the byte.
+void Checker::writeLocatedInitial(const VarSym& v, const ast::Init* init, const ast::Loc& loc) {
+    if (v.bit < 0) {
+        writeInitial(v.abs, v.type, init, loc);
+        return;
+    }
+    uint8_t value = 0;
+    writeInitial(&value, v.type, init, loc);
+    if (value) *v.abs |= uint8_t(1u << v.bit);
+    else *v.abs &= uint8_t(~(1u << v.bit));
 }
 
 void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, const ast::Loc& loc) {
