@@ -53,7 +53,9 @@ void resolveAxTwinCatForms(std::string_view text, std::vector<ScannedToken>& tok
             std::size_t j = i + 1;
             while (j + 1 < tokens.size() && tokens[j].channel != antlr4::Token::DEFAULT_CHANNEL) ++j;
             const std::size_t after = tokens[j].type;
-            if (after == L::IDENTIFIER || isModifier(after)) token.type = L::OVERRIDE;
+            if (after == L::IDENTIFIER || after == L::ACTION || isModifier(after)) token.type = L::OVERRIDE;
+        } else if (token.type == L::ACTION && (before == L::METHOD || before == L::PROPERTY || isModifier(before))) {
+            token.type = L::IDENTIFIER;  // `METHOD PUBLIC OVERRIDE Action` names a method Action
         } else if (token.type == L::SEMI) {
             const bool afterEndVar = before == L::END_VAR && lastDefault + 1 == i;
             const bool afterPragma = i > 0 && tokens[i - 1].type == L::PRAGMA &&

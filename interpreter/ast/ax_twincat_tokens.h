@@ -4,7 +4,8 @@
 // - `OVERRIDE` is a method modifier (`METHOD PUBLIC OVERRIDE M : BOOL`,
 //   IEC 61131-3 Ed.3) but also a common variable name (a speed override).
 //   The scanner makes it IDENTIFIER; this step makes it OVERRIDE where it
-//   stands among a METHOD's or PROPERTY's modifiers, before its name.
+//   stands among a METHOD's or PROPERTY's modifiers, before its name. A
+//   method's name `Action` after modifiers is a name, not an ACTION.
 // - A `;` right after `END_VAR` (`END_VAR;`) or right after a pragma that
 //   stands where a declaration may start (`{attribute 'x'};` in a VAR block)
 //   changes nothing: it goes to the hidden channel, so the parser never sees
