@@ -64,6 +64,7 @@ tokens {
     PRIVATE,
     PROTECTED,
     INTERNAL,
+    OVERRIDE,   // only among a METHOD's modifiers (ast/ax_twincat_tokens.h)
     THIS,
     SUPER,
     END_GET,

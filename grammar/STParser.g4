@@ -108,6 +108,7 @@ memberDecl
 
 modifier
     : PUBLIC | PRIVATE | PROTECTED | INTERNAL | ABSTRACT | FINAL
+    | OVERRIDE   // Ed.3 / SIMATIC AX; the scanner step marks it (decision 0210)
     ;
 
 methodDecl

@@ -275,6 +275,7 @@ struct Pou {
     Access access = Access::Default;
     bool abstract = false;
     bool final = false;
+    bool override = false;        // METHOD ... OVERRIDE (Ed.3 / SIMATIC AX): must override a base method
     std::string extends;          // FB EXTENDS base; INTERFACE: first of extendsList
     std::vector<std::string> extendsList;  // INTERFACE EXTENDS I1, I2
     std::vector<std::string> implements;

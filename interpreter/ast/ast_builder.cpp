@@ -225,6 +225,7 @@ std::unique_ptr<Pou> AstBuilder::method(P::MethodDeclContext* c, const std::stri
     out->name = text(c->name);
     out->nameLoc = loc(c->name);
     modifiers(c->modifiers, out->access, out->abstract, out->final);
+    for (auto* m : c->modifiers) out->override = out->override || m->getStart()->getType() == L::OVERRIDE;
     if (c->result) out->returnType = returnType(c->result);
     for (auto* v : c->vars) out->vars.push_back(varBlock(v));
     stmtList(c->body, out->body);

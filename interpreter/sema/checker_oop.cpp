@@ -76,6 +76,10 @@ void Checker::buildClasses() {
         }
         for (auto& [key, m] : fb->methods) {
             if (m->slot < 0) continue;
+            if (m->ast && m->ast->override && !(fb->parent && findMethod(fb->parent, key)))
+                error(m->ast->nameLoc.line ? m->ast->nameLoc : m->ast->loc,
+                      fmt::format("method '{}' is marked OVERRIDE but '{}' has no base with a method '{}'", m->name,
+                                  fb->name, m->name));
             if (fb->parent) {
                 PouInfo* base = findMethod(fb->parent, key);
                 if (base && base->ast && base->ast->final)
