@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/command_line.h"
+#include "runtime/scheduler.h"
 
 namespace strun::cli {
 
@@ -17,6 +18,10 @@ void addFileArguments(CLI::App& command, CommandLine& line);
 CLI::App* addExplainCommand(CLI::App& app, std::string& code);
 
 int runCommand(const CommandLine& line);    // strun run
+// The run options that do not depend on the compiled project (clock,
+// --stmt-cost, --start and their limits, --cycles, --for, --target, --trace);
+// false with the usage error. `strun run` and `strun debug` both use it.
+bool buildRunOptions(const CommandLine& line, rt::RunOptions& run, std::string& error);
 int checkCommand(const CommandLine& line);  // strun check
 int explainCommand(const std::string& code);  // strun explain [CODE]
 

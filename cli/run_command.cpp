@@ -72,6 +72,8 @@ bool closeOutput(std::FILE* file, const char* option, const std::string& path) {
     return false;
 }
 
+}  // namespace
+
 // The run options that do not depend on the compiled project.
 bool buildRunOptions(const CommandLine& line, rt::RunOptions& run, std::string& error) {
     run.virtualClock = line.virtualClock;
@@ -105,8 +107,6 @@ bool buildRunOptions(const CommandLine& line, rt::RunOptions& run, std::string& 
     if (line.trace) run.trace = &std::cerr;
     return true;
 }
-
-}  // namespace
 
 CLI::App* addRunCommand(CLI::App& app, CommandLine& line) {
     CLI::App* run = app.add_subcommand("run", "compile the FILEs as one project and run it");

@@ -307,17 +307,7 @@ bool DapServer::launch(const json& args, std::string& error) {
     }
     // The run options, as `strun run` builds them.
     rt::RunOptions& run = runOptions_;
-    if ((line_.stmtCost || line_.start) && !line_.virtualClock) {
-        error = std::string(line_.stmtCost ? "--stmt-cost" : "--start") + " needs --virtual";
-        return false;
-    }
-    run.virtualClock = line_.virtualClock;
-    run.stmtCost = line_.stmtCost.value_or(line_.virtualClock ? 1000 : 0);
-    run.cycles = line_.cycles;
-    run.duration = line_.forDuration;
-    run.startCalendarNanos = line_.start.value_or(0);
-    run.profile = profile;
-    if (line_.trace) run.trace = &std::cerr;
+    if (!cli::buildRunOptions(line_, run, error)) return false;
     for (int i = 0; i < sources_.size(); ++i) run.sourceFiles.push_back(sources_.file(i).path);
     run.originalPosition = [this](int file, int line, int col) {
         return file < sources_.size() ? sources_.file(file).original(line, col) : std::pair<int, int>{line, col};

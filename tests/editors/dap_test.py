@@ -262,6 +262,15 @@ def main():
     assert "undeclared identifier 'y'" in r["message"] and "broken.st:3:6" in r["message"], r
     d.c.wait(lambda m: m.get("event") == "output" and "undeclared" in m["body"]["output"])
     d.finish()
+    # The run options are checked as `strun run` checks them (cli::buildRunOptions): --start past 2116.
+    d = Dap()
+    d.request("initialize", {"adapterID": "strun"})
+    fine = os.path.join(work, "fine.st")
+    with open(fine, "w") as f:
+        f.write("PROGRAM Main\nVAR x : INT; END_VAR\nx := x + 1;\nEND_PROGRAM\n")
+    r = d.request("launch", {"program": fine, "args": ["--virtual", "--start", "DT#2200-01-01-00:00:00"]}, ok=False)
+    assert "the PLC calendar runs from" in r["message"], r
+    d.finish()
 
     # ---- 4. TwinCAT: breakpoints and frames on the XML file's lines
     tc = os.path.join(work, "MAIN.TcPOU")
