@@ -59,17 +59,24 @@ check-deep: deps
 	cmake --build build-deep -j$(JOBS)
 	cd build-deep && ASAN_OPTIONS=detect_leaks=0 STRUN_SLOW_FACTOR=4 ctest --output-on-failure -j$(JOBS)
 
-# libFuzzer (clang): build-fuzz/tests/fuzz/fuzz_compile_run with the ST
-# dictionary and the conformance programs as seeds. FUZZ_SECONDS=60 for a smoke run.
+# libFuzzer (clang): three targets in build-fuzz/tests/fuzz/, run side by side
+# for FUZZ_SECONDS each: fuzz_compile_run (ST, with the ST dictionary and the
+# conformance programs as seeds), fuzz_xml (PLCopen XML and TwinCAT objects,
+# the tests' XML files as seeds) and fuzz_retain (retain files, its program's
+# own valid file as seed). FUZZ_SECONDS=60 for a smoke run.
 FUZZ_SECONDS ?= 3600
+FUZZ_FLAGS = -max_len=4096 -timeout=30 -rss_limit_mb=2048 -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1
 fuzz: deps
 	@command -v clang++ >/dev/null || { echo "make fuzz needs clang (apt-get install clang)"; exit 2; }
 	cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ -DSTRUN_FUZZ=ON
-	cmake --build build-fuzz -j$(JOBS) --target fuzz_compile_run
-	mkdir -p build-fuzz/corpus
-	ASAN_OPTIONS=detect_leaks=0:quarantine_size_mb=64 build-fuzz/tests/fuzz/fuzz_compile_run build-fuzz/corpus build-fuzz/fuzz-seeds \
-	  -dict=tests/fuzz/st.dict -max_len=4096 -timeout=30 -rss_limit_mb=2048 -max_total_time=$(FUZZ_SECONDS) \
-	  -artifact_prefix=build-fuzz/
+	cmake --build build-fuzz -j$(JOBS) --target fuzz_compile_run fuzz_xml fuzz_retain
+	mkdir -p build-fuzz/corpus build-fuzz/corpus-xml build-fuzz/corpus-retain build-fuzz/retain-seed
+	cd build-fuzz && export ASAN_OPTIONS=detect_leaks=0:quarantine_size_mb=64; \
+	  tests/fuzz/fuzz_compile_run corpus fuzz-seeds -dict=../tests/fuzz/st.dict $(FUZZ_FLAGS) -artifact_prefix=st- > fuzz-st.log 2>&1 & st=$$!; \
+	  tests/fuzz/fuzz_xml corpus-xml fuzz-xml-seeds $(FUZZ_FLAGS) -artifact_prefix=xml- > fuzz-xml.log 2>&1 & xml=$$!; \
+	  STRUN_FUZZ_RETAIN_SEED=retain-seed/valid.retain tests/fuzz/fuzz_retain corpus-retain retain-seed $(FUZZ_FLAGS) -artifact_prefix=retain- > fuzz-retain.log 2>&1 & retain=$$!; \
+	  status=0; for pid in $$st $$xml $$retain; do wait $$pid || status=1; done; \
+	  tail -n 12 fuzz-st.log fuzz-xml.log fuzz-retain.log; exit $$status
 
 fuzz-smoke:
 	$(MAKE) fuzz FUZZ_SECONDS=60

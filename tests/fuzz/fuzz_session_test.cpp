@@ -61,3 +61,53 @@ TEST_CASE("a small program compiles and runs with the lent library; the cost of 
     // A measurement, not a timed test (wall times on a shared machine are noise).
     WARN("one iteration: " << ms << " ms");
 }
+
+namespace {
+std::string runXml(strun::fuzz::Session& s, const std::string& text) {
+    return s.runXml(reinterpret_cast<const uint8_t*>(text.data()), text.size());
+}
+std::string runRetain(strun::fuzz::Session& s, const std::string& bytes) {
+    return s.runRetain(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
+}
+}  // namespace
+
+TEST_CASE("the XML input of the fuzzer reaches both readers and the run") {
+    strun::fuzz::Session session;
+    const std::string tcpou = R"(<?xml version="1.0" encoding="utf-8"?>
+<TcPlcObject Version="1.1.0.1"><POU Name="Main" Id="{00000000-0000-0000-0000-000000000001}">
+<Declaration><![CDATA[PROGRAM Main
+VAR n : INT; END_VAR]]></Declaration>
+<Implementation><ST><![CDATA[n := n + 2;]]></ST></Implementation></POU></TcPlcObject>)";
+    const std::string dump = runXml(session, tcpou);
+    REQUIRE(dump.find("\"state\":\"RUN\"") != std::string::npos);
+    CHECK(dump.find("\"n\":") != std::string::npos);
+    const std::string plcopen = R"(<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201"><fileHeader companyName="t" productName="t" productVersion="1" creationDateTime="2026-11-27T10:00:00"/>
+<contentHeader name="t"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+<types><dataTypes/><pous><pou name="Main" pouType="program"><interface><localVars><variable name="k"><type><INT/></type></variable></localVars></interface>
+<body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">k := k + 3;</xhtml></ST></body></pou></pous></types>
+<instances><configurations/></instances></project>)";
+    const std::string dump2 = runXml(session, plcopen);
+    REQUIRE(dump2.find("\"state\":\"RUN\"") != std::string::npos);
+    CHECK(dump2.find("\"k\":") != std::string::npos);
+    CHECK(runXml(session, "<TcPlcObject><POU Name=\"x\"><Declaration><![CDATA[").empty());
+    CHECK(runXml(session, tcpou) == dump);
+}
+
+TEST_CASE("the retain input of the fuzzer is restored into its program") {
+    strun::fuzz::Session session;
+    const std::string cold = runRetain(session, "");
+    REQUIRE(cold.find("\"state\":\"RUN\"") != std::string::npos);
+    const std::string file = session.validRetainFile();
+    REQUIRE(!file.empty());
+    // A warm start from the saved file continues the counts: differs from a cold start.
+    const std::string warm = runRetain(session, file);
+    REQUIRE(warm.find("\"state\":\"RUN\"") != std::string::npos);
+    CHECK(warm != cold);
+    // A damaged file is a cold start (with a warning), never a crash.
+    std::string damaged = file;
+    damaged[damaged.size() / 2] ^= 0x5a;
+    CHECK(runRetain(session, damaged) == cold);
+    // Bytes that are not a retain file at all are refused (never overwritten, decision 0251).
+    CHECK(runRetain(session, std::string(300, '\xff')).empty());
+}
