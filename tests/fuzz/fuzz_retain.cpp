@@ -2,7 +2,8 @@
 // retained variables cover every kind of value (strings, BOOL, enumerations,
 // subranges, arrays, structures, FB instances, PERSISTENT globals): restored
 // as `--retain` does, run for 5 ms of PLC time, saved again. The seed is the
-// program's own valid file, written at the first iteration. Build and use:
+// program's own valid file, and the same with its last line "END FIX" (the
+// harness computes the checksum, so mutated values reach the value checks). Build and use:
 // docs/fuzzing.md.
 #include <cstddef>
 #include <cstdint>
@@ -23,10 +24,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
     if (const char* path = std::getenv("STRUN_FUZZ_RETAIN_SEED")) {
         strun::fuzz::Session session;
-        const std::string file = session.validRetainFile();
-        if (std::FILE* f = std::fopen(path, "wb")) {
-            std::fwrite(file.data(), 1, file.size(), f);
-            std::fclose(f);
+        for (bool toFix : {false, true}) {
+            const std::string file = session.validRetainFile(toFix);
+            if (std::FILE* f = std::fopen((std::string(path) + (toFix ? ".fix" : "")).c_str(), "wb")) {
+                std::fwrite(file.data(), 1, file.size(), f);
+                std::fclose(f);
+            }
         }
     }
     return 0;

@@ -69,19 +69,46 @@ END_PROGRAM
 )";
 }
 
-std::string Session::validRetainFile() {
+std::string Session::validRetainFile(bool checksumToFix) {
     std::error_code ec;
     std::filesystem::remove(retainPath_, ec);
     runRetain(nullptr, 0);  // a cold start, saved at the end
     std::ifstream in(retainPath_, std::ios::binary);
     std::ostringstream bytes;
     bytes << in.rdbuf();
-    return bytes.str();
+    std::string file = bytes.str();
+    if (checksumToFix && file.rfind("\nEND ") != std::string::npos) file = file.substr(0, file.rfind("\nEND ") + 1) + "END FIX\n";
+    return file;
 }
+
+namespace {
+// A file whose last line is "END FIX" gets the checksum line it needs
+// (`END count sum`, FNV-1a 64 of every byte before it): a mutated value line
+// then reaches the value checks instead of stopping at the checksum.
+void fixRetainChecksum(std::string& bytes) {
+    const std::string_view marker = "END FIX";
+    std::string_view view = bytes;
+    if (!view.empty() && view.back() == '\n') view.remove_suffix(1);
+    if (view.size() < marker.size() || view.substr(view.size() - marker.size()) != marker) return;
+    const size_t bodyEnd = view.size() - marker.size();
+    if (bodyEnd > 0 && bytes[bodyEnd - 1] != '\n') return;
+    uint64_t hash = 1469598103934665603ull;
+    size_t lines = 0;
+    for (size_t i = 0; i < bodyEnd; ++i) {
+        hash = (hash ^ static_cast<unsigned char>(bytes[i])) * 1099511628211ull;
+        lines += bytes[i] == '\n';
+    }
+    char end[64];
+    std::snprintf(end, sizeof end, "END %zu %016llx\n", lines > 0 ? lines - 1 : 0, static_cast<unsigned long long>(hash));
+    bytes.resize(bodyEnd);
+    bytes += end;
+}
+}  // namespace
 
 std::string Session::runRetain(const uint8_t* data, size_t size) {
     if (size > kMaxInputBytes) return "";
-    const std::string bytes = data ? std::string(reinterpret_cast<const char*>(data), size) : std::string();
+    std::string bytes = data ? std::string(reinterpret_cast<const char*>(data), size) : std::string();
+    fixRetainChecksum(bytes);
     SourceSet sources = library_->sources;
     int file = sources.add("retained.st", retainProgram());
     return compileAndRun(sources, {file}, true, data ? &bytes : nullptr);

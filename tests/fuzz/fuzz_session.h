@@ -25,9 +25,12 @@ public:
     std::string runRetain(const uint8_t* data, size_t size);   // retain file of retainProgram()
 
     // The program whose retain files runRetain reads, and a valid retain file of
-    // it (after one run that changed every retained value): the seed of that target.
+    // it (after one run that changed every retained value): the seed of that
+    // target. A file whose last line is "END FIX" gets its checksum line
+    // computed before it is read, so that mutated values reach the value
+    // checks; `checksumToFix` gives the seed in that form.
     static const char* retainProgram();
-    std::string validRetainFile();
+    std::string validRetainFile(bool checksumToFix = false);
 
     static constexpr size_t kMaxInputBytes = 64 * 1024;
     static constexpr int64_t kPlcTimeNanos = 5'000'000;  // 5 ms of PLC time = 5 000 statements at 1 us

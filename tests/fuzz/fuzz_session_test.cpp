@@ -110,4 +110,17 @@ TEST_CASE("the retain input of the fuzzer is restored into its program") {
     CHECK(runRetain(session, damaged) == cold);
     // Bytes that are not a retain file at all are refused (never overwritten, decision 0251).
     CHECK(runRetain(session, std::string(300, '\xff')).empty());
+    // "END FIX" gets the right checksum: the same warm start as the valid file.
+    const std::string toFix = session.validRetainFile(true);
+    REQUIRE(toFix.find("END FIX") != std::string::npos);
+    CHECK(runRetain(session, toFix) == warm);
+    // A value that is not valid for its type (BOOL byte 2) is dropped with a
+    // warning, the rest restored: neither the cold nor the warm result.
+    std::string badBool = toFix;
+    const std::string goodLine = "gB\tBOOL (1 bytes)\t01";
+    REQUIRE(badBool.find(goodLine) != std::string::npos);
+    badBool.replace(badBool.find(goodLine), goodLine.size(), "gB\tBOOL (1 bytes)\t02");
+    const std::string partly = runRetain(session, badBool);
+    CHECK(partly.find("\"state\":\"RUN\"") != std::string::npos);
+    CHECK(partly != cold);
 }
