@@ -224,6 +224,21 @@ def main():
                    and m["params"].get("version") == 42, 20, "main.st v42")["params"]
     assert fixed["diagnostics"] == [], fixed
     c.seen = [m for m in c.seen if m.get("method") != "textDocument/publishDiagnostics"]  # the older refreshes
+    # A new document that sorts before every file shifts their indices in the
+    # compile: they are parsed again, and positions still come out right.
+    first_path = os.path.join(work, "aaa_new.st")
+    first_text = "PROGRAM Extra\nVAR\n    c2 : FB_Counter;\nEND_VAR\nc2(enable := FALSE);\nc2.count := nothere;\nEND_PROGRAM\n"
+    notify("textDocument/didOpen", {"textDocument": {"uri": uri(first_path), "languageId": "iec-st", "version": 1, "text": first_text}})
+    extra = diagnostics_for(first_path)["diagnostics"]
+    assert [(g["message"], g["range"]["start"]) for g in extra] == [("undeclared identifier 'nothere'", {"line": 5, "character": 12})], extra
+    loc = request("textDocument/definition", {"textDocument": {"uri": uri(first_path)}, "position": {"line": 2, "character": 12}})
+    assert loc["uri"] == uri(paths["blocks.st"]) and loc["range"]["start"] == pos_of(BLOCKS_ST, "FB_Counter"), loc
+    h = request("textDocument/hover", {"textDocument": {"uri": uri(paths["main.st"])}, "position": pos_of(MAIN_ST, "counter(", 0, 2)})
+    assert "counter : FB_Counter" in h["contents"]["value"] and "main.st:3" in h["contents"]["value"], h
+    notify("textDocument/didClose", {"textDocument": {"uri": uri(first_path)}})
+    c.wait(lambda m: m.get("method") == "textDocument/publishDiagnostics" and m["params"]["uri"] == uri(first_path)
+           and m["params"]["diagnostics"] == [], 20, "aaa_new.st cleared")
+    c.seen = [m for m in c.seen if m.get("method") != "textDocument/publishDiagnostics"]
 
     main_uri = {"uri": uri(paths["main.st"])}
 
