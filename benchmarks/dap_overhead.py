@@ -7,6 +7,7 @@ usage: benchmarks/dap_overhead.py [path-to-strun] [workload] [repeats]"""
 import os
 import subprocess
 import sys
+import tempfile
 import time
 
 here = os.path.dirname(os.path.abspath(__file__))
@@ -50,9 +51,15 @@ def main():
         subprocess.run([strun, "run", *args, "--quiet", program], check=True)
         plain.append(time.perf_counter() - t0)
     attached = [debugged(strun, program, args) for _ in range(repeats)]
-    # A breakpoint on the END_PROGRAM line of the file is never reached.
-    end_line = open(program).read().split("\n").index("END_CONFIGURATION") + 1
-    with_bp = [debugged(strun, program, args, end_line) for _ in range(repeats)]
+    # A breakpoint on a statement that never runs: a copy of the workload
+    # with a function nobody calls (a breakpoint on a line without a
+    # statement would not be verified, and would cost nothing).
+    text = open(program).read() + "\nFUNCTION NeverCalled : INT\nVAR_INPUT x : INT; END_VAR\nNeverCalled := x + 1;\nEND_FUNCTION\n"
+    copy = os.path.join(tempfile.mkdtemp(prefix="strun_dap_bench_"), workload + ".st")
+    with open(copy, "w") as f:
+        f.write(text)
+    bp_line = text.split("\n").index("NeverCalled := x + 1;") + 1
+    with_bp = [debugged(strun, copy, args, bp_line) for _ in range(repeats)]
     print("%s: run %.3f s, debug attached %.3f s (x%.1f), with an unreached breakpoint %.3f s (x%.1f)" %
           (workload, min(plain), min(attached), min(attached) / min(plain), min(with_bp), min(with_bp) / min(plain)))
 

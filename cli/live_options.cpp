@@ -85,7 +85,7 @@ std::unique_ptr<LiveSession> LiveSession::start(const LiveOptions& options, sema
                                                 const std::vector<rt::TaskSpec>& specs, const std::string& stepTask,
                                                 rt::RunOptions& run, std::string& error) {
     if (!options.any()) return nullptr;
-    if (options.paused && options.serve.empty()) {
+    if (options.paused && options.serve.empty() && !options.debugger) {
         error = "--paused needs a front end that can resume the run: give --serve [ADDR:]PORT too";
         return nullptr;
     }

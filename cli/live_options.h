@@ -32,7 +32,8 @@ struct LiveOptions {
     std::string serveToken;           // --serve-token TOKEN
     // True when any option needs the control plane.
     bool modbus = false;              // --modbus or --modbus-client (cli/modbus_options.h) use the plane
-    bool any() const { return !forces.empty() || paused || !serve.empty() || !serveToken.empty() || modbus; }
+    bool debugger = false;            // strun debug: the debugger is a front end of the plane (and can resume --paused)
+    bool any() const { return !forces.empty() || paused || !serve.empty() || !serveToken.empty() || modbus || debugger; }
 };
 
 void addLiveOptions(CLI::App& run, LiveOptions& options);

@@ -137,6 +137,12 @@ const LiveVariable* ControlPlane::findVariable(std::string_view path) const {
     return &variables_[it->second];
 }
 
+const LiveVariable* ControlPlane::variableAt(const uint8_t* address, int bit) const {
+    for (size_t i = 0; i < variables_.size(); ++i)
+        if (addresses_[i] == address && variables_[i].bit == bit) return &variables_[i];
+    return nullptr;
+}
+
 // ---------------------------------------------------------------- snapshots
 
 void ControlPlane::fillSnapshot(Snapshot& snap, bool ended) {

@@ -139,6 +139,10 @@ public:
     // ---- any thread
     const std::vector<LiveVariable>& variables() const { return variables_; }
     const LiveVariable* findVariable(std::string_view path) const;  // case-insensitive; nullptr if none
+    // The variable stored at `address` (`bit`: a BOOL at a bit address, else
+    // -1), for a front end that found a value by its storage (the debugger's
+    // variables view); nullptr if none (a function's or method's local).
+    const LiveVariable* variableAt(const uint8_t* address, int bit) const;
     const std::vector<rt::TaskSpec>& tasks() const { return specs_; }
     const sema::ProgramModel& model() const { return model_; }
 

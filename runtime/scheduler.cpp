@@ -694,7 +694,7 @@ bool Scheduler::onAttention() {
         if (stopRequested_.load()) ending_ = true;
         if (machine_.now >= forEnd_) ending_ = true;
         if (ending_) {
-            machine_.requestAttention();  // every level below unwinds too
+            requestOwnAttention();  // every level below unwinds too
             return true;
         }
         processDue();
@@ -803,7 +803,7 @@ void Scheduler::faultStop(const TaskRun* task, DiagCode code, PlcState state) {
     // its last statement: none of them completes a cycle or writes outputs.
     for (TaskRun* running : stack_) running->abortRequested = true;
     trace(task, state == PlcState::Halt ? "halt" : "stop", diagCodeName(code));
-    machine_.requestAttention();
+    requestOwnAttention();
 }
 
 void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::string message, int file, int col) {
@@ -822,7 +822,7 @@ void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::stri
         // as a watchdog trip of the execution-timeout task does.
         if (errorTask_ && current != errorTask_) {
             release(*errorTask_, machine_.now, false);
-            machine_.requestAttention();  // it may preempt at the next statement boundary
+            requestOwnAttention();  // it may preempt at the next statement boundary
             return;
         }
         faultStop(current, code, PlcState::Stop);
@@ -865,8 +865,24 @@ void Scheduler::armNextAttention() {
     } else {
         timer_->arm(at);
     }
-    // strun debug sees every statement boundary (decision 0190).
-    if (options_.front) machine_.requestAttention();
+    if (options_.front) {
+        ownDeadline_.store(ending_ ? std::numeric_limits<PlcTime>::min() : at, std::memory_order_relaxed);
+        // strun debug sees every statement boundary while it watches (decision 0271).
+        if (frontEveryStatement_.load()) machine_.requestAttention();
+    }
+}
+
+void Scheduler::requestOwnAttention() {
+    ownDeadline_.store(std::numeric_limits<PlcTime>::min(), std::memory_order_relaxed);
+    machine_.requestAttention();
+}
+
+void Scheduler::excludeFromWatchdogs(PlcTime stopped) {
+    if (stopped <= 0) return;
+    for (TaskRun* task : stack_)
+        if (task->watchdogAt != kNever) task->watchdogAt += stopped;
+    if (highBusySince_ != kNever) highBusySince_ = std::min(highBusySince_ + stopped, machine_.now);
+    if (!stack_.empty()) armNextAttention();
 }
 
 PlcTime Scheduler::currentTime() {

@@ -116,6 +116,12 @@ public:
     bool taskInfo(int index, TaskInfo& out) const override;
     // The body of the running activation (the innermost when preempted); null between activations.
     const TaskBody* runningBody() const { return stack_.empty() ? nullptr : stack_.back()->body; }
+    // True while `body`'s task is in the middle of an activation (running or preempted).
+    bool isActive(const TaskBody* body) const {
+        for (const TaskRun* t : stack_)
+            if (t->body == body) return true;
+        return false;
+    }
     // The statistics of every task, in task order, into `out` (resized; no
     // allocation once it has the size). Scheduler thread, or after run().
     void copyTaskStats(std::vector<TaskStats>& out) const;
@@ -144,6 +150,23 @@ public:
     // answering): recorded at the current PLC time with no task and no POU;
     // the run goes on. Scheduler thread only (a LiveHooks call).
     void recordOutsideFault(DiagCode code, std::string message);
+
+    // strun debug (RunOptions::front, decision 0271). While `on`, every
+    // statement boundary calls the front handler; while off, only the
+    // moments the scheduler needs one do, so an attached debugger with
+    // nothing to watch costs the run nothing. Any thread.
+    void watchEveryStatement(bool on) {
+        frontEveryStatement_.store(on);
+        if (on) machine_.requestAttention();
+    }
+    // The PLC time at which the scheduler itself next needs onAttention()
+    // (virtual clock; the real clock's timer lowers the machine's deadline
+    // instead): a front handler that sees every statement forwards only then.
+    PlcTime ownDeadline() const { return ownDeadline_.load(std::memory_order_relaxed); }
+    // A debugger stop of `stopped` PLC time inside the running activation:
+    // it does not count against the watchdogs (CODESYS suspends them at a
+    // breakpoint too). Scheduler thread (inside onAttention's caller).
+    void excludeFromWatchdogs(PlcTime stopped);
 
 private:
     enum class Phase : uint8_t { Idle, Ready, Active };
@@ -202,6 +225,7 @@ private:
     void tripWatchdog(TaskRun& task);
     void faultStop(const TaskRun* task, DiagCode code, PlcState state);
     void armNextAttention();
+    void requestOwnAttention();  // the next statement boundary, also through a front handler
     void record(DiagCode code, const TaskRun* task, std::string_view pou, int line, std::string message, int file = -1, int col = 0);
     void trace(const TaskRun* task, const char* event, const char* detail = nullptr);
     PlcTime calendarToPlc(int64_t calendar) const;
@@ -237,6 +261,8 @@ private:
     int64_t monotonicOrigin_ = 0;
     uint64_t activations_ = 0;
     std::unique_ptr<AttentionTimer> timer_;
+    std::atomic<bool> frontEveryStatement_{false};
+    std::atomic<PlcTime> ownDeadline_{kNever};
     std::string traceLine_;
     std::vector<DiagEntry> stopFaults_;
 

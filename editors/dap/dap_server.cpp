@@ -122,6 +122,10 @@ int DapServer::run() {
         // Ready for configuration requests as soon as initialize is answered;
         // breakpoints set before `launch` are verified when it has compiled the project.
         if (command == "initialize" && ok) event("initialized", nullptr);
+        if (reportHeldPause_) {
+            reportHeldPause_ = false;
+            event("stopped", {{"reason", "pause"}, {"threadId", 1}, {"allThreadsStopped", true}});
+        }
         if (command == "launch" && !ok) event("terminated", nullptr);
         if ((command == "configurationDone" || command == "launch") && ok && launched_ && configured_ && !runThread_.joinable()) startRun();
     }
@@ -193,6 +197,13 @@ json DapServer::dispatch(const std::string& command, const json& args, bool& ok,
         return command == "continue" ? json{{"allThreadsContinued", true}} : json(nullptr);
     }
     if (command == "pause") {
+        if (session_ && !session_->stopped() && live_ && live_->control().paused()) {
+            // Held between two activations by the control plane already
+            // (--paused, or a pause from another live front end): that is the
+            // stop; `continue` resumes it through the plane.
+            reportHeldPause_ = true;  // the stopped event follows the response
+            return nullptr;
+        }
         if (session_) session_->requestPause();
         return nullptr;
     }
@@ -316,6 +327,8 @@ bool DapServer::launch(const json& args, std::string& error) {
     for (const auto& t : model_->tasks) specs.push_back(t.spec);
     run.cyclesTask = !line_.task.empty() ? line_.task : specs.front().name;
     if (!stimulus_.empty()) run.stimulus = &stimulus_;
+    // The debugger is a live front end: writes go through the control plane.
+    line_.live.debugger = true;
     live_ = cli::LiveSession::start(line_.live, *model_, profile ? *profile : rt::defaultProfile(), specs, run.cyclesTask, run, usage);
     if (!live_ && !usage.empty()) {
         error = usage;
@@ -362,10 +375,13 @@ bool DapServer::launch(const json& args, std::string& error) {
     };
     events.output = [this](const std::string& text) { event("output", {{"category", "console"}, {"output", text}}); };
     std::set<int> users(userFiles_.begin(), userFiles_.end());
+    std::vector<int> lineCounts;
+    for (int f = 0; f < sources_.size(); ++f)
+        lineCounts.push_back(static_cast<int>(std::count(sources_.file(f).text.begin(), sources_.file(f).text.end(), '\n')) + 1);
     session_ = std::make_unique<DebugSession>(
         *model_, runners, names, users,
         [this](int file, int line) { return file >= 0 && file < sources_.size() ? sources_.file(file).original(line, 1).first : line; },
-        events, *evaluator_, evaluatorMutex_);
+        events, *evaluator_, evaluatorMutex_, lineCounts);
     session_->setStopOnEntry(stopOnEntry_);
     if (auto it = pendingBreakpoints_.find("<faults>"); it != pendingBreakpoints_.end()) session_->setExceptionBreakpoints(it->second.get<bool>());
     launched_ = true;
@@ -391,7 +407,7 @@ void DapServer::startRun() {
         std::ostringstream report;
         {
             rt::Scheduler scheduler(model_->machine, specs, bodies, run);
-            session_->attach(&scheduler);
+            session_->attach(&scheduler, run.virtualClock);
             state = scheduler.run();
             session_->detach();
             if (live_) live_->runEnded(scheduler);
@@ -559,7 +575,7 @@ bool DapServer::frameOf(int frameId, int& task, FrameRecord& frame) const {
 json DapServer::stackTrace(const json& args) {
     json out = json::array();
     const int task = args.value("threadId", 0) - 1;
-    if (!session_ || !session_->stopped() || task != session_->stoppedTask()) return {{"stackFrames", out}, {"totalFrames", 0}};
+    if (!session_ || !session_->stopped()) return {{"stackFrames", out}, {"totalFrames", 0}};
     const std::vector<FrameRecord> frames = session_->frames(task);
     for (size_t k = frames.size(); k-- > 0;) {
         const FrameRecord& f = frames[k];
@@ -776,11 +792,32 @@ json DapServer::setVariable(const json& args, bool& ok, std::string& error) {
             error = why;
             return nullptr;
         }
-        if (s.bit >= 0) {
-            if (bytes[0]) *s.address |= static_cast<uint8_t>(1u << s.bit);
-            else *s.address &= static_cast<uint8_t>(~(1u << s.bit));
-        } else {
-            std::memcpy(s.address, bytes.data(), std::min<size_t>(bytes.size(), s.type->size));
+        // A variable with a path (a program's, an FB instance's, a global, an
+        // address) is written through the control plane's write queue, as
+        // every live front end writes (decision 0272): the value is stored
+        // when the next activation of a task starts, before its input phase.
+        if (const live::LiveVariable* var = live_ ? live_->control().variableAt(s.address, s.bit) : nullptr) {
+            if (!live_->control().write(var->path, value, why)) {
+                ok = false;
+                error = why;
+                return nullptr;
+            }
+            return {{"value", stLiteral(s.type, bytes.data(), -1)}, {"type", sema::typeName(s.type)}, {"variablesReference", 0}};
+        }
+        // A call frame's variable (a FUNCTION's or METHOD's VAR, VAR_TEMP)
+        // exists only during this call: written now, by the PLC thread.
+        const bool written = session_->runWhileStopped([&] {
+            if (s.bit >= 0) {
+                if (bytes[0]) *s.address |= static_cast<uint8_t>(1u << s.bit);
+                else *s.address &= static_cast<uint8_t>(~(1u << s.bit));
+            } else {
+                std::memcpy(s.address, bytes.data(), std::min<size_t>(bytes.size(), s.type->size));
+            }
+        });
+        if (!written) {
+            ok = false;
+            error = "the PLC is not stopped";
+            return nullptr;
         }
         return {{"value", stLiteral(s.type, s.address, s.bit)}, {"type", sema::typeName(s.type)}, {"variablesReference", 0}};
     }

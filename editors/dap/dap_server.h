@@ -93,6 +93,7 @@ private:
     rt::RunOptions runOptions_;
     // --force, --serve, --paused: the live control plane (cli/live_options.h), as under `run`.
     std::unique_ptr<cli::LiveSession> live_;
+    bool reportHeldPause_ = false;  // a pause request found the run held by the control plane
     bool launched_ = false;
     bool configured_ = false;
     bool stopOnEntry_ = false;

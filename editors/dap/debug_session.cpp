@@ -6,7 +6,7 @@ namespace strun::editors::dap {
 
 DebugSession::DebugSession(sema::ProgramModel& model, std::vector<project::TaskRunner*> runners, std::vector<std::string> taskNames,
                            std::set<int> userFiles, std::function<int(int, int)> userLine, SessionEvents events,
-                           FrameEvaluator& evaluator, std::mutex& evaluatorMutex)
+                           FrameEvaluator& evaluator, std::mutex& evaluatorMutex, const std::vector<int>& lineCounts)
     : model_(model),
       runners_(std::move(runners)),
       taskNames_(std::move(taskNames)),
@@ -15,7 +15,15 @@ DebugSession::DebugSession(sema::ProgramModel& model, std::vector<project::TaskR
       events_(std::move(events)),
       evaluator_(evaluator),
       evaluatorMutex_(evaluatorMutex),
-      tracks_(runners_.size()) {
+      tracks_(runners_.size()),
+      lineCounts_(lineCounts) {
+    isUser_.assign(lineCounts_.size(), 0);
+    for (size_t f = 0; f < lineCounts_.size(); ++f) {
+        isUser_[f] = userFiles_.count(static_cast<int>(f)) ? 1 : 0;
+        const size_t n = isUser_[f] ? static_cast<size_t>(lineCounts_[f]) + 2 : 0;
+        breakpointLines_.emplace_back(n ? new std::atomic<uint8_t>[n] : nullptr);
+        for (size_t l = 0; l < n; ++l) breakpointLines_.back()[l].store(0, std::memory_order_relaxed);
+    }
     for (const auto& info : model_.pouStore) {
         if (info->code) pouByName_[&info->code->name] = info.get();
         for (const auto& [name, m] : info->methods)
@@ -33,24 +41,73 @@ sema::PouInfo* DebugSession::pouOf(const std::string* name) const {
     return nullptr;
 }
 
+void DebugSession::attach(rt::Scheduler* scheduler, bool virtualClock) {
+    virtualClock_ = virtualClock;
+    scheduler_.store(scheduler);
+    updateWatching();
+}
+
 void DebugSession::setBreakpoints(int file, std::vector<LineBreakpoint> breakpoints) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    for (auto it = breakpoints_.begin(); it != breakpoints_.end();)
-        it = it->first.first == file ? breakpoints_.erase(it) : std::next(it);
-    for (auto& bp : breakpoints) breakpoints_[{bp.file, bp.line}].push_back(std::move(bp));
-    hasBreakpoints_ = !breakpoints_.empty();
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        for (auto it = breakpoints_.begin(); it != breakpoints_.end();)
+            it = it->first.first == file ? breakpoints_.erase(it) : std::next(it);
+        for (auto& bp : breakpoints) breakpoints_[{bp.file, bp.line}].push_back(std::move(bp));
+        hasBreakpoints_ = !breakpoints_.empty();
+        // The compiled lines whose statements are on a breakpoint's line.
+        if (file >= 0 && static_cast<size_t>(file) < breakpointLines_.size() && breakpointLines_[static_cast<size_t>(file)])
+            for (int l = 1; l <= lineCounts_[static_cast<size_t>(file)]; ++l)
+                breakpointLines_[static_cast<size_t>(file)][static_cast<size_t>(l)].store(breakpoints_.count({file, userLine_(file, l)}) ? 1 : 0,
+                                                                                          std::memory_order_relaxed);
+    }
+    updateWatching();
+}
+
+// Decision 0271: the session looks at every statement only while something
+// can stop there. Otherwise the scheduler keeps its own deadline and the run
+// pays nothing per statement (an attached debugger with no breakpoint runs
+// at the speed of `strun run`).
+void DebugSession::updateWatching() {
+    std::lock_guard<std::mutex> lock(watchMutex_);
+    const bool want = hasBreakpoints_ || stepping_ || pauseRequested_ || entryPending_ || stopOnFaults_;
+    if (want && !watching_) watchEpoch_.fetch_add(1);
+    watching_ = want;
+    if (rt::Scheduler* s = sched()) s->watchEveryStatement(want);
+}
+
+// The frames of a track are complete when every call level up to the
+// innermost was seen since watching began.
+bool DebugSession::complete(const TaskTrack& track) {
+    for (const FrameRecord& f : track.frames)
+        if (!f.stmt) return false;
+    return !track.frames.empty();
+}
+
+bool DebugSession::runWhileStopped(const std::function<void()>& work) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (!stopped_ || terminating_ || work_) return false;
+    work_ = &work;
+    workDone_ = false;
+    resumed_.notify_all();
+    resumed_.wait(lock, [&] { return workDone_ || terminating_; });
+    const bool done = workDone_;
+    work_ = nullptr;
+    return done;
 }
 
 void DebugSession::resume(StepMode mode) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!stopped_) return;
-    step_ = mode;
-    stepping_ = mode != StepMode::None;
-    stepTask_ = stoppedTask_;
-    const int task = stoppedTask_;
-    stepDepth_ = task >= 0 && !tracks_[static_cast<size_t>(task)].frames.empty() ? tracks_[static_cast<size_t>(task)].frames.size() - 1 : 0;
-    stopped_ = false;
-    resumed_.notify_all();
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!stopped_) return;
+        step_ = mode;
+        stepping_ = mode != StepMode::None;
+        stepTask_ = stoppedTask_;
+        const int task = stoppedTask_;
+        stepDepth_ = task >= 0 && !tracks_[static_cast<size_t>(task)].frames.empty() ? tracks_[static_cast<size_t>(task)].frames.size() - 1 : 0;
+        stopped_ = false;
+        resumed_.notify_all();
+    }
+    updateWatching();
 }
 
 void DebugSession::terminate() {
@@ -62,28 +119,50 @@ void DebugSession::terminate() {
 }
 
 std::vector<FrameRecord> DebugSession::frames(int task) const {
-    if (task < 0 || static_cast<size_t>(task) >= tracks_.size()) return {};
+    if (task < 0 || static_cast<size_t>(task) >= tracks_.size() || !stopped_) return {};
+    const TaskTrack& track = tracks_[static_cast<size_t>(task)];
+    std::vector<FrameRecord> known = track.epoch == watchEpoch_.load() ? track.frames : std::vector<FrameRecord>{};
+    if (task != stoppedTask_) {
+        // Another task: shown only while it is in the middle of an activation
+        // (preempted by the stopped one). Its evaluator registers still say
+        // where it was preempted; the outer levels come from its track.
+        rt::Scheduler* s = sched();
+        if (!s || !s->isActive(runners_[static_cast<size_t>(task)])) return {};
+        const exec::Ctx& c = runners_[static_cast<size_t>(task)]->context();
+        if (c.stmt && !c.userStmt && c.stmt->file >= 0 && static_cast<size_t>(c.stmt->file) < isUser_.size() && isUser_[static_cast<size_t>(c.stmt->file)]) {
+            const size_t depth = static_cast<size_t>(c.depth);
+            known.resize(depth + 1);
+            known[depth] = FrameRecord{c.stmt, c.pouName, c.self, c.frame, false};
+        }
+    }
     std::vector<FrameRecord> out;
-    for (const FrameRecord& f : tracks_[static_cast<size_t>(task)].frames)
+    for (const FrameRecord& f : known)
         if (f.stmt) out.push_back(f);
     return out;
 }
 
 int DebugSession::runningTask() const {
-    if (!scheduler_) return -1;
-    const rt::TaskBody* body = scheduler_->runningBody();
+    rt::Scheduler* s = sched();
+    if (!s) return -1;
+    const rt::TaskBody* body = s->runningBody();
     for (size_t k = 0; k < runners_.size(); ++k)
         if (runners_[k] == body) return static_cast<int>(k);
     return -1;
 }
 
 bool DebugSession::onAttention() {
-    if (!terminating_) {
+    rt::Scheduler* s = sched();
+    if (watching_.load(std::memory_order_relaxed) && !terminating_) {
         const int task = runningTask();
         if (task >= 0) observe(task, runners_[static_cast<size_t>(task)]->context());
+        // The scheduler itself is asked only when it wants to be (its own
+        // deadline on the virtual clock); the real clock's timer lowers the
+        // machine's deadline, which is at its minimum while watching, so there
+        // every boundary is passed on.
+        if (virtualClock_ && !terminating_ && !rt::Scheduler::stopRequested() && s->now() < s->ownDeadline()) return false;
     }
     if (terminating_) rt::Scheduler::requestStop();
-    return scheduler_->onAttention();
+    return s->onAttention();
 }
 
 void DebugSession::onFault(rt::DiagCode code, std::string_view pou, int line, std::string message, int file, int col) {
@@ -105,18 +184,25 @@ void DebugSession::onFault(rt::DiagCode code, std::string_view pou, int line, st
             stopHere(task, "exception", codeName + ": " + message, {});
         }
     }
-    scheduler_->onFault(code, pou, line, std::move(message), file, col);
+    sched()->onFault(code, pou, line, std::move(message), file, col);
 }
 
 void DebugSession::observe(int task, const exec::Ctx& c) {
     TaskTrack& track = tracks_[static_cast<size_t>(task)];
+    if (const uint64_t epoch = watchEpoch_.load(std::memory_order_relaxed); track.epoch != epoch) {
+        // Watching (re)started: what was recorded before is stale.
+        track.frames.clear();
+        track.lastFile = track.lastLine = -1;
+        track.epoch = epoch;
+    }
     if (!c.stmt) {
         // The tick before an activation's first statement.
         track.frames.clear();
         track.lastFile = track.lastLine = -1;
         return;
     }
-    if (c.userStmt || !userFiles_.count(c.stmt->file)) return;  // inside strun's library
+    const int file = c.stmt->file;
+    if (c.userStmt || file < 0 || static_cast<size_t>(file) >= isUser_.size() || !isUser_[static_cast<size_t>(file)]) return;  // inside strun's library
     const size_t depth = static_cast<size_t>(c.depth);
     if (track.frames.size() > depth + 1) track.frames.resize(depth + 1);
     // A loop's back edge ticks with the statement that ran last: the same
@@ -129,12 +215,15 @@ void DebugSession::observe(int task, const exec::Ctx& c) {
         track.lastLine = -1;
         return;
     }
-    const int line = userLine_(c.stmt->file, c.stmt->line);
-    const bool newLine = track.lastFile != c.stmt->file || track.lastLine != line;
-    track.lastFile = c.stmt->file;
+    // Lines of the compiled text here (the file's own only for the lookup below).
+    const int line = c.stmt->line;
+    const bool newLine = track.lastFile != file || track.lastLine != line;
+    track.lastFile = file;
     track.lastLine = line;
-    if (entryPending_.exchange(false)) return stopHere(task, "entry", "", {});
-    if (pauseRequested_.exchange(false)) return stopHere(task, "pause", "", {});
+    if (entryPending_.load(std::memory_order_relaxed) && entryPending_.exchange(false)) return stopHere(task, "entry", "", {});
+    // A pause waits for a statement whose whole call stack is known (at
+    // once when watching began at this call level or outside any call).
+    if (pauseRequested_ && complete(track) && pauseRequested_.exchange(false)) return stopHere(task, "pause", "", {});
     if (stepping_) {
         std::unique_lock<std::mutex> lock(mutex_);
         if (step_ != StepMode::None && stepTask_ == task) {
@@ -146,12 +235,14 @@ void DebugSession::observe(int task, const exec::Ctx& c) {
             }
         }
     }
-    if (!hasBreakpoints_ || !newLine) return;
+    if (!newLine || line < 0 || line > lineCounts_[static_cast<size_t>(file)] ||
+        !breakpointLines_[static_cast<size_t>(file)][static_cast<size_t>(line)].load(std::memory_order_relaxed))
+        return;
     std::vector<int> hit;
     std::vector<std::string> logs;
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        auto it = breakpoints_.find({c.stmt->file, line});
+        auto it = breakpoints_.find({file, userLine_(file, line)});
         if (it == breakpoints_.end()) return;
         for (LineBreakpoint& bp : it->second) {
             std::string log;
@@ -186,6 +277,9 @@ bool DebugSession::breakpointFires(LineBreakpoint& bp, const FrameRecord& frame,
 }
 
 void DebugSession::stopHere(int task, const std::string& reason, const std::string& text, const std::vector<int>& hitIds) {
+    rt::Scheduler* s = sched();
+    // PLC time at the stop (on the real clock it goes on meanwhile).
+    const rt::PlcTime stoppedAt = s ? s->currentTime() : 0;
     std::unique_lock<std::mutex> lock(mutex_);
     if (terminating_) return;
     step_ = StepMode::None;
@@ -197,7 +291,20 @@ void DebugSession::stopHere(int task, const std::string& reason, const std::stri
     lock.unlock();
     events_.stopped(reason, task + 1, text, hitIds);
     lock.lock();
-    resumed_.wait(lock, [&] { return !stopped_ || terminating_; });
+    for (;;) {
+        resumed_.wait(lock, [&] { return !stopped_ || terminating_ || (work_ && !workDone_); });
+        if (!stopped_ || terminating_) break;
+        // Work the protocol thread hands over (a write through the control plane).
+        const std::function<void()>* work = work_;
+        lock.unlock();
+        (*work)();
+        lock.lock();
+        workDone_ = true;
+        resumed_.notify_all();
+    }
+    lock.unlock();
+    // The stop does not count against the watchdogs (decision 0273).
+    if (s && !terminating_) s->excludeFromWatchdogs(s->currentTime() - stoppedAt);
 }
 
 }  // namespace strun::editors::dap

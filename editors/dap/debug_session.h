@@ -68,23 +68,39 @@ class DebugSession final : public rt::AttentionHandler {
 public:
     DebugSession(sema::ProgramModel& model, std::vector<project::TaskRunner*> runners, std::vector<std::string> taskNames,
                  std::set<int> userFiles, std::function<int(int file, int line)> userLine, SessionEvents events,
-                 FrameEvaluator& evaluator, std::mutex& evaluatorMutex);
+                 FrameEvaluator& evaluator, std::mutex& evaluatorMutex, const std::vector<int>& lineCounts);
 
-    void attach(rt::Scheduler* scheduler) { scheduler_ = scheduler; }
-    void detach() { scheduler_ = nullptr; }
+    // The run's scheduler (PLC thread, before it runs); `virtualClock`: its clock.
+    void attach(rt::Scheduler* scheduler, bool virtualClock);
+    void detach() { scheduler_.store(nullptr); }
 
     // ---- from the protocol thread
     void setBreakpoints(int file, std::vector<LineBreakpoint> breakpoints);  // replaces that file's
-    void setExceptionBreakpoints(bool runtimeFaults) { stopOnFaults_ = runtimeFaults; }
-    void setStopOnEntry(bool on) { entryPending_ = on; }
-    void requestPause() { pauseRequested_ = true; }
+    void setExceptionBreakpoints(bool runtimeFaults) {
+        stopOnFaults_ = runtimeFaults;
+        updateWatching();
+    }
+    void setStopOnEntry(bool on) {
+        entryPending_ = on;
+        updateWatching();
+    }
+    void requestPause() {
+        pauseRequested_ = true;
+        updateWatching();
+    }
     // Resumes a stopped run; `task` is the stopped task for a step.
     void resume(StepMode mode);
     // Ends the run: a stopped PLC thread returns and the scheduler stops.
     void terminate();
     bool stopped() const { return stopped_; }
     int stoppedTask() const { return stoppedTask_; }
-    // The stopped task's frames (innermost last); valid while stopped.
+    // Runs `work` on the PLC thread while the run is stopped (the thread
+    // that owns the program's storage and the control plane's queue) and
+    // waits for it. False (and `work` not run) when the run is not stopped.
+    bool runWhileStopped(const std::function<void()>& work);
+    // A task's frames (innermost last), valid while stopped: the stopped
+    // task's, or those of a task preempted in the middle of an activation
+    // (where it was preempted); empty for a task between activations.
     std::vector<FrameRecord> frames(int task) const;
     // The PouInfo of a frame's POU (by the PouCode name the frame carries).
     sema::PouInfo* pouOf(const std::string* name) const;
@@ -92,19 +108,31 @@ public:
     // ---- AttentionHandler (the PLC thread)
     bool onAttention() override;
     void onFault(rt::DiagCode code, std::string_view pou, int line, std::string message, int file = -1, int col = 0) override;
-    rt::PlcTime currentTime() override { return scheduler_->currentTime(); }
-    int64_t calendarNanos() override { return scheduler_->calendarNanos(); }
-    int64_t taskStartCalendarNanos() override { return scheduler_->taskStartCalendarNanos(); }
-    rt::PlcTime currentTaskInterval() override { return scheduler_->currentTaskInterval(); }
-    bool setCurrentTaskInterval(rt::PlcTime period) override { return scheduler_->setCurrentTaskInterval(period); }
+    rt::PlcTime currentTime() override { return sched()->currentTime(); }
+    int64_t calendarNanos() override { return sched()->calendarNanos(); }
+    int64_t taskStartCalendarNanos() override { return sched()->taskStartCalendarNanos(); }
+    rt::PlcTime currentTaskInterval() override { return sched()->currentTaskInterval(); }
+    bool setCurrentTaskInterval(rt::PlcTime period) override { return sched()->setCurrentTaskInterval(period); }
+    void onLog(std::string_view pou, int line, std::string message, int file, int col) override {
+        sched()->onLog(pou, line, std::move(message), file, col);
+    }
+    std::string currentTaskName() const override { return sched()->currentTaskName(); }
+    int currentTaskIndex() const override { return sched()->currentTaskIndex(); }
+    bool taskInfo(int index, TaskInfo& out) const override { return sched()->taskInfo(index, out); }
 
 private:
     struct TaskTrack {
-        std::vector<FrameRecord> frames;  // by call depth
+        std::vector<FrameRecord> frames;  // by call depth; a null stmt: not seen since watching began
         int lastFile = -1, lastLine = -1;  // the line of the last statement started (breakpoints fire once per line reached)
+        uint64_t epoch = 0;                // watchEpoch_ when these frames were recorded
     };
+    rt::Scheduler* sched() const { return scheduler_.load(std::memory_order_acquire); }
     int runningTask() const;
     void observe(int task, const exec::Ctx& c);
+    // Whether every statement must reach observe() (a breakpoint, a step, a
+    // pause, a stop on entry or on faults is wanted); tells the scheduler.
+    void updateWatching();
+    static bool complete(const TaskTrack& track);
     // Blocks the PLC thread until resumed; false when the run is to end.
     void stopHere(int task, const std::string& reason, const std::string& text, const std::vector<int>& hitIds);
     bool breakpointFires(LineBreakpoint& bp, const FrameRecord& frame, std::string& log);
@@ -118,8 +146,22 @@ private:
     FrameEvaluator& evaluator_;
     std::mutex& evaluatorMutex_;
     std::map<const std::string*, sema::PouInfo*> pouByName_;
-    rt::Scheduler* scheduler_ = nullptr;
+    std::atomic<rt::Scheduler*> scheduler_{nullptr};
+    bool virtualClock_ = true;
     std::vector<TaskTrack> tracks_;
+    // By source index: a user's file (breakpoints and frames are only there).
+    std::vector<char> isUser_;
+    // By source index, then compiled-text line: 1 where a breakpoint is (the
+    // PLC thread reads it at every statement without taking the lock).
+    std::vector<std::unique_ptr<std::atomic<uint8_t>[]>> breakpointLines_;
+    std::vector<int> lineCounts_;
+    // Watching every statement (see updateWatching); each time it starts the
+    // epoch grows, and frames recorded before are stale.
+    std::atomic<bool> watching_{false};
+    std::atomic<uint64_t> watchEpoch_{1};
+    std::mutex watchMutex_;
+    const std::function<void()>* work_ = nullptr;  // under mutex_: runWhileStopped's
+    bool workDone_ = false;
 
     mutable std::mutex mutex_;
     std::condition_variable resumed_;

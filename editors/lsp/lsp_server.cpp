@@ -391,7 +391,12 @@ void LspServer::recompile() {
     for (const auto& [key, doc] : documents_)
         if (std::find(paths.begin(), paths.end(), key) == paths.end()) paths.push_back(key);
     std::sort(paths.begin(), paths.end());
-    auto sources = std::make_unique<SourceSet>();
+    // The standard library is parsed once per server; its files come first.
+    if (!library_) {
+        CompileLog libraryLog;
+        library_ = project::parseLibrary(libraryLog);
+    }
+    auto sources = std::make_unique<SourceSet>(library_->sources);
     std::vector<int> userFiles;
     CompileLog log;
     size_t bytes = 0;
@@ -414,7 +419,9 @@ void LspServer::recompile() {
     // The previous compile is freed after the diagnostics are out (freeing a
     // large project's model is a sixth of compiling it).
     retired_ = std::move(current_);
-    current_ = std::make_shared<ProjectIndex>(std::move(sources), std::move(userFiles), std::move(log), options_);
+    // Only the files whose text changed are parsed again (decision 0270).
+    auto units = parsed_.units(*sources, userFiles, log);
+    current_ = std::make_shared<ProjectIndex>(std::move(sources), std::move(userFiles), std::move(log), options_, *library_, std::move(units));
     if (current_->checked()) lastChecked_ = current_;
 }
 

@@ -1,8 +1,9 @@
 // strun lsp: a Language Server Protocol 3.17 server on stdin / stdout
 // (docs/editors.md). The project is every source under the workspace folder
 // with the open documents in their edited state; after each change the
-// whole project is compiled again (fast enough: see docs/editors.md for the
-// figures) and the diagnostics of every open document are published.
+// project is checked again, with only the changed files parsed again
+// (parse_cache.h; figures in docs/editors.md), and the diagnostics of every
+// open document are published.
 #pragma once
 
 #include <condition_variable>
@@ -15,7 +16,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "editors/lsp/parse_cache.h"
 #include "editors/lsp/project_index.h"
+#include "interpreter/project/compile.h"
 #include "editors/protocol/message_stream.h"
 #include "interpreter/sema/compile_options.h"
 
@@ -88,6 +91,8 @@ private:
     // The last compile the checker ran through (a half-typed `x.` stops the
     // parser): completion and signature help read it while the text is broken.
     std::shared_ptr<ProjectIndex> lastChecked_;
+    std::unique_ptr<project::ParsedLibrary> library_;  // lent to every compile
+    ParseCache parsed_;                                 // the user's files as last parsed
     std::shared_ptr<ProjectIndex> current_;
     std::shared_ptr<ProjectIndex> retired_;
 };

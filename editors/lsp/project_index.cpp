@@ -101,13 +101,23 @@ ast::Loc nameOr(const ast::Loc& name, const ast::Loc& fallback) { return name.li
 }  // namespace
 
 ProjectIndex::ProjectIndex(std::unique_ptr<SourceSet> sources, std::vector<int> userFiles, CompileLog log,
-                           const sema::CompileOptions& options)
-    : sources_(std::move(sources)), userFiles_(std::move(userFiles)), log_(std::move(log)) {
+                           const sema::CompileOptions& options, project::ParsedLibrary& library,
+                           std::map<int, std::shared_ptr<ast::CompilationUnit>> userUnits)
+    : sources_(std::move(sources)), userFiles_(std::move(userFiles)), log_(std::move(log)), userUnits_(std::move(userUnits)) {
     userFileSet_.insert(userFiles_.begin(), userFiles_.end());
     project::CompileExtras extras;
     extras.observer = this;
     extras.modelEvenWithErrors = &model_;
-    if (auto compiled = project::compileProject(*sources_, userFiles_, log_, options, nullptr, &units_, &extras)) model_ = std::move(compiled);
+    for (auto& [file, unit] : userUnits_) extras.parsed[file] = unit.get();
+    std::vector<size_t> libraryUsed;
+    extras.libraryUnitsUsed = &libraryUsed;
+    if (auto compiled = project::compileProject(*sources_, userFiles_, log_, options, &library, nullptr, &extras)) model_ = std::move(compiled);
+    // The units checked: the library's the project uses (they stay where
+    // they are, in the server's ParsedLibrary), then the user's.
+    std::vector<const ast::CompilationUnit*> units;
+    for (size_t k : libraryUsed) units.push_back(&library.units[k]);
+    for (int f : userFiles_)
+        if (auto it = userUnits_.find(f); it != userUnits_.end()) units.push_back(it->second.get());
     if (model_) {
         for (sema::VarSym* g : model_->globals) globalVars_.emplace(upper(g->name), g);
         for (const auto& info : model_->pouStore)
@@ -119,9 +129,9 @@ ProjectIndex::ProjectIndex(std::unique_ptr<SourceSet> sources, std::vector<int> 
             for (const auto& [name, m] : info->methods)
                 if (m->ast) pouInfos_[m->ast] = m;
         }
-    for (const auto& unit : units_) collectUnit(unit);
-    for (const auto& unit : units_)
-        if (userFileSet_.count(unit.file)) resolveUnit(unit);
+    for (const ast::CompilationUnit* unit : units) collectUnit(*unit);
+    for (const ast::CompilationUnit* unit : units)
+        if (userFileSet_.count(unit->file)) resolveUnit(*unit);
     for (auto& [file, list] : occurrences_) {
         std::sort(list.begin(), list.end(), [](const Occurrence& a, const Occurrence& b) {
             return std::tie(a.line, a.col, a.declaration) < std::tie(b.line, b.col, b.declaration);

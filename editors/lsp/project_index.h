@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "interpreter/ast/ast.h"
+#include "interpreter/project/compile.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/compile_options.h"
 #include "interpreter/sema/expr_observer.h"
@@ -55,8 +56,12 @@ struct Occurrence {
 
 class ProjectIndex : private sema::ExprObserver {
 public:
-    // Compiles `sources` (the user's files `userFiles`) and indexes them.
-    ProjectIndex(std::unique_ptr<SourceSet> sources, std::vector<int> userFiles, CompileLog log, const sema::CompileOptions& options);
+    // Compiles `sources` (the user's files `userFiles`, parsed already:
+    // `userUnits`, their syntax diagnostics in `log`) and indexes them.
+    // `sources` starts with a copy of `library`'s files, whose parsed units
+    // are lent to the compile (parse_cache.h, decision 0270).
+    ProjectIndex(std::unique_ptr<SourceSet> sources, std::vector<int> userFiles, CompileLog log, const sema::CompileOptions& options,
+                 project::ParsedLibrary& library, std::map<int, std::shared_ptr<ast::CompilationUnit>> userUnits);
     ~ProjectIndex() override;
 
     const SourceSet& sources() const { return *sources_; }
@@ -118,7 +123,7 @@ private:
     std::vector<int> userFiles_;
     std::set<int> userFileSet_;
     CompileLog log_;
-    std::vector<ast::CompilationUnit> units_;
+    std::map<int, std::shared_ptr<ast::CompilationUnit>> userUnits_;  // shared with the parse cache
     std::unique_ptr<sema::ProgramModel> model_;
     struct Seen {
         const sema::Type* type = nullptr;

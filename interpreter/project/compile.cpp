@@ -59,7 +59,9 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
             toParse.push_back(index);
         }
     }
-    toParse.insert(toParse.end(), userFiles.begin(), userFiles.end());
+    for (int f : userFiles)
+        if (!extras || !extras->parsed.count(f)) toParse.push_back(f);
+    if (extras && extras->libraryUnitsUsed) *extras->libraryUnitsUsed = borrowed;
     // Hands the lent library units back however this function ends.
     struct GiveBack {
         ParsedLibrary* library;
@@ -78,7 +80,32 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
             if (out) *out = std::move(units);
         }
     } keep{library == nullptr ? keepUnits : nullptr, units};
-    for (ast::CompilationUnit& unit : ast::parseFiles(sources, toParse, log)) units.push_back(std::move(unit));
+    // Lent user units (CompileExtras::parsed), handed back however this function ends.
+    struct GiveBackParsed {
+        std::vector<std::pair<size_t, ast::CompilationUnit*>> lent;  // index in `units` -> owner
+        std::vector<ast::CompilationUnit>& units;
+        ~GiveBackParsed() {
+            for (auto& [k, owner] : lent)
+                if (k < units.size()) *owner = std::move(units[k]);
+        }
+    } giveBackParsed{{}, units};
+    std::vector<ast::CompilationUnit> parsedHere = ast::parseFiles(sources, toParse, log);
+    size_t next = 0;
+    for (ast::CompilationUnit& unit : parsedHere) {
+        // The library's files (when not lent) come first, as before.
+        if (libraryFiles.count(unit.file) == 0) break;
+        units.push_back(std::move(unit));
+        ++next;
+    }
+    for (int f : userFiles) {
+        auto lent = extras ? extras->parsed.find(f) : std::map<int, ast::CompilationUnit*>::iterator();
+        if (extras && lent != extras->parsed.end()) {
+            giveBackParsed.lent.emplace_back(units.size(), lent->second);
+            units.push_back(std::move(*lent->second));
+        } else if (next < parsedHere.size()) {
+            units.push_back(std::move(parsedHere[next++]));
+        }
+    }
     // After local syntax errors the recovered tree is still checked, so that
     // the later mistakes of the file are reported too (decision 0161).
     const SyntaxDamage damage = assessSyntaxErrors(log);

@@ -3,6 +3,7 @@
 // together with the user's files, so both are checked as one project.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <set>
 #include <vector>
@@ -39,6 +40,15 @@ struct CompileExtras {
     // Receives the checker, for expressions checked later in a POU's scope
     // (it refers to the model, the log and the kept AST).
     std::unique_ptr<sema::Checker>* keepChecker = nullptr;
+    // User files parsed already (file index -> its unit), lent as a
+    // ParsedLibrary's units are: moved in, checked (the checker does not
+    // change them) and handed back however the compile ends; only the other
+    // files are parsed. Their syntax diagnostics must be in the log already.
+    // An editor re-parses only the file an edit changed (decision 0270).
+    std::map<int, ast::CompilationUnit*> parsed;
+    // Receives the indices of the lent library's units the project's
+    // selection checked (library_selection.h).
+    std::vector<size_t>* libraryUnitsUsed = nullptr;
 };
 
 // Returns null when the project does not compile (errors are in `log`).

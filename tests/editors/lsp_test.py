@@ -194,6 +194,52 @@ def main():
                                       "contentChanges": [{"text": MAIN_ST}]})
     diagnostics_for(paths["main.st"])
 
+    # ---- only the changed file is parsed again (decision 0270): the syntax
+    # error of another open document is reported unchanged after an edit of
+    # main.st (its parse kept), and as `strun check` reports it; fixing it
+    # brings the project back.
+    bad_blocks = BLOCKS_ST.replace("count := count + 1;", "count := count + ;", 1)
+    notify("textDocument/didOpen", {"textDocument": {"uri": uri(paths["blocks.st"]), "languageId": "iec-st", "version": 1, "text": bad_blocks}})
+    first = diagnostics_for(paths["blocks.st"])["diagnostics"]
+    with open(os.path.join(work, "bad_blocks_copy.st"), "w") as f:
+        f.write(bad_blocks)
+    check = subprocess.run([STRUN, "check", "--diagnostics-format", "json", paths["types.st"], os.path.join(work, "bad_blocks_copy.st"),
+                            paths["main.st"], paths["FB_Valve.TcPOU"]], capture_output=True, text=True)
+    os.remove(os.path.join(work, "bad_blocks_copy.st"))
+    expected = [json.loads(l) for l in check.stderr.splitlines() if l.startswith("{")]
+    expected = [(e["message"], e["line"]) for e in expected if e["file"].endswith("bad_blocks_copy.st")]
+    assert expected and [(g["message"], g["range"]["start"]["line"] + 1) for g in first] == expected, (first, expected)
+    notify("textDocument/didChange", {"textDocument": {"uri": uri(paths["main.st"]), "version": 41},
+                                      "contentChanges": [{"text": MAIN_ST + "\n"}]})
+    again = c.wait(lambda m: m.get("method") == "textDocument/publishDiagnostics" and m["params"]["uri"] == uri(paths["blocks.st"])
+                   and m["params"].get("version") == 1, 20, "blocks.st after main.st changed")["params"]["diagnostics"]
+    assert again == first, (again, first)
+    notify("textDocument/didChange", {"textDocument": {"uri": uri(paths["blocks.st"]), "version": 2},
+                                      "contentChanges": [{"text": BLOCKS_ST}]})
+    fixed = diagnostics_for(paths["blocks.st"])
+    assert fixed["version"] == 2 and all(g["severity"] == 2 for g in fixed["diagnostics"]), fixed  # warnings only (an unused variable)
+    notify("textDocument/didChange", {"textDocument": {"uri": uri(paths["main.st"]), "version": 42},
+                                      "contentChanges": [{"text": MAIN_ST}]})
+    fixed = c.wait(lambda m: m.get("method") == "textDocument/publishDiagnostics" and m["params"]["uri"] == uri(paths["main.st"])
+                   and m["params"].get("version") == 42, 20, "main.st v42")["params"]
+    assert fixed["diagnostics"] == [], fixed
+    c.seen = [m for m in c.seen if m.get("method") != "textDocument/publishDiagnostics"]  # the older refreshes
+    # A new document that sorts before every file shifts their indices in the
+    # compile: they are parsed again, and positions still come out right.
+    first_path = os.path.join(work, "aaa_new.st")
+    first_text = "PROGRAM Extra\nVAR\n    c2 : FB_Counter;\nEND_VAR\nc2(enable := FALSE);\nc2.count := nothere;\nEND_PROGRAM\n"
+    notify("textDocument/didOpen", {"textDocument": {"uri": uri(first_path), "languageId": "iec-st", "version": 1, "text": first_text}})
+    extra = diagnostics_for(first_path)["diagnostics"]
+    assert [(g["message"], g["range"]["start"]) for g in extra] == [("undeclared identifier 'nothere'", {"line": 5, "character": 12})], extra
+    loc = request("textDocument/definition", {"textDocument": {"uri": uri(first_path)}, "position": {"line": 2, "character": 12}})
+    assert loc["uri"] == uri(paths["blocks.st"]) and loc["range"]["start"] == pos_of(BLOCKS_ST, "FB_Counter"), loc
+    h = request("textDocument/hover", {"textDocument": {"uri": uri(paths["main.st"])}, "position": pos_of(MAIN_ST, "counter(", 0, 2)})
+    assert "counter : FB_Counter" in h["contents"]["value"] and "main.st:3" in h["contents"]["value"], h
+    notify("textDocument/didClose", {"textDocument": {"uri": uri(first_path)}})
+    c.wait(lambda m: m.get("method") == "textDocument/publishDiagnostics" and m["params"]["uri"] == uri(first_path)
+           and m["params"]["diagnostics"] == [], 20, "aaa_new.st cleared")
+    c.seen = [m for m in c.seen if m.get("method") != "textDocument/publishDiagnostics"]
+
     main_uri = {"uri": uri(paths["main.st"])}
 
     # ---- hover: a variable's type and where it is declared; a POU's signature
