@@ -7,6 +7,8 @@ DEBIAN_PACKAGES = cmake make g++ antlr4 default-jre-headless libantlr4-runtime-d
 DEBIAN_PACKAGES += python3 chromium nodejs npm
 # Modbus TCP's tests and example (tests/modbus/, programs/modbus_bench/): pymodbus as the peer.
 DEBIAN_PACKAGES += python3-pymodbus python3-serial-asyncio
+# The editor set-ups of docs/editors.md, tried by tests/editors/editor_setups: Neovim's built-in LSP client, Emacs with eglot.
+DEBIAN_PACKAGES += neovim emacs-nox elpa-eglot
 EXAMPLE ?= programs/bottle_counter.st
 RUN_ARGS ?= --virtual --cycles 2000 --dump
 
