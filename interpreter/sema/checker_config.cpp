@@ -135,7 +135,20 @@ void Checker::buildConfiguration() {
         for (const auto& p : td->params) {
             std::string key = upper(p.name);
             if (!p.value) continue;
-            if (key == "INTERVAL") {
+            const std::string word = p.value->kind == ast::ExprKind::Literal ? upper(p.value->text) : "";
+            if (key == "INTERVAL" && (word == "TRUE" || word == "FALSE")) {
+                // INTERVAL := TRUE: a cyclic task with the target's default cycle
+                // time, as the IDE creates one (Baosky: 20 ms; decision 0297).
+                if (word == "TRUE" && profile().defaultCyclicInterval > 0) {
+                    s.interval = profile().defaultCyclicInterval;
+                    hasInterval = true;
+                } else {
+                    error(p.value->loc, fmt::format("INTERVAL := {} of task '{}': {}; write the cycle time (INTERVAL := T#20ms)", word, s.name,
+                                                    word == "FALSE" ? "an INTERVAL is a time"
+                                                                    : fmt::format("{} has no default cycle time for a cyclic task", profile().description)));
+                }
+                s.intervalGiven = true;
+            } else if (key == "INTERVAL") {
                 rt::PlcTime t = 0;
                 if (constTime(p.value.get(), t)) {
                     s.interval = t;
@@ -153,7 +166,6 @@ void Checker::buildConfiguration() {
             } else if (key == "WATCHDOG") {
                 // WATCHDOG := TRUE: "check Watchdog" without a time, the seed's
                 // default applies (below); FALSE: no watchdog (decision 0244).
-                const std::string word = p.value->kind == ast::ExprKind::Literal ? upper(p.value->text) : "";
                 if (word == "TRUE" || word == "FALSE") {
                     watchdogOn = word == "TRUE";
                     s.watchdog = 0;

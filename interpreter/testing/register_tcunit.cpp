@@ -307,10 +307,16 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
             return result(ck, n, boolean ? TK::Bool : TK::UInt, call);
         });
     }
-    ck.addBuiltin("TCUNIT_ADSLOGSTR", [](Checker& ck, CallArgs& call) -> Checked {
+    ck.addBuiltin("TCUNIT_ADSLOGSTR", [&reg](Checker& ck, CallArgs& call) -> Checked {
         std::vector<Checked> a;
         if (!bindArgs(ck, call, {{"msgCtrlMask", false}, {"msgFmtStr", true}, {"strArg", false}}, a)) return ck.bad(call.loc);
         auto* n = ck.pool().make<AdsLogNode>();
+        n->reg = &reg;
+        if (a[0].ok && a[0].node) {
+            Checked mask = ck.coerce(a[0], ck.types().elementary(TK::DWord), a[0].loc, "msgCtrlMask");
+            if (!mask.ok) return ck.bad(call.loc);
+            n->mask = mask.node;
+        }
         if (!stringInput(ck, a[1], call, "msgFmtStr", n->format, n->formatType) ||
             !stringInput(ck, a[2], call, "strArg", n->arg, n->argType))
             return ck.bad(call.loc);
