@@ -373,6 +373,13 @@ bool FriendlyErrorStrategy::reportUnclosedBlock(antlr4::Parser* parser, antlr4::
                                           fmt::format("'{}' has no matching '{}'", opener->getText(), closerName));
         d.note(Loc{reporter_->fileIndex(), static_cast<int>(found->getLine()), static_cast<int>(found->getCharPositionInLine()) + 1},
                fmt::format("'{}' expected before {}", closerName, describeFoundToken(found)));
+        if (found->getType() == L::END_CASE) {
+            // The enclosing CASE's next labels (`2:`) were read inside the open
+            // block, where they cannot be labels: the same mistake, not news.
+            antlr4::TokenStream* tokens = parser->getTokenStream();
+            for (size_t i = opener->getTokenIndex(); i < found->getTokenIndex(); ++i)
+                if (tokens->get(i)->getType() == L::COLON) reporter_->markLine(tokens->get(i)->getLine());
+        }
         if (closer == L::END_IF) {
             // `ELSE IF` opens an IF of its own inside the ELSE branch.
             antlr4::TokenStream* tokens = parser->getTokenStream();
@@ -406,6 +413,10 @@ void FriendlyErrorStrategy::reportAt(antlr4::Parser* parser, antlr4::Token* foun
         orphanCloser_ = expected.contains(static_cast<size_t>(L::THEN)) ? L::END_IF : L::END_WHILE;
         return;
     }
+    // `FOR x = 1 TO 10 DO`: recovery drops the FOR, so its END_FOR comes unexpected: the same mistake.
+    if (found != nullptr && found->getType() == L::EQ && expected.contains(static_cast<size_t>(L::ASSIGN)) &&
+        dynamic_cast<P::ForStmtContext*>(parser->getContext()) != nullptr)
+        orphanCloser_ = L::END_FOR;
     if (found != nullptr && orphanCloser_ != 0 && found->getType() == orphanCloser_) {
         orphanCloser_ = 0;
         return;
