@@ -27,6 +27,7 @@
 #include "runtime/vcd_recorder.h"
 #include "interpreter/project/dump_json.h"
 #include "interpreter/project/retain_store.h"
+#include "runtime/system_area.h"
 #include "runtime/file_sandbox.h"
 #include "interpreter/project/task_runner.h"
 #include "interpreter/project/variable_path.h"
@@ -221,6 +222,8 @@ int runCommand(const CommandLine& line) {
     std::unique_ptr<project::RetainStore> retain;
     if (!line.retainFile.empty()) {
         retain = std::make_unique<project::RetainStore>(model, line.retainFile, std::cerr);
+        if (run.profile && run.profile->systemVariables == rt::SystemVariables::Modicon)
+            retain->keepSystemWords(model, rt::SystemArea::wordsKeptOverWarmStart());  // max/min cycle times (decision 0296)
         if (!retain->start(line.cold, inputs, error)) return usage(error);
         retain->setInterval(std::chrono::nanoseconds(line.retainEvery.value_or(1'000'000'000)));
     } else if (line.cold || line.retainEvery) {

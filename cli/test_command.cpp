@@ -15,6 +15,7 @@
 #include "interpreter/source/project_inputs.h"
 #include "interpreter/testing/junit_merge.h"
 #include "interpreter/testing/suite_slices.h"
+#include "interpreter/testing/tcunit_parameters.h"
 #include "interpreter/testing/test_registry.h"
 #include "interpreter/testing/test_report.h"
 #include "interpreter/testing/test_session.h"
@@ -119,6 +120,10 @@ CLI::App* addTestCommand(CLI::App& app, CommandLine& line, TestCommandLine& test
            "run only the K-th of N slices of the suites (declaration order), e.g. one per CI machine")
         ->transform(shardValidator())
         ->type_name("K/N");
+    cmd->add_option("--tcunit-param", test.tcunitParams,
+                    "set one of TcUnit's library parameters (GVL_Param_TcUnit), e.g. MaxNumberOfTestsForEachTestSuite=200 (repeatable)")
+        ->type_name("NAME=VALUE")
+        ->allow_extra_args(false);
     cmd->add_option("--set", line.sets,
                     "at PLC time TIME (default 0) write the ST literal VALUE to a variable or direct input (repeatable)")
         ->type_name("NAME=VALUE[@TIME]")
@@ -149,7 +154,13 @@ int testCommand(const CommandLine& line, const TestCommandLine& test) {
         for (int i = 0; i < sources.size(); ++i) inputs.push_back(sources.file(i).path);
         if (std::string problem = rt::outputPathProblem("--junit", test.junit, inputs); !problem.empty()) return usage(problem);
     }
-    auto model = testing::compileForTests(sources, indices, log, line.compile);
+    // TcUnit's library parameters: --tcunit-param wins over a .plcproj under a project folder.
+    sema::CompileOptions compile = line.compile;
+    for (const auto& p : test.tcunitParams)
+        if (!testing::parseTcUnitParameter(p, compile.tcunitParameters, error)) return usage(error);
+    for (const auto& path : line.files)
+        if (!testing::readPlcprojParameters(path, compile.tcunitParameters, error)) return usage(error);
+    auto model = testing::compileForTests(sources, indices, log, compile);
     if (printDiagnostics(log, sources, line.diagnostics, std::cerr, stderrWantsColor(line.diagnostics.color))) return kExitCompile;
     if (!model) return kExitCompile;
     testing::TestRegistry& reg = *model->tests;

@@ -22,6 +22,7 @@ struct TestCommandLine {
     bool allowEmpty = false;            // --allow-empty: no test to run is not an error
     size_t jobs = 1;                    // -j N: suites in N processes (0: one per processor)
     size_t shard = 0, shards = 0;       // --shard K/N (1-based K); 0/0: every suite
+    std::vector<std::string> tcunitParams;  // --tcunit-param NAME=VALUE (GVL_Param_TcUnit)
 };
 
 CLI::App* addTestCommand(CLI::App& app, CommandLine& line, TestCommandLine& test);

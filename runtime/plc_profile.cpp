@@ -54,8 +54,10 @@ constexpr PlcProfile makeBaosky() {
     p.maxRepeatTimeEvents = 6;
     p.maxProgramsPerTask = 99;
     p.startupPriorityFixed = true;
+    p.startupInterruptedOnWatchdog = true;
     p.minInterval = 1 * kMillisecond;
     p.maxInterval = 60'000 * kMillisecond;
+    p.defaultCyclicInterval = 20 * kMillisecond;  // "the default cycle time of the first established periodic cyclic task is 20ms"
     p.minWatchdog = 10 * kMillisecond;
     p.maxWatchdog = 60'000 * kMillisecond;
     p.watchdogAtLeastInterval = true;

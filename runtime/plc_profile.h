@@ -97,10 +97,17 @@ struct PlcProfile {
     int maxRepeatTimeEvents = 0;
     int maxProgramsPerTask = 0;    // 0: no limit
     bool startupPriorityFixed = false;  // Baosky: PRIORITY on the startup task is an error
+    // Baosky: the startup task "can only be interrupted by user program error
+    // tasks and execution timeout tasks": its watchdog releases the timeout
+    // task, which interrupts it, and it goes on (not aborted; decision 0297).
+    bool startupInterruptedOnWatchdog = false;
     std::span<const FixedTask> fixedTasks;  // non-empty: only these task names
     PlcTime minInterval = 0;  // cyclic INTERVAL range
     PlcTime maxInterval = 0;
     PlcTime intervalStep = 1;  // INTERVAL must be a multiple of this (M241: 4 ms)
+    // `INTERVAL := TRUE`: a cyclic task with the cycle time the IDE gives a new
+    // one (Baosky: 20 ms; decision 0297); 0: the target has none to give.
+    PlcTime defaultCyclicInterval = 0;
     PlcTime minWatchdog = 0;   // WATCHDOG range when one is given
     PlcTime maxWatchdog = 0;
     bool watchdogAtLeastInterval = false;  // Baosky: a cyclic task's watchdog >= its period

@@ -18,6 +18,9 @@ public:
     virtual void taskRunning(size_t task, bool running, PlcTime now) = 0;
     // An activation of `task` ended (completed or aborted): sample values.
     virtual void activationEnded(size_t task, PlcTime now) = 0;
+    // An output phase copied the program's %Q image to the physical outputs
+    // (after activationEnded of the same activation).
+    virtual void outputsWritten(PlcTime) {}
     // The run is over at `end` (any reason): flush.
     virtual void runEnded(PlcTime end) = 0;
 };

@@ -559,8 +559,10 @@ void Scheduler::finishActivation(TaskRun& task, bool completed) {
             ((image.physicalOutputs[0] ^ image.outputs[0]) & profile_.fastOutputMask))
             task.drivesFastOutputs = true;
         // An inhibited M340 task still writes its outputs (seed 002).
-        if (!system_ || !system_->outputsInhibited(slot))
+        if (!system_ || !system_->outputsInhibited(slot)) {
             std::memcpy(image.physicalOutputs.data(), image.outputs.data(), std::min(image.outputExtent, ProcessImage::kSize));
+            if (options_.observer) options_.observer->outputsWritten(now);  // --vcd's physical outputs
+        }
         if (!task.inhibited) {
             PlcTime exec = now - task.startedAt;
             ++task.cycles;
@@ -769,11 +771,13 @@ std::string Scheduler::virtualCostNote(PlcTime elapsed) const {
 
 void Scheduler::tripWatchdog(TaskRun& task) {
     task.watchdogAt = kNever;
-    task.abortRequested = true;
+    bool timeoutTaskTripped = &task == timeoutTask_;
+    // Baosky's startup task is interrupted by the timeout task, not aborted (decision 0297).
+    const bool goesOn = profile_.startupInterruptedOnWatchdog && &task == startup_ && timeoutTask_ && !timeoutTaskTripped;
+    task.abortRequested = !goesOn;
     ++task.watchdogTrips;
     trace(&task, "watchdog");
     if (system_) system_->setWatchdogOverflow();
-    bool timeoutTaskTripped = &task == timeoutTask_;
     std::string pou;
     int line = 0, file = -1, col = 0;
     if (task.body) {
@@ -783,7 +787,8 @@ void Scheduler::tripWatchdog(TaskRun& task) {
     record(DiagCode::Watchdog, &task, pou, line,
            std::string(timeoutTaskTripped ? "the execution-timeout task '" : "task '") + task.spec.name +
                "' reached its watchdog of " + formatDuration(task.spec.watchdog) + " (running for " +
-               formatDuration(machine_.now - task.startedAt) + ", preemptions included); the activation is aborted" +
+               formatDuration(machine_.now - task.startedAt) + ", preemptions included); " +
+               (goesOn ? "the execution-timeout task interrupts it and it goes on" : "the activation is aborted") +
                virtualCostNote(machine_.now - task.startedAt),
            file, col);
     PlcState reaction = profile_.watchdogReaction == WatchdogReaction::Halt ? PlcState::Halt : PlcState::Stop;

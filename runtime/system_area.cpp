@@ -14,8 +14,21 @@ uint16_t clampMs(PlcTime nanos) { return uint16_t(std::clamp<PlcTime>(nanos / kM
 
 }  // namespace
 
+std::vector<int> SystemArea::wordsKeptOverWarmStart() {
+    std::vector<int> words;
+    for (int slot = 0; slot < kSlots; ++slot) {
+        words.push_back(kCycleTimeWords + 3 * slot + 1);
+        words.push_back(kCycleTimeWords + 3 * slot + 2);
+    }
+    return words;
+}
+
 void SystemArea::start(const std::array<PlcTime, kSlots>& periods, PlcTime masterWatchdog) {
     for (int slot = 0; slot < kSlots; ++slot) {
+        // A warm start left a measured minimum (or maximum) in the words: go on from it.
+        const int base = kCycleTimeWords + 3 * slot;
+        measured_[size_t(slot)] = word(base + 1) != 0 || word(base + 2) != 0;
+        minMs_[size_t(slot)] = word(base + 2);
         int unitMs = size_t(slot) < profile_.fixedTasks.size() ? profile_.fixedTasks[size_t(slot)].periodUnitMs : 1;
         setWord(slot, clampMs(periods[size_t(slot)] / unitMs));
         setBit(30 + slot, true);

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "runtime/machine.h"
 #include "runtime/plc_profile.h"
@@ -25,7 +26,12 @@ public:
 
     SystemArea(ProcessImage& image, const PlcProfile& profile) : image_(image), profile_(profile) {}
 
-    // At RUN: the period words from the configured periods, %SW11, every task active.
+    // The words a warm start keeps: each task's maximum and minimum cycle
+    // time (seed 002: "taken from the times measured since the last cold restart").
+    static std::vector<int> wordsKeptOverWarmStart();
+    // At RUN: the period words from the configured periods, %SW11, every task
+    // active; maximum and minimum cycle times go on from what the words hold
+    // (zero after a cold start, the kept values after a warm one).
     void start(const std::array<PlcTime, kSlots>& periods, PlcTime masterWatchdog);
     // The running task changes (start/resume: enter; end/preemption: leave):
     // %S19 is the running task's own bit.

@@ -85,6 +85,7 @@ VcdRecorder::VcdRecorder(std::FILE* out, const std::vector<std::string>& taskNam
             case VcdSignal::Kind::Text: decl = "$var string 1 "; break;
         }
         scope->vars.push_back(decl + signalIds_.back() + " " + reference(s.name) + " $end\n");
+        if (s.task == VcdSignal::kAfterOutputPhase) physicalOutputs_.push_back(i);
         for (size_t t = 0; t < byTask_.size(); ++t)
             if (s.task == -1 || (s.task >= 0 && size_t(s.task) == t)) byTask_[t].push_back(i);
     }
@@ -227,6 +228,10 @@ void VcdRecorder::taskRunning(size_t task, bool running, PlcTime now) {
 void VcdRecorder::activationEnded(size_t task, PlcTime now) {
     if (task < byTask_.size()) sample(byTask_[task], now);
     flushIfLarge();
+}
+
+void VcdRecorder::outputsWritten(PlcTime now) {
+    sample(physicalOutputs_, now);
 }
 
 void VcdRecorder::flushIfLarge() {

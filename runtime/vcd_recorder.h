@@ -32,7 +32,9 @@ struct VcdSignal {
     bool isSigned = false;   // Vector: sign-extend before scaling
     int64_t scale = 1;       // Vector: written value = stored value * scale (TIME ms -> ns)
     std::vector<std::pair<int64_t, std::string>> names;  // EnumName: value -> name (size, isSigned as Vector)
-    int task = -1;           // owning task index; -1: sampled at the end of every task's activations; -2: never (no task runs it)
+    int task = -1;           // owning task index; -1: sampled at the end of every task's activations; -2: never (no task runs it);
+                             // kAfterOutputPhase: a physical output, sampled when an output phase wrote them
+    static constexpr int kAfterOutputPhase = -3;
 };
 
 class VcdRecorder final : public RunObserver {
@@ -46,6 +48,7 @@ public:
 
     void taskRunning(size_t task, bool running, PlcTime now) override;
     void activationEnded(size_t task, PlcTime now) override;
+    void outputsWritten(PlcTime now) override;
     void runEnded(PlcTime end) override;
 
     size_t signalCount() const { return signals_.size(); }
@@ -62,6 +65,7 @@ private:
     std::vector<std::string> signalIds_, taskIds_;  // a task without a waveform has an empty id
     std::vector<uint64_t> last_;
     std::vector<std::vector<size_t>> byTask_;  // signals each task samples (globals included)
+    std::vector<size_t> physicalOutputs_;      // signals sampled after an output phase
     std::vector<uint8_t> taskState_;
     PlcTime stamped_ = -1;
     std::string buffer_;

@@ -1,5 +1,6 @@
 // AstBuilder: statements.
 #include "interpreter/ast/ast_builder.h"
+#include "interpreter/ast/syntax_errors.h"
 
 #include <algorithm>
 #include <cctype>
@@ -175,6 +176,14 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
         ExprPtr e = expr(operands[0]);
         if (c->assign != nullptr || c->eq != nullptr) return nullptr;  // right side missing: reported
         if (e->kind != ExprKind::Call) {
+            // `END_WHIL;`: a mistyped keyword, not an expression.
+            if (const antlr4::Token* name = bareName(operands[0]); name != nullptr) {
+                const std::string keyword = mistypedEndKeyword(name->getText());
+                if (!keyword.empty()) {
+                    error(at, fmt::format("'{}' is not a keyword: did you mean '{}'?", name->getText(), keyword));
+                    return nullptr;
+                }
+            }
             const bool comparison = e->kind == ExprKind::Binary && e->op == Op::Eq;
             Diagnostic& d = error(at, fmt::format("'{}' is not a statement: expected ':=' or a call with '(...)'{}",
                                                   sourceText(operands[0]),

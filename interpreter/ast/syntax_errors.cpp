@@ -1,12 +1,14 @@
 #include "interpreter/ast/syntax_errors.h"
 
 #include <algorithm>
+#include <cctype>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "grammar/STLexer.h"
 #include "grammar/STParser.h"
+#include "interpreter/source/closest_name.h"
 
 namespace strun::ast {
 
@@ -185,7 +187,127 @@ size_t closingKeyword(antlr4::ParserRuleContext* c) {
     return 0;
 }
 
+// The keywords that open a declaration section.
+bool isVarSectionKeyword(size_t type) {
+    switch (type) {
+        case L::VAR: case L::VAR_INPUT: case L::VAR_OUTPUT: case L::VAR_IN_OUT: case L::VAR_TEMP: case L::VAR_STAT:
+        case L::VAR_INST: case L::VAR_GLOBAL: case L::VAR_EXTERNAL: case L::VAR_CONFIG: case L::VAR_ACCESS:
+            return true;
+        default:
+            return false;
+    }
+}
+
+// Keywords that end a POU or a type: a VAR block cannot reach past them.
+bool endsDeclarationScope(size_t type) {
+    switch (type) {
+        case L::END_PROGRAM: case L::END_FUNCTION: case L::END_FUNCTION_BLOCK: case L::END_METHOD: case L::END_ACTION:
+        case L::END_PROPERTY: case L::END_GET: case L::END_SET: case L::END_INTERFACE: case L::END_CLASS:
+        case L::END_CONFIGURATION: case L::END_RESOURCE: case L::END_NAMESPACE: case L::END_TYPE:
+            return true;
+        default:
+            return false;
+    }
+}
+
+// Statements that cannot be declarations.
+bool startsStatement(size_t type) {
+    switch (type) {
+        case L::IF: case L::FOR: case L::WHILE: case L::CASE: case L::REPEAT: case L::RETURN: case L::EXIT: case L::CONTINUE:
+            return true;
+        default:
+            return false;
+    }
+}
+
+antlr4::Token* previousOnDefaultChannel(antlr4::TokenStream* tokens, antlr4::Token* token) {
+    for (size_t i = token->getTokenIndex(); i-- > 0;) {
+        antlr4::Token* t = tokens->get(i);
+        if (t->getChannel() == antlr4::Token::DEFAULT_CHANNEL) return t;
+    }
+    return nullptr;
+}
+
 }  // namespace
+
+std::string mistypedEndKeyword(const std::string& word) {
+    static const std::vector<std::string> keywords = {
+        "END_IF", "END_CASE", "END_FOR", "END_WHILE", "END_REPEAT", "END_VAR", "END_PROGRAM", "END_FUNCTION",
+        "END_FUNCTION_BLOCK", "END_METHOD", "END_ACTION", "END_PROPERTY", "END_GET", "END_SET", "END_TYPE", "END_STRUCT",
+        "END_INTERFACE", "END_CLASS", "END_NAMESPACE", "END_CONFIGURATION", "END_RESOURCE", "END_UNION"};
+    std::string upperWord;
+    for (char ch : word) upperWord += static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    // Only words that look like an END_ keyword: a variable called ENDIF stays a variable.
+    if (upperWord.size() < 5 || upperWord.rfind("END", 0) != 0) return {};
+    return closestName(upperWord, keywords);
+}
+
+bool FriendlyErrorStrategy::reportMistypedKeyword(antlr4::Parser* parser, antlr4::Token* found) {
+    if (found == nullptr) return false;
+    antlr4::TokenStream* tokens = parser->getTokenStream();
+    // The word is the offending token (`END_WHIL END_PROGRAM`: the one before it), or
+    // stands alone as a statement somewhere in the block that is left open.
+    auto tryWord = [&](antlr4::Token* word) {
+        if (word == nullptr || !P::isNameToken(word->getType())) return false;
+        const std::string keyword = mistypedEndKeyword(word->getText());
+        if (keyword.empty()) return false;
+        reporter_->report(word->getLine(), word->getCharPositionInLine(),
+                          fmt::format("'{}' is not a keyword: did you mean '{}'?", word->getText(), keyword));
+        return true;
+    };
+    if (tryWord(found) || tryWord(previousOnDefaultChannel(tokens, found))) return true;
+    if (found->getType() != antlr4::Token::EOF && parser->getVocabulary().getSymbolicName(found->getType()).rfind("END_", 0) != 0)
+        return false;
+    for (antlr4::ParserRuleContext* c = parser->getContext(); c != nullptr; c = dynamic_cast<antlr4::ParserRuleContext*>(c->parent)) {
+        const size_t closer = closingKeyword(c);
+        if (closer == 0 || c->getStart() == nullptr) continue;
+        const std::string closerName = parser->getVocabulary().getSymbolicName(closer);
+        for (size_t i = c->getStart()->getTokenIndex() + 1; i < found->getTokenIndex(); ++i) {
+            antlr4::Token* t = tokens->get(i);
+            if (t->getChannel() == antlr4::Token::DEFAULT_CHANNEL && P::isNameToken(t->getType()) &&
+                mistypedEndKeyword(t->getText()) == closerName)
+                return tryWord(t);
+        }
+        return false;  // only the innermost open block
+    }
+    return false;
+}
+
+bool FriendlyErrorStrategy::reportUnclosedVarBlock(antlr4::Parser* parser, antlr4::Token* found) {
+    if (found == nullptr || found->getType() == antlr4::Token::EOF) return false;
+    P::VarBlockContext* block = nullptr;
+    for (antlr4::ParserRuleContext* c = parser->getContext(); c != nullptr && block == nullptr;
+         c = dynamic_cast<antlr4::ParserRuleContext*>(c->parent))
+        block = dynamic_cast<P::VarBlockContext*>(c);
+    if (block == nullptr || block->getStart() == nullptr) return false;
+    antlr4::TokenStream* tokens = parser->getTokenStream();
+    // What comes is code, not a declaration: `x := 1`, `f(...)`, IF ..., or the next VAR section.
+    antlr4::Token* before = found;
+    const size_t type = found->getType();
+    if (type == L::ASSIGN || type == L::LPAREN) {
+        before = previousOnDefaultChannel(tokens, found);
+        if (before == nullptr || !P::isNameToken(before->getType()) || before->getLine() == block->getStart()->getLine()) return false;
+    } else if (!startsStatement(type) && !isVarSectionKeyword(type)) {
+        return false;
+    }
+    // An END_VAR further on (before the POU ends or another section opens)
+    // closes this block: then it is another mistake. A new VAR section itself
+    // says this one was left open.
+    for (size_t i = found->getTokenIndex(); !isVarSectionKeyword(type); ++i) {
+        antlr4::Token* t = tokens->get(i);
+        if (t->getType() == L::END_VAR) return false;
+        if (t->getType() == antlr4::Token::EOF || endsDeclarationScope(t->getType()) ||
+            (i > found->getTokenIndex() && isVarSectionKeyword(t->getType())))
+            break;
+    }
+    antlr4::Token* opener = block->getStart();
+    Diagnostic& d = reporter_->report(opener->getLine(), opener->getCharPositionInLine(),
+                                      fmt::format("'{}' has no matching 'END_VAR'", opener->getText()));
+    d.note(Loc{reporter_->fileIndex(), static_cast<int>(before->getLine()), static_cast<int>(before->getCharPositionInLine()) + 1},
+           fmt::format("'END_VAR' expected before {}", describeFoundToken(before)));
+    reporter_->markLine(before->getLine());  // the rest of that line is the same mistake
+    return true;
+}
 
 void reportMissingDeclarationSemicolon(SyntaxErrorReporter& reporter, antlr4::TokenStream* tokens, antlr4::Token* first,
                                        antlr4::Token* last) {
@@ -251,6 +373,13 @@ bool FriendlyErrorStrategy::reportUnclosedBlock(antlr4::Parser* parser, antlr4::
                                           fmt::format("'{}' has no matching '{}'", opener->getText(), closerName));
         d.note(Loc{reporter_->fileIndex(), static_cast<int>(found->getLine()), static_cast<int>(found->getCharPositionInLine()) + 1},
                fmt::format("'{}' expected before {}", closerName, describeFoundToken(found)));
+        if (found->getType() == L::END_CASE) {
+            // The enclosing CASE's next labels (`2:`) were read inside the open
+            // block, where they cannot be labels: the same mistake, not news.
+            antlr4::TokenStream* tokens = parser->getTokenStream();
+            for (size_t i = opener->getTokenIndex(); i < found->getTokenIndex(); ++i)
+                if (tokens->get(i)->getType() == L::COLON) reporter_->markLine(tokens->get(i)->getLine());
+        }
         if (closer == L::END_IF) {
             // `ELSE IF` opens an IF of its own inside the ELSE branch.
             antlr4::TokenStream* tokens = parser->getTokenStream();
@@ -271,7 +400,8 @@ bool FriendlyErrorStrategy::reportUnclosedBlock(antlr4::Parser* parser, antlr4::
 }
 
 void FriendlyErrorStrategy::reportAt(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected) {
-    if (reporter_ != nullptr && (reportMissingSemicolon(parser, found, expected) || reportUnclosedBlock(parser, found, expected)))
+    if (reporter_ != nullptr && (reportMistypedKeyword(parser, found) || reportUnclosedVarBlock(parser, found) ||
+                                 reportMissingSemicolon(parser, found, expected) || reportUnclosedBlock(parser, found, expected)))
         return;
     // `IF x := 1 THEN`: the C habit of assigning in a condition, or '=' mistyped.
     if (reporter_ != nullptr && found != nullptr && found->getType() == L::ASSIGN &&
@@ -283,6 +413,10 @@ void FriendlyErrorStrategy::reportAt(antlr4::Parser* parser, antlr4::Token* foun
         orphanCloser_ = expected.contains(static_cast<size_t>(L::THEN)) ? L::END_IF : L::END_WHILE;
         return;
     }
+    // `FOR x = 1 TO 10 DO`: recovery drops the FOR, so its END_FOR comes unexpected: the same mistake.
+    if (found != nullptr && found->getType() == L::EQ && expected.contains(static_cast<size_t>(L::ASSIGN)) &&
+        dynamic_cast<P::ForStmtContext*>(parser->getContext()) != nullptr)
+        orphanCloser_ = L::END_FOR;
     if (found != nullptr && orphanCloser_ != 0 && found->getType() == orphanCloser_) {
         orphanCloser_ = 0;
         return;

@@ -24,6 +24,10 @@ std::string describeFoundToken(const antlr4::Token* token);
 
 class SyntaxErrorReporter;
 
+// The END_ keyword `word` (an identifier) is a near miss of ("END_WHIL" ->
+// "END_WHILE"), or "" when it is none.
+std::string mistypedEndKeyword(const std::string& word);
+
 class FriendlyErrorStrategy : public antlr4::DefaultErrorStrategy {
 public:
     explicit FriendlyErrorStrategy(SyntaxErrorReporter* reporter = nullptr) : reporter_(reporter) {}
@@ -48,6 +52,11 @@ private:
     void reportAt(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected);
     bool reportMissingSemicolon(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected);
     bool reportUnclosedBlock(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected);
+    // A declaration block whose END_VAR is missing: the code after it (a
+    // statement, another VAR section) is said at the VAR, once.
+    bool reportUnclosedVarBlock(antlr4::Parser* parser, antlr4::Token* found);
+    // A mistyped END_ keyword (`END_WHIL`) where the error shows: "did you mean".
+    bool reportMistypedKeyword(antlr4::Parser* parser, antlr4::Token* found);
     SyntaxErrorReporter* reporter_;
     size_t orphanCloser_ = 0;  // the END_ keyword of a statement recovery dropped (not reported again)
 };

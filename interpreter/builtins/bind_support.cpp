@@ -33,7 +33,7 @@ bool rejectOutputs(Checker& ck, CallArgs& call) {
     for (size_t k = 0; k < call.args.size(); ++k) {
         const ast::Arg& a = call.call->args[k];
         if (a.output) {
-            ck.error(a.loc, fmt::format("'{}' has no output '{}'", call.name, a.name));
+            ck.error(diag::E0302, a.loc, fmt::format("'{}' has no output '{}'", call.name, a.name));
             return false;
         }
     }
@@ -60,7 +60,7 @@ bool bindFixed(Checker& ck, CallArgs& call, std::initializer_list<Formal> formal
         if (call.names[k].empty()) {
             // By its position in the call, also after named ones (decision 0204).
             if (k >= n) {
-                ck.error(call.loc, fmt::format("too many arguments for '{}' (it takes {})", call.name, n));
+                ck.error(diag::E0301, call.loc, fmt::format("too many arguments for '{}' (it takes {})", call.name, n));
                 return false;
             }
             idx = k;
@@ -68,12 +68,12 @@ bool bindFixed(Checker& ck, CallArgs& call, std::initializer_list<Formal> formal
             for (size_t j = 0; j < n; ++j)
                 if (matchesFormal(f[j].names, call.names[k])) idx = j;
             if (idx == n) {
-                ck.error(a.loc, fmt::format("'{}' has no parameter '{}'", call.name, a.name));
+                ck.error(diag::E0302, a.loc, fmt::format("'{}' has no parameter '{}'", call.name, a.name));
                 return false;
             }
         }
         if (given[idx]) {
-            ck.error(a.loc, fmt::format("parameter '{}' of '{}' given twice", firstName(f[idx].names), call.name));
+            ck.error(diag::E0302, a.loc, fmt::format("parameter '{}' of '{}' given twice", firstName(f[idx].names), call.name));
             return false;
         }
         given[idx] = true;
@@ -81,7 +81,7 @@ bool bindFixed(Checker& ck, CallArgs& call, std::initializer_list<Formal> formal
     }
     for (size_t j = 0; j < n; ++j)
         if (!given[j]) {
-            ck.error(call.loc, fmt::format("'{}' needs {} input(s); '{}' is missing", call.name, n, firstName(f[j].names)));
+            ck.error(diag::E0301, call.loc, fmt::format("'{}' needs {} input(s); '{}' is missing", call.name, n, firstName(f[j].names)));
             return false;
         }
     return true;
@@ -108,7 +108,7 @@ bool bindExtensible(Checker& ck, CallArgs& call, std::initializer_list<Formal> l
         for (size_t j = 0; j < nLead && !placed; ++j)
             if (matchesFormal(f[j].names, nm)) {
                 if (leadGiven[j]) {
-                    ck.error(a.loc, fmt::format("parameter '{}' of '{}' given twice", nm, call.name));
+                    ck.error(diag::E0302, a.loc, fmt::format("parameter '{}' of '{}' given twice", nm, call.name));
                     return false;
                 }
                 lead[j] = call.args[k];
@@ -119,12 +119,12 @@ bool bindExtensible(Checker& ck, CallArgs& call, std::initializer_list<Formal> l
         bool numbered = nm.size() > pre.size() && nm.compare(0, pre.size(), pre) == 0 && nm.size() - pre.size() <= 4 &&
                         std::all_of(nm.begin() + static_cast<long>(pre.size()), nm.end(), [](char c) { return c >= '0' && c <= '9'; });
         if (!numbered) {
-            ck.error(a.loc, fmt::format("'{}' has no parameter '{}'", call.name, a.name));
+            ck.error(diag::E0302, a.loc, fmt::format("'{}' has no parameter '{}'", call.name, a.name));
             return false;
         }
         long index = std::stol(nm.substr(pre.size())) - firstIndex;
         if (index < 0 || named.count(index)) {
-            ck.error(a.loc, index < 0 ? fmt::format("'{}' has no parameter '{}'", call.name, a.name)
+            ck.error(diag::E0302, a.loc, index < 0 ? fmt::format("'{}' has no parameter '{}'", call.name, a.name)
                                       : fmt::format("parameter '{}' of '{}' given twice", a.name, call.name));
             return false;
         }
@@ -135,21 +135,21 @@ bool bindExtensible(Checker& ck, CallArgs& call, std::initializer_list<Formal> l
     for (size_t j = 0; j < nLead; ++j)
         if (!leadGiven[j]) {
             if (p >= positional.size()) {
-                ck.error(call.loc, fmt::format("'{}' is missing its input '{}'", call.name, firstName(f[j].names)));
+                ck.error(diag::E0301, call.loc, fmt::format("'{}' is missing its input '{}'", call.name, firstName(f[j].names)));
                 return false;
             }
             lead[j] = positional[p++];
         }
     out = lead;
     if (!named.empty() && p < positional.size()) {
-        ck.error(call.loc, fmt::format("'{}': give the inputs either all by position or all by name", call.name));
+        ck.error(diag::E0302, call.loc, fmt::format("'{}': give the inputs either all by position or all by name", call.name));
         return false;
     }
     if (!named.empty()) {
         long expect = 0;
         for (auto& [index, value] : named) {
             if (index != expect) {
-                ck.error(call.loc, fmt::format("'{}' is missing its input '{}{}'", call.name, pre, expect + firstIndex));
+                ck.error(diag::E0301, call.loc, fmt::format("'{}' is missing its input '{}{}'", call.name, pre, expect + firstIndex));
                 return false;
             }
             out.push_back(value);
@@ -159,7 +159,7 @@ bool bindExtensible(Checker& ck, CallArgs& call, std::initializer_list<Formal> l
         for (; p < positional.size(); ++p) out.push_back(positional[p]);
     }
     if (out.size() - nLead < minCount) {
-        ck.error(call.loc, fmt::format("'{}' needs at least {} inputs", call.name, minCount + nLead));
+        ck.error(diag::E0301, call.loc, fmt::format("'{}' needs at least {} inputs", call.name, minCount + nLead));
         return false;
     }
     return true;
@@ -183,7 +183,7 @@ const Type* commonTypeOf(Checker& ck, std::vector<Checked>& args, const ast::Loc
         int64_t maxLen = 0;
         for (const auto& a : args) {
             if (a.type->kind != kind) {
-                ck.error(a.loc, fmt::format("{}: cannot mix {} and {}", fn, sema::typeName(args[0].type), sema::typeName(a.type)));
+                ck.error(diag::E0202, a.loc, fmt::format("{}: cannot mix {} and {}", fn, sema::typeName(args[0].type), sema::typeName(a.type)));
                 return nullptr;
             }
             maxLen = std::max<int64_t>(maxLen, a.type->maxLen);
@@ -203,7 +203,7 @@ const Type* commonTypeOf(Checker& ck, std::vector<Checked>& args, const ast::Loc
         Checked next = args[k];
         const Type* t = ck.commonType(probe, next, loc, false);
         if (!t) {
-            ck.error(args[k].loc, fmt::format("{}: arguments of types {} and {} need an explicit conversion", fn,
+            ck.error(diag::E0202, args[k].loc, fmt::format("{}: arguments of types {} and {} need an explicit conversion", fn,
                                               sema::typeName(probe.type), sema::typeName(args[k].type)));
             return nullptr;
         }
@@ -309,7 +309,7 @@ Checked makeResult(Checker& ck, exec::Expr* node, const Type* t, const CallArgs&
 }
 
 Checked argError(Checker& ck, const Checked& a, const std::string& fn, const std::string& what) {
-    ck.error(a.loc, fmt::format("{}: {}, not {}", fn, what, sema::typeName(a.type)));
+    ck.error(diag::E0201, a.loc, fmt::format("{}: {}, not {}", fn, what, sema::typeName(a.type)));
     return ck.bad(a.loc);
 }
 

@@ -119,12 +119,12 @@ Checked checkArith(Checker& ck, CallArgs& call, Arith op) {
     if (!bound) return ck.bad(call.loc);
     if (hasTimeOrDate(a)) {
         if (a.size() != 2) {
-            ck.error(call.loc, fmt::format("{} of durations or dates takes exactly two inputs", call.name));
+            ck.error(diag::E0301, call.loc, fmt::format("{} of durations or dates takes exactly two inputs", call.name));
             return ck.bad(call.loc);
         }
         TimeOp top = op == Arith::Add ? TimeOp::Add : op == Arith::Sub ? TimeOp::Sub : op == Arith::Mul ? TimeOp::Mul : TimeOp::Div;
         if (op == Arith::Mod) {
-            ck.error(call.loc, "MOD is not defined for durations or dates");
+            ck.error(diag::E0202, call.loc, "MOD is not defined for durations or dates");
             return ck.bad(call.loc);
         }
         return timeArithmetic(ck, call, top, a[0], a[1]);
@@ -137,7 +137,7 @@ Checked checkArith(Checker& ck, CallArgs& call, Arith op) {
     if (!t || !coerceAll(ck, x, t, call.name)) return ck.bad(call.loc);
     bool real = sema::isReal(t->kind);
     if (op == Arith::Mod && real) {
-        ck.error(call.loc, fmt::format("MOD needs integers, not {}", sema::typeName(t)));
+        ck.error(diag::E0202, call.loc, fmt::format("MOD needs integers, not {}", sema::typeName(t)));
         return ck.bad(call.loc);
     }
     Rep rep = sema::repOf(t);
@@ -211,7 +211,7 @@ Checked checkLogic(Checker& ck, CallArgs& call, Logic op) {
         if (!b && !isBitArg(v) && !isIntegerArg(v)) return argError(ck, v, call.name, "the inputs must be BOOL or bit strings");
     }
     if (anyBool && !allBool) {
-        ck.error(call.loc, fmt::format("{}: the inputs must be all BOOL or all bit strings", call.name));
+        ck.error(diag::E0202, call.loc, fmt::format("{}: the inputs must be all BOOL or all bit strings", call.name));
         return ck.bad(call.loc);
     }
     const Type* t = commonTypeOf(ck, a, call.loc, call.name);

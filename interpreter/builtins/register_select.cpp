@@ -20,7 +20,7 @@ const Type* unify(Checker& ck, CallArgs& call, std::vector<Checked>& ins, bool n
     const Type* t = selectorVaries && allUntyped(ins) ? literalType(ck, ins) : commonTypeOf(ck, ins, call.loc, call.name);
     if (!t) return nullptr;
     if (needComparable && !comparable(t)) {
-        ck.error(call.loc, fmt::format("{}: {} values cannot be compared", call.name, sema::typeName(t)));
+        ck.error(diag::E0202, call.loc, fmt::format("{}: {} values cannot be compared", call.name, sema::typeName(t)));
         return nullptr;
     }
     if (!coerceAll(ck, ins, t, call.name)) return nullptr;

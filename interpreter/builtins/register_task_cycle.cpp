@@ -35,7 +35,7 @@ struct SetTaskCycleNode final : Expr {
 bool available(Checker& ck, const CallArgs& call, const char* name) {
     if (ck.profile().taskCycleFunctions) return true;
     const rt::PlcProfile* owner = rt::profileWithTaskCycleFunctions();
-    ck.error(call.loc, fmt::format("{} exists only with --target {} ({}); the target is {}", name,
+    ck.error(diag::E0602, call.loc, fmt::format("{} exists only with --target {} ({}); the target is {}", name,
                                    owner ? owner->id : "m241", owner ? owner->description : "Modicon M241",
                                    ck.profile().id));
     return false;

@@ -45,7 +45,7 @@ TK kindOf(Family f, bool isLongType) {
 }
 
 Checked notDefined(Checker& ck, const CallArgs& call, const Checked& a, const Checked& b) {
-    ck.error(call.loc, fmt::format("{} is not defined for {} and {}", call.name, sema::typeName(a.type), sema::typeName(b.type)));
+    ck.error(diag::E0202, call.loc, fmt::format("{} is not defined for {} and {}", call.name, sema::typeName(a.type), sema::typeName(b.type)));
     return ck.bad(call.loc);
 }
 
@@ -164,14 +164,14 @@ void addSplit(Checker& ck, const char* name, SplitFn fn, TK input, std::vector<c
                 if (positional == 0) { in = call.args[k]; haveIn = true; }
                 else if (positional - 1 < outputs.size()) { targets[positional - 1] = call.args[k]; given[positional - 1] = true; }
                 else {
-                    ck.error(call.loc, fmt::format("too many arguments for '{}'", call.name));
+                    ck.error(diag::E0301, call.loc, fmt::format("too many arguments for '{}'", call.name));
                     return ck.bad(call.loc);
                 }
                 ++positional;
                 continue;
             }
             if (nm == "IN") {
-                if (arg.output) { ck.error(arg.loc, fmt::format("'IN' is an input of '{}'; connect it with ':='", call.name)); return ck.bad(call.loc); }
+                if (arg.output) { ck.error(diag::E0303, arg.loc, fmt::format("'IN' is an input of '{}'; connect it with ':='", call.name)); return ck.bad(call.loc); }
                 in = call.args[k];
                 haveIn = true;
                 continue;
@@ -180,18 +180,18 @@ void addSplit(Checker& ck, const char* name, SplitFn fn, TK input, std::vector<c
             for (size_t j = 0; j < outputs.size(); ++j)
                 if (nm == outputs[j]) idx = j;
             if (idx == outputs.size()) {
-                ck.error(arg.loc, fmt::format("'{}' has no parameter '{}'", call.name, arg.name));
+                ck.error(diag::E0302, arg.loc, fmt::format("'{}' has no parameter '{}'", call.name, arg.name));
                 return ck.bad(call.loc);
             }
             if (!arg.output) {
-                ck.error(arg.loc, fmt::format("'{}' is an output of '{}'; connect it with '=>'", arg.name, call.name));
+                ck.error(diag::E0303, arg.loc, fmt::format("'{}' is an output of '{}'; connect it with '=>'", arg.name, call.name));
                 return ck.bad(call.loc);
             }
             targets[idx] = call.args[k];
             given[idx] = true;
         }
         if (!haveIn) {
-            ck.error(call.loc, fmt::format("'{}' is missing its input 'IN'", call.name));
+            ck.error(diag::E0301, call.loc, fmt::format("'{}' is missing its input 'IN'", call.name));
             return ck.bad(call.loc);
         }
         Checked x = ck.coerce(in, ck.types().elementary(input), in.loc, call.name.c_str());
@@ -208,11 +208,11 @@ void addSplit(Checker& ck, const char* name, SplitFn fn, TK input, std::vector<c
             if (!given[j]) continue;
             const Checked& t = targets[j];
             if (!t.isPlace || t.readOnly) {
-                ck.error(t.loc, fmt::format("output '{}' of '{}' needs a variable that can be written", outputs[j], call.name));
+                ck.error(diag::E0206, t.loc, fmt::format("output '{}' of '{}' needs a variable that can be written", outputs[j], call.name));
                 return ck.bad(call.loc);
             }
             if (!sema::isInteger(t.type->kind) && !sema::isBitString(t.type->kind)) {
-                ck.error(t.loc, fmt::format("output '{}' of '{}' must be an integer variable, not {}", outputs[j], call.name, sema::typeName(t.type)));
+                ck.error(diag::E0201, t.loc, fmt::format("output '{}' of '{}' must be an integer variable, not {}", outputs[j], call.name, sema::typeName(t.type)));
                 return ck.bad(call.loc);
             }
             exec::Expr* field = sema::makeByRep<exec::FrameVar>(ck.pool(), Rep::I64, n->off + static_cast<uint32_t>(8 * slot));

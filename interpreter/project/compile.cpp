@@ -13,6 +13,7 @@
 #include "interpreter/builtins/register_builtins.h"
 #include "interpreter/testing/register_tcunit.h"
 #include "interpreter/testing/suite_finder.h"
+#include "interpreter/testing/tcunit_parameters.h"
 #include "interpreter/testing/test_registry.h"
 #include "stdlib/embedded_sources.h"
 
@@ -54,7 +55,9 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
         }
     } else {
         for (const stdlib::EmbeddedSource* src : wanted) {
-            int index = sources.add(std::string(src->path), std::string(src->text));
+            const bool tcunit = !options.tcunitParameters.empty() && src->path == "stdlib/tcunit.st";
+            int index = sources.add(std::string(src->path), tcunit ? testing::withTcUnitParameters(src->text, options.tcunitParameters)
+                                                                   : std::string(src->text));
             libraryFiles.insert(index);
             toParse.push_back(index);
         }

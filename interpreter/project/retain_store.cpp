@@ -193,6 +193,15 @@ RetainStore::RetainStore(sema::ProgramModel& model, std::string path, std::ostre
         warnings_ << "strun: warning: --retain: more than " << kMaxRetainedValues << " retained values; the rest is not kept\n";
 }
 
+void RetainStore::keepSystemWords(sema::ProgramModel& model, const std::vector<int>& words) {
+    const Type* word = model.types->elementary(sema::TK::Word);
+    for (int n : words) {
+        if (n < 0 || size_t(n) >= rt::ProcessImage::kSystemWords) continue;
+        values_.push_back({"%SW" + std::to_string(n), sema::typeName(word) + " (2 bytes)", &model.machine.image.systemWords[size_t(n) * 2], 2,
+                           word});
+    }
+}
+
 // Walks into FB instances (their members may be RETAIN) and, for retained
 // storage, keeps whole blocks of plain data or descends where addresses are.
 void RetainStore::collect(const std::string& path, const Type* t, uint8_t* addr, bool retained, int depth) {

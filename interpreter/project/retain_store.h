@@ -26,6 +26,10 @@ class RetainStore {
 public:
     // Collects the retained storage of `model` (globals, program and FB instance variables).
     RetainStore(sema::ProgramModel& model, std::string path, std::ostream& warnings);
+    // Also keeps these system words (%SWn of the process image) across a
+    // warm start: the M340's maximum and minimum cycle times (seed 002,
+    // decision 0296). Before start().
+    void keepSystemWords(sema::ProgramModel& model, const std::vector<int>& words);
     // Before the run: FILE must be a regular file or not exist, must not be
     // one of `inputs`, and when it exists and is not empty it must be a
     // retain file unless `cold` (strun overwrites only its own files).

@@ -1,5 +1,6 @@
 #include "interpreter/project/vcd_signals.h"
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 #include <memory>
@@ -132,6 +133,31 @@ std::vector<rt::VcdSignal> vcdSignals(const sema::ProgramModel& model, const std
         signals.push_back(std::move(s));
         return true;
     });
+    // The physical outputs (what the field last received, after the output
+    // phases: it differs from %Q while output writing is inhibited), one byte
+    // each, only when a pattern names them: `%QB*`, `physical_outputs.*`.
+    const rt::ProcessImage& image = model.machine.image;
+    const size_t extent = std::min(image.outputExtent, rt::ProcessImage::kSize);
+    auto outputScopes = std::make_shared<std::vector<std::string>>(1, "physical_outputs");
+    for (size_t byte = 0; byte < extent && !patterns.empty() && !truncated; ++byte) {
+        const std::string leaf = "QB" + std::to_string(byte);
+        bool any = false;
+        for (size_t i = 0; i < patterns.size(); ++i)
+            if (matchesPattern(patterns[i], "%" + leaf) || matchesPattern(patterns[i], "physical_outputs." + leaf)) any = used[i] = true;
+        if (!any) continue;
+        if (signals.size() >= kMaxVcdSignals) {
+            truncated = true;
+            break;
+        }
+        rt::VcdSignal s;
+        s.kind = rt::VcdSignal::Kind::Vector;
+        s.width = 8;
+        s.scopes = outputScopes;
+        s.name = leaf;
+        s.addr = image.physicalOutputs.data() + byte;
+        s.task = rt::VcdSignal::kAfterOutputPhase;
+        signals.push_back(std::move(s));
+    }
     for (size_t i = 0; i < patterns.size() && !truncated; ++i)  // a cut walk did not try every pattern
         if (!used[i]) unmatched.push_back(patterns[i]);
     return signals;

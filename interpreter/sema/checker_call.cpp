@@ -39,12 +39,12 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
     size_t positionalCount = 0;
     for (const auto& a : call.args) positionalCount += a.name.empty() ? 1 : 0;
     if (positionalCount > inputsInOrder.size()) {
-        ck.error(call.kids[0]->loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
+        ck.error(diag::E0301, call.kids[0]->loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
         return false;
     }
     if (positionalCount > 0 && positionalCount < inputsInOrder.size() && positionalCount == call.args.size()) {
         // A non-formal call lists every input (IEC 61131-3); formal calls may leave inputs out.
-        ck.error(call.kids[0]->loc, fmt::format("too few arguments for '{}' ({} given, it takes {})", callee, positionalCount, inputsInOrder.size()));
+        ck.error(diag::E0301, call.kids[0]->loc, fmt::format("too few arguments for '{}' ({} given, it takes {})", callee, positionalCount, inputsInOrder.size()));
         return false;
     }
     bool sawNamed = false;
@@ -55,14 +55,14 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
             // CODESYS/TwinCAT: a positional argument after named ones binds by
             // its position in the call (`F(a := 1, b := 2, 3)`: c), decision 0204.
             if (k >= inputsInOrder.size()) {
-                ck.error(a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
+                ck.error(diag::E0301, a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
                 ok = false;
                 continue;
             }
             param = inputsInOrder[k];
         } else if (a.name.empty()) {
             if (positional >= inputsInOrder.size()) {
-                ck.error(a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
+                ck.error(diag::E0301, a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
                 ok = false;
                 continue;
             }
@@ -76,24 +76,24 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
             if (!param) {
                 std::vector<std::string> names;
                 for (const VarSym* p : params) names.push_back(p->name);
-                ck.suggestName(ck.error(a.loc, fmt::format("'{}' has no parameter '{}'", callee, a.name)), a.name, names);
+                ck.suggestName(ck.error(diag::E0302, a.loc, fmt::format("'{}' has no parameter '{}'", callee, a.name)), a.name, names);
                 ok = false;
                 continue;
             }
             bool isOut = param->section == ast::VarSection::Output;
             if (a.output && !isOut) {
-                ck.error(a.loc, fmt::format("'{}' is not an output of '{}'; connect it with ':='", a.name, callee));
+                ck.error(diag::E0303, a.loc, fmt::format("'{}' is not an output of '{}'; connect it with ':='", a.name, callee));
                 ok = false;
                 continue;
             }
             if (!a.output && isOut) {
-                ck.error(a.loc, fmt::format("'{}' is an output of '{}'; connect it with '=>'", a.name, callee));
+                ck.error(diag::E0303, a.loc, fmt::format("'{}' is an output of '{}'; connect it with '=>'", a.name, callee));
                 ok = false;
                 continue;
             }
         }
         if (seen.count(param)) {
-            ck.error(a.loc, fmt::format("parameter '{}' given twice", param->name));
+            ck.error(diag::E0302, a.loc, fmt::format("parameter '{}' given twice", param->name));
             ok = false;
             continue;
         }
@@ -140,7 +140,7 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
     if (isStringType(to->kind) || (from && isStringType(from->kind))) return bad(e.loc);  // string conversions: interpreter/builtins
     handled = true;
     if (e.args.size() != 1 || e.args[0].output || !e.args[0].value) {
-        error(e.loc, fmt::format("{} takes exactly one input", key));
+        error(diag::E0301, e.loc, fmt::format("{} takes exactly one input", key));
         return bad(e.loc);
     }
     Checked a = checkExpr(*e.args[0].value);
@@ -150,12 +150,12 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
         return bad(e.loc);
     }
     if (truncate && !(isReal(a.type->kind) || a.untypedReal)) {
-        error(e.args[0].value->loc, fmt::format("{} needs a REAL or LREAL input, not {}", key, typeName(a.type)));
+        error(diag::E0202, e.args[0].value->loc, fmt::format("{} needs a REAL or LREAL input, not {}", key, typeName(a.type)));
         return bad(e.loc);
     }
     if (from) {
         if (from->kind == TK::Bool && a.type->kind != TK::Bool) {
-            error(e.args[0].value->loc, fmt::format("{} needs a BOOL input, not {}", key, typeName(a.type)));
+            error(diag::E0202, e.args[0].value->loc, fmt::format("{} needs a BOOL input, not {}", key, typeName(a.type)));
             return bad(e.loc);
         }
         a = coerce(a, from, e.args[0].value->loc, key.c_str());
@@ -217,9 +217,9 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             v = nullptr;
         if (v) {
             if (v->type->kind == TK::FunctionBlock) {
-                error(e.loc, fmt::format("'{}' is a function-block instance: call it as a statement and read its outputs as {}.Q", callee.name, callee.name));
+                error(diag::E0304, e.loc, fmt::format("'{}' is a function-block instance: call it as a statement and read its outputs as {}.Q", callee.name, callee.name));
             } else {
-                error(callee.loc, fmt::format("'{}' is a variable, not a function", callee.name));
+                error(diag::E0107, callee.loc, fmt::format("'{}' is a variable, not a function", callee.name));
             }
             return bad(e.loc);
         }
@@ -239,7 +239,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         }
         if (key == "ADR" || key == "REF") {
             if (e.args.size() != 1 || !e.args[0].value) {
-                error(e.loc, fmt::format("{} takes one variable", key));
+                error(diag::E0301, e.loc, fmt::format("{} takes one variable", key));
                 return bad(e.loc);
             }
             // REF(x) is the IEC 3rd-edition form of ADR(x): a REF_TO (pointer) value.
@@ -247,7 +247,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         }
         if (key == "SIZEOF") {
             if (e.args.size() != 1 || !e.args[0].value) {
-                error(e.loc, "SIZEOF takes one argument");
+                error(diag::E0301, e.loc, "SIZEOF takes one argument");
                 return bad(e.loc);
             }
             const Type* t = nullptr;
@@ -270,18 +270,18 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         }
         if (key == "LOWER_BOUND" || key == "UPPER_BOUND") {
             if (e.args.size() != 2 || !e.args[0].value || !e.args[1].value) {
-                error(e.loc, fmt::format("{} takes an array and a dimension number", key));
+                error(diag::E0301, e.loc, fmt::format("{} takes an array and a dimension number", key));
                 return bad(e.loc);
             }
             Checked a = checkExpr(*e.args[0].value);
             int64_t dim = 0;
             if (!a.ok || !constIntExpr(e.args[1].value.get(), dim, "the dimension")) return bad(e.loc);
             if (a.type->kind != TK::Array) {
-                error(e.args[0].value->loc, fmt::format("{} needs an array, not {}", key, typeName(a.type)));
+                error(diag::E0201, e.args[0].value->loc, fmt::format("{} needs an array, not {}", key, typeName(a.type)));
                 return bad(e.loc);
             }
             if (dim < 1 || static_cast<size_t>(dim) > a.type->dims.size()) {
-                error(e.args[1].value->loc, fmt::format("the array has {} dimension(s), not {}", a.type->dims.size(), dim));
+                error(diag::E0204, e.args[1].value->loc, fmt::format("the array has {} dimension(s), not {}", a.type->dims.size(), dim));
                 return bad(e.loc);
             }
             const bool upperBound = key == "UPPER_BOUND";
@@ -300,20 +300,20 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         }
         if (key == "__QUERYINTERFACE") {
             if (e.args.size() != 2 || !e.args[0].value || !e.args[1].value) {
-                error(e.loc, "__QUERYINTERFACE takes a source and a destination interface");
+                error(diag::E0301, e.loc, "__QUERYINTERFACE takes a source and a destination interface");
                 return bad(e.loc);
             }
             Checked src = checkExpr(*e.args[0].value);
             Checked dst = checkExpr(*e.args[1].value);
             if (!src.ok || !dst.ok) return bad(e.loc);
             if (dst.type->kind != TK::Interface || !dst.isPlace) {
-                error(e.args[1].value->loc, "__QUERYINTERFACE needs an interface variable as destination");
+                error(diag::E0206, e.args[1].value->loc, "__QUERYINTERFACE needs an interface variable as destination");
                 return bad(e.loc);
             }
             exec::Expr* addr = src.type->kind == TK::Interface ? src.node
                                : (src.type->kind == TK::FunctionBlock && src.isPlace) ? pool().make<exec::AddressOf>(src.node) : nullptr;
             if (!addr) {
-                error(e.args[0].value->loc, fmt::format("__QUERYINTERFACE needs an interface or an instance, not {}", typeName(src.type)));
+                error(diag::E0405, e.args[0].value->loc, fmt::format("__QUERYINTERFACE needs an interface or an instance, not {}", typeName(src.type)));
                 return bad(e.loc);
             }
             Checked r;
@@ -326,7 +326,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         }
         if (key == "__ISVALIDREF") {
             if (e.args.size() != 1 || !e.args[0].value) {
-                error(e.loc, "__ISVALIDREF takes one reference");
+                error(diag::E0301, e.loc, "__ISVALIDREF takes one reference");
                 return bad(e.loc);
             }
             bool saved = suppressAutoDeref_;
@@ -335,7 +335,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             suppressAutoDeref_ = saved;
             if (!v.ok) return v;
             if (v.type->kind != TK::Reference && v.type->kind != TK::Pointer && v.type->kind != TK::Interface) {
-                error(e.args[0].value->loc, "__ISVALIDREF needs a REFERENCE");
+                error(diag::E0201, e.args[0].value->loc, "__ISVALIDREF needs a REFERENCE");
                 return bad(e.loc);
             }
             Checked r;
@@ -361,7 +361,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             args.loc = e.loc;
             for (const auto& a : e.args) {
                 if (!a.value) {
-                    error(a.loc, "missing argument value");
+                    error(diag::E0301, a.loc, "missing argument value");
                     return bad(e.loc);
                 }
                 Checked c = checkExpr(*a.value);
@@ -377,7 +377,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         }
         if (it != pous_.end()) {
             if (it->second->kind == ast::PouKind::Function) return callUserFunction(it->second, e, nullptr);
-            Diagnostic& d = error(callee.loc, fmt::format("'{}' is a {} and cannot be called here", callee.name,
+            Diagnostic& d = error(diag::E0107, callee.loc, fmt::format("'{}' is a {} and cannot be called here", callee.name,
                                                           it->second->kind == ast::PouKind::Program ? "PROGRAM" : "type"));
             if (it->second->kind == ast::PouKind::FunctionBlock)
                 d.withHelp(fmt::format("a function block is called through an instance: declare one in VAR ({} : {};) and call it ({}(...);)",
@@ -385,7 +385,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             return bad(e.loc);
         }
         if (isUnresolved(key)) return bad(e.loc);
-        suggest(error(callee.loc, fmt::format("undeclared function '{}'", callee.name)), callee.name, functionNames());
+        suggest(error(diag::E0105, callee.loc, fmt::format("undeclared function '{}'", callee.name)), callee.name, functionNames());
         return bad(e.loc);
     }
     if (callee.kind == ast::ExprKind::Member) {
@@ -394,7 +394,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         if ((base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou) {
             if (PouInfo* m = findMethod(base.type->pou, upper(callee.name))) return methodCall(base, m, e);
         }
-        Diagnostic& d = error(callee.nameLoc.line ? callee.nameLoc : callee.loc, fmt::format("'{}' is not a method of {}", callee.name, typeName(base.type)));
+        Diagnostic& d = error(diag::E0103, callee.nameLoc.line ? callee.nameLoc : callee.loc, fmt::format("'{}' is not a method of {}", callee.name, typeName(base.type)));
         if ((base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou) {
             std::vector<std::string> methods;
             for (const PouInfo* p = base.type->pou; p; p = p->parent)
@@ -403,7 +403,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         }
         return bad(e.loc);
     }
-    error(e.loc, "this cannot be called");
+    error(diag::E0107, e.loc, "this cannot be called");
     return bad(e.loc);
 }
 
@@ -411,13 +411,13 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
 // ARRAY[*] its address and bounds.
 exec::Stmt* Checker::bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc) {
     if (!v.isPlace || (v.node && v.node->bitIndex() >= 0)) {
-        error(loc, fmt::format("VAR_IN_OUT '{}' needs a variable, not an expression", p->name));
+        error(diag::E0206, loc, fmt::format("VAR_IN_OUT '{}' needs a variable, not an expression", p->name));
         return nullptr;
     }
     if (p->type->kind == TK::Array && p->type->flexible) {
         const Type* a = v.type;
         if (a->kind != TK::Array || a->dims.size() != p->type->dims.size() || !sameType(a->elem, p->type->elem)) {
-            error(loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}", p->name, typeName(p->type), typeName(a)));
+            error(diag::E0201, loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}", p->name, typeName(p->type), typeName(a)));
             return nullptr;
         }
         auto* bind = pool().make<exec::BindArrayDesc>();
@@ -431,7 +431,7 @@ exec::Stmt* Checker::bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, co
         return bind;
     }
     if (!sameType(v.type, p->type) && !(isStringType(v.type->kind) && v.type->kind == p->type->kind)) {
-        error(loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}", p->name, typeName(p->type), typeName(v.type)));
+        error(diag::E0201, loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}", p->name, typeName(p->type), typeName(v.type)));
         return nullptr;
     }
     return pool().make<exec::BindAddress>(slot, v.node);
@@ -443,7 +443,7 @@ exec::Stmt* Checker::bindOutput(const ast::Arg& arg, VarSym* p, Checked src) {
     if (!target.ok) return nullptr;
     if (!target.isPlace) {
         // `fb(o => 5)`: the general "cannot be assigned" would not say why.
-        error(arg.value->loc, fmt::format("the output '{}' is connected with '=>' to a value: an output needs a variable that receives it",
+        error(diag::E0206, arg.value->loc, fmt::format("the output '{}' is connected with '=>' to a value: an output needs a variable that receives it",
                                           p->name))
             .withHelp(fmt::format("write '{} => someVariable', or leave the output out and read it later as instance.{}", p->name, p->name));
         return nullptr;
@@ -451,7 +451,7 @@ exec::Stmt* Checker::bindOutput(const ast::Arg& arg, VarSym* p, Checked src) {
     src.readOnly = false;
     if (arg.negated) {
         if (p->type->kind != TK::Bool) {
-            error(arg.loc, "NOT on an output needs a BOOL output");
+            error(diag::E0202, arg.loc, "NOT on an output needs a BOOL output");
             return nullptr;
         }
         src.node = pool().make<exec::NotBool>(src.node);
@@ -463,7 +463,7 @@ exec::Stmt* Checker::bindOutput(const ast::Arg& arg, VarSym* p, Checked src) {
 exec::Stmt* Checker::bindReference(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc) {
     if (v.type->kind == TK::Reference && sameType(v.type, p->type)) return storeTo(slot, types().elementary(TK::LWord), v.node);
     if (!v.isPlace || !sameType(v.type, p->type->target)) {
-        error(loc, fmt::format("'{}' is {}: it needs a variable of type {}", p->name, typeName(p->type), typeName(p->type->target)));
+        error(diag::E0206, loc, fmt::format("'{}' is {}: it needs a variable of type {}", p->name, typeName(p->type), typeName(p->type->target)));
         return nullptr;
     }
     return storeTo(slot, types().elementary(TK::LWord), pool().make<exec::AddressOf>(v.node));
@@ -519,7 +519,7 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
     }
     for (VarSym* p : fn->params)
         if (p->byRef && !connected.count(p)) {
-            error(e.loc, fmt::format("VAR_IN_OUT '{}' of '{}' must be connected", p->name, fn->name));
+            error(diag::E0301, e.loc, fmt::format("VAR_IN_OUT '{}' of '{}' must be connected", p->name, fn->name));
             ok = false;
         }
     if (!ok) return bad(e.loc);

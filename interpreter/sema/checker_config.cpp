@@ -20,7 +20,7 @@ namespace strun::sema {
 void Checker::instantiateProgram(const std::string& name, PouInfo* pou, const ast::Loc& loc) {
     layoutPou(pou);
     if (!programIndex_.try_emplace(upper(name), model_.programs.size()).second) {
-        error(loc, fmt::format("duplicate program instance '{}'", name));
+        error(diag::E0106, loc, fmt::format("duplicate program instance '{}'", name));
         return;
     }
     ProgramInstance inst;
@@ -72,7 +72,7 @@ void Checker::buildConfiguration() {
     auto fromTaskObject = [](const ast::Configuration* c) { return c->name == source::kTwinCatTasksConfiguration; };
     const bool taskObjectsOnly = std::all_of(configurations_.begin(), configurations_.end(), fromTaskObject);
     if (configurations_.size() > 1 && !taskObjectsOnly) {
-        auto& d = error(configurations_[1]->loc, "only one CONFIGURATION per project");
+        auto& d = error(diag::E0601, configurations_[1]->loc, "only one CONFIGURATION per project");
         if (std::any_of(configurations_.begin(), configurations_.end(), fromTaskObject))
             d.withHelp("a TwinCAT project's tasks come from its .TcTTO files; remove them or the CONFIGURATION");
     }
@@ -99,7 +99,7 @@ void Checker::buildConfiguration() {
         Checked c = checkExpr(*e);
         if (!c.ok) return false;
         if (!c.isConst || !isTimeLike(c.type->kind)) {
-            error(e->loc, "expected a constant duration such as T#10ms");
+            error(diag::E0601, e->loc, "expected a constant duration such as T#10ms");
             return false;
         }
         out = c.type->kind == TK::Time ? c.constInt * 1000000 : c.constInt;
@@ -116,7 +116,7 @@ void Checker::buildConfiguration() {
                 out.bit = bp->bit;
                 return true;
             }
-            error(e->loc, "expected a global BOOL variable");
+            error(diag::E0601, e->loc, "expected a global BOOL variable");
             return false;
         }
         out.byte = c.directAbs + c.directOffset;
@@ -135,15 +135,27 @@ void Checker::buildConfiguration() {
         for (const auto& p : td->params) {
             std::string key = upper(p.name);
             if (!p.value) continue;
-            if (key == "INTERVAL") {
+            const std::string word = p.value->kind == ast::ExprKind::Literal ? upper(p.value->text) : "";
+            if (key == "INTERVAL" && (word == "TRUE" || word == "FALSE")) {
+                // INTERVAL := TRUE: a cyclic task with the target's default cycle
+                // time, as the IDE creates one (Baosky: 20 ms; decision 0297).
+                if (word == "TRUE" && profile().defaultCyclicInterval > 0) {
+                    s.interval = profile().defaultCyclicInterval;
+                    hasInterval = true;
+                } else {
+                    error(diag::E0601, p.value->loc, fmt::format("INTERVAL := {} of task '{}': {}; write the cycle time (INTERVAL := T#20ms)", word, s.name,
+                                                    word == "FALSE" ? "an INTERVAL is a time"
+                                                                    : fmt::format("{} has no default cycle time for a cyclic task", profile().description)));
+                }
+                s.intervalGiven = true;
+            } else if (key == "INTERVAL") {
                 rt::PlcTime t = 0;
                 if (constTime(p.value.get(), t)) {
                     s.interval = t;
                     hasInterval = t > 0;
                     if (t <= 0)
-                        warning(p.value->loc, fmt::format("the INTERVAL of task '{}' is {}: not a period, the task runs freewheeling "
-                                                          "(again and again without pause)", s.name, t == 0 ? "zero" : "negative"))
-                            .withCode("W0015");
+                        warning(diag::W0015, p.value->loc, fmt::format("the INTERVAL of task '{}' is {}: not a period, the task runs freewheeling "
+                                                          "(again and again without pause)", s.name, t == 0 ? "zero" : "negative"));
                 }
                 s.intervalGiven = true;
             } else if (key == "PRIORITY") {
@@ -153,7 +165,6 @@ void Checker::buildConfiguration() {
             } else if (key == "WATCHDOG") {
                 // WATCHDOG := TRUE: "check Watchdog" without a time, the seed's
                 // default applies (below); FALSE: no watchdog (decision 0244).
-                const std::string word = p.value->kind == ast::ExprKind::Literal ? upper(p.value->text) : "";
                 if (word == "TRUE" || word == "FALSE") {
                     watchdogOn = word == "TRUE";
                     s.watchdog = 0;
@@ -174,7 +185,7 @@ void Checker::buildConfiguration() {
                 if (v == "RISING") s.edges = rt::kEdgeRising;
                 else if (v == "FALLING") s.edges = rt::kEdgeFalling;
                 else if (v == "BOTH") s.edges = rt::kEdgeBoth;
-                else error(p.value->loc, "EDGE must be RISING, FALLING or BOTH");
+                else error(diag::E0601, p.value->loc, "EDGE must be RISING, FALLING or BOTH");
             } else if (key == "SINGLE" || key == "STATUS") {
                 if (boolRef(p.value.get(), s.trigger)) s.kind = key == "SINGLE" ? rt::TaskKind::Event : rt::TaskKind::Status;
             } else if (key == "EVENT") {
@@ -189,7 +200,7 @@ void Checker::buildConfiguration() {
                     s.kind = rt::TaskKind::TimeEvent;
                     s.atCalendarNanos = c.type->kind == TK::Dt ? c.constInt * 1000000000 : c.constInt;
                 } else if (c.ok) {
-                    error(p.value->loc, "AT needs a date-and-time literal such as DT#2026-01-01-02:00:00");
+                    error(diag::E0601, p.value->loc, "AT needs a date-and-time literal such as DT#2026-01-01-02:00:00");
                 }
             } else if (key == "REPEAT") {
                 std::string v = p.value->kind == ast::ExprKind::Name ? upper(p.value->name) : "";
@@ -198,10 +209,10 @@ void Checker::buildConfiguration() {
                     {"MONTHLY", rt::TimeRepeat::Monthly}, {"MONTH_END", rt::TimeRepeat::MonthEnd}, {"YEARLY", rt::TimeRepeat::Yearly},
                     {"ONCE", rt::TimeRepeat::Once}};
                 auto it = repeats.find(v);
-                if (it == repeats.end()) error(p.value->loc, "REPEAT must be HOURLY, DAILY, WEEKLY, MONTHLY, MONTH_END or YEARLY");
+                if (it == repeats.end()) error(diag::E0601, p.value->loc, "REPEAT must be HOURLY, DAILY, WEEKLY, MONTHLY, MONTH_END or YEARLY");
                 else s.repeat = it->second;
             } else {
-                error(p.loc, fmt::format("unknown task parameter '{}'", p.name));
+                error(diag::E0601, p.loc, fmt::format("unknown task parameter '{}'", p.name));
             }
         }
         if (hasInterval && s.kind == rt::TaskKind::Freewheeling) s.kind = rt::TaskKind::Cyclic;
@@ -230,7 +241,7 @@ void Checker::buildConfiguration() {
         if (!pc->task.empty()) {
             task = findTask(pc->task);
             if (!task) {
-                error(pc->loc, fmt::format("unknown task '{}'", pc->task));
+                error(diag::E0601, pc->loc, fmt::format("unknown task '{}'", pc->task));
                 continue;
             }
         } else {
@@ -251,7 +262,7 @@ void Checker::buildConfiguration() {
         if (!pc->isProgram) {
             VarSym* g = lookupVar(upper(pc->instance));
             if (!g || g->type->kind != TK::FunctionBlock || g->storage != Storage::Abs) {
-                error(pc->loc, fmt::format("'{}' is not a global function-block instance", pc->instance));
+                error(diag::E0107, pc->loc, fmt::format("'{}' is not a global function-block instance", pc->instance));
                 continue;
             }
             g->used = true;
@@ -260,7 +271,7 @@ void Checker::buildConfiguration() {
         }
         auto it = pous_.find(upper(pc->typeName));
         if (it == pous_.end() || it->second->kind != ast::PouKind::Program) {
-            error(pc->loc, fmt::format("'{}' is not a PROGRAM", pc->typeName));
+            error(diag::E0107, pc->loc, fmt::format("'{}' is not a PROGRAM", pc->typeName));
             continue;
         }
         instantiateProgram(pc->instance, it->second, pc->loc);
@@ -306,7 +317,7 @@ void Checker::buildConfiguration() {
     if (!options_.testProgram.empty()) addTestProgram(options_.testProgram);
     for (const auto& t : model_.tasks)
         if (std::string problem = rt::programCountProblem(profile(), t.spec, int(t.calls.size())); !problem.empty())
-            error(t.spec.loc, problem);
+            error(diag::E0601, t.spec.loc, problem);
 }
 
 // The test runner's PROGRAM in a project with a CONFIGURATION (decision 0141):
@@ -339,13 +350,13 @@ void Checker::addTestProgram(const std::string& name) {
 // EXTERNAL := FI0 (a target's input alias) or %IX0.0 (a bit of the physical inputs).
 bool Checker::externalInput(const ast::Expr& value, rt::TaskSpec& spec) {
     if (value.kind != ast::ExprKind::Name) {
-        error(value.loc, "EXTERNAL needs an input bit such as %IX0.0 or an input name of the target");
+        error(diag::E0601, value.loc, "EXTERNAL needs an input bit such as %IX0.0 or an input name of the target");
         return false;
     }
     if (!value.name.empty() && value.name[0] == '%') {
         std::string key = upper(value.name);
         if (key.size() < 3 || key[1] != 'I' || (std::isalpha(static_cast<unsigned char>(key[2])) && key[2] != 'X')) {
-            error(value.loc, fmt::format("EXTERNAL needs an input bit (%IX...), not '{}'", value.name));
+            error(diag::E0601, value.loc, fmt::format("EXTERNAL needs an input bit (%IX...), not '{}'", value.name));
             return false;
         }
         int bit = -1;
@@ -362,7 +373,7 @@ bool Checker::externalInput(const ast::Expr& value, rt::TaskSpec& spec) {
     }
     std::string names;
     for (const auto& a : profile().inputAliases) names += (names.empty() ? "" : ", ") + std::string(a.name);
-    error(value.loc, names.empty() ? fmt::format("unknown input '{}': {} has no named inputs; use an address such as %IX0.0",
+    error(diag::E0601, value.loc, names.empty() ? fmt::format("unknown input '{}': {} has no named inputs; use an address such as %IX0.0",
                                                  value.name, profile().description)
                                    : fmt::format("unknown input '{}': the inputs of {} are {}, or an address such as %IX0.0",
                                                  value.name, profile().description, names));
@@ -413,11 +424,10 @@ void Checker::warnUnused() {
                     // Program variables are visible in --dump, but a block instance nobody calls does nothing.
                     if (pou->kind == ast::PouKind::Program) {
                         if (v->type && v->type->kind == TK::FunctionBlock)
-                            log_.warning(v->loc, fmt::format("function block instance '{}' is never called or used", v->name))
-                                .withCode("W0014");
+                            log_.warning(diag::W0014, v->loc, fmt::format("function block instance '{}' is never called or used", v->name));
                         continue;
                     }
-                    log_.warning(v->loc, fmt::format("variable '{}' is never used", v->name));
+                    log_.warning(diag::W0003, v->loc, fmt::format("variable '{}' is never used", v->name));
                 }
             }
         };

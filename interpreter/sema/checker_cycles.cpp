@@ -14,7 +14,7 @@ namespace strun::sema {
 
 DeclDepthGuard::DeclDepthGuard(Checker& checker, const std::string& name, const ast::Loc& loc) : checker_(checker) {
     if (checker_.declStack_.size() >= kMaxDeclarationDepth) {
-        checker_.error(loc, fmt::format("declarations nested more than {} deep (at '{}'): each type or block contains, "
+        checker_.error(diag::E0007, loc, fmt::format("declarations nested more than {} deep (at '{}'): each type or block contains, "
                                         "aliases or extends the next",
                                         kMaxDeclarationDepth, name));
         return;
@@ -43,7 +43,7 @@ std::string Checker::cyclePath(const std::string& name) const {
 bool Checker::rejectByValueCycle(const Type* t, const ast::Loc& loc) {
     while (t && t->kind == TK::Array) t = t->elem;
     if (!t || !t->incomplete) return false;
-    error(loc, fmt::format("'{}' contains itself by value ({}); use POINTER TO or REFERENCE TO", t->name, cyclePath(t->name)));
+    error(diag::E0403, loc, fmt::format("'{}' contains itself by value ({}); use POINTER TO or REFERENCE TO", t->name, cyclePath(t->name)));
     return true;
 }
 
@@ -104,7 +104,7 @@ void breakCycles(std::map<std::string, Extender>& nodes, const std::function<voi
 }  // namespace
 
 void Checker::breakInheritanceCycles() {
-    auto report = [&](const Extender& n, const std::string& cycle) { error(n.loc, fmt::format("inheritance cycle: {}", cycle)); };
+    auto report = [&](const Extender& n, const std::string& cycle) { error(diag::E0403, n.loc, fmt::format("inheritance cycle: {}", cycle)); };
     std::map<std::string, Extender> blocks, interfaces, structs;
     for (PouInfo* p : pouOrder_) {
         ast::Pou* a = p->ast;

@@ -45,7 +45,7 @@ void Checker::collect(ast::CompilationUnit& unit) {
             continue;
         }
         if (typeDecls_.count(key) || types().byName(key)) {
-            error(t.nameLoc.line ? t.nameLoc : t.loc, fmt::format("duplicate type name '{}'", t.name));
+            error(diag::E0106, t.nameLoc.line ? t.nameLoc : t.loc, fmt::format("duplicate type name '{}'", t.name));
             continue;
         }
         typeDecls_[key] = &t;
@@ -87,7 +87,7 @@ void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
     std::string key = upper(pou->name);
     if (owner) {
         info->slot = methodSlot(key);
-        if (owner->methods.count(key)) error(pou->nameLoc.line ? pou->nameLoc : pou->loc, fmt::format("duplicate method '{}' in '{}'", pou->name, owner->name));
+        if (owner->methods.count(key)) error(diag::E0106, pou->nameLoc.line ? pou->nameLoc : pou->loc, fmt::format("duplicate method '{}' in '{}'", pou->name, owner->name));
         owner->methods[key] = raw;
         model_.pouStore.push_back(std::move(info));
     } else {
@@ -98,7 +98,7 @@ void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
             existing->second = raw;
             model_.pouStore.push_back(std::move(info));
         } else if (pous_.count(key) || typeDecls_.count(key) || types().byName(key)) {
-            Diagnostic& d = error(pou->nameLoc.line ? pou->nameLoc : pou->loc, fmt::format("duplicate declaration of '{}'", pou->name));
+            Diagnostic& d = error(diag::E0106, pou->nameLoc.line ? pou->nameLoc : pou->loc, fmt::format("duplicate declaration of '{}'", pou->name));
             if (existing != pous_.end() && existing->second->ast) {
                 const ast::Pou& first = *existing->second->ast;
                 d.note(first.nameLoc.line ? first.nameLoc : first.loc, fmt::format("'{}' is first declared here", first.name));
@@ -128,7 +128,7 @@ void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
             a->code->name = raw->name + "." + prop.name + (setter ? ".SET" : ".GET");
             std::string akey = upper(a->name);
             a->slot = methodSlot(akey);
-            if (raw->methods.count(akey)) error(prop.loc, fmt::format("duplicate property '{}' in '{}'", prop.name, raw->name));
+            if (raw->methods.count(akey)) error(diag::E0106, prop.loc, fmt::format("duplicate property '{}' in '{}'", prop.name, raw->name));
             raw->methods[akey] = a.get();
             model_.pouStore.push_back(std::move(a));
         }
@@ -161,10 +161,10 @@ const Type* Checker::resolveNamedType(const std::string& name, const ast::Loc& l
             if (!slot) slot = types().create(std::move(t));
             return slot;
         }
-        error(loc, fmt::format("'{}' is a function, not a type", name));
+        error(diag::E0107, loc, fmt::format("'{}' is a function, not a type", name));
         return nullptr;
     }
-    suggest(error(loc, fmt::format("unknown type '{}'", name)), name, typeNames());
+    suggest(error(diag::E0102, loc, fmt::format("unknown type '{}'", name)), name, typeNames());
     return nullptr;
 }
 
@@ -173,7 +173,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
     if (done != resolvedTypes_.end()) return done->second;
     ast::TypeDecl* decl = typeDecls_.at(key);
     if (resolvingTypes_.count(key)) {
-        error(decl->loc, fmt::format("type '{}' is defined in terms of itself", decl->name));
+        error(diag::E0403, decl->loc, fmt::format("type '{}' is defined in terms of itself", decl->name));
         return nullptr;
     }
     DeclDepthGuard depth(*this, decl->name, decl->nameLoc.line ? decl->nameLoc : decl->loc);
@@ -192,13 +192,13 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         if (!decl->extends.empty()) {
             const Type* base = resolveNamedType(decl->extends, decl->loc);
             if (base && base->incomplete) {
-                error(decl->loc, fmt::format("inheritance cycle: {}", cyclePath(base->name)));
+                error(diag::E0403, decl->loc, fmt::format("inheritance cycle: {}", cyclePath(base->name)));
             } else if (base && base->kind == TK::Struct) {
                 t->parent = base;
                 off = base->size;
                 align = base->align;
             } else if (base) {
-                error(decl->loc, fmt::format("'{}' can only extend a structure", decl->name));
+                error(diag::E0407, decl->loc, fmt::format("'{}' can only extend a structure", decl->name));
             }
         }
         std::vector<uint8_t> image;
@@ -213,7 +213,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
             if (rejectByValueCycle(ft, f.type ? f.type->loc : f.loc)) continue;
             for (size_t n = 0; n < f.names.size(); ++n) {
                 if (t->findField(upper(f.names[n]))) {
-                    error(f.loc, fmt::format("duplicate member '{}' in structure '{}'", f.names[n], decl->name));
+                    error(diag::E0106, f.loc, fmt::format("duplicate member '{}' in structure '{}'", f.names[n], decl->name));
                     continue;
                 }
                 align = std::max(align, ft->align);
@@ -226,7 +226,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
                 off = alignUp(off, ft->align);
                 t->fields.push_back({f.names[n], ft, off, n < f.nameLocs.size() ? f.nameLocs[n] : f.loc});
                 off += ft->size;
-                if (off > kMaxStorage) { error(f.loc, "structure too large"); off = 0; break; }
+                if (off > kMaxStorage) { error(diag::E0007, f.loc, "structure too large"); off = 0; break; }
             }
         }
         if (spec->isUnion) off = std::max(off, unionSize);
@@ -257,7 +257,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         t.qualifiedOnly = hasAttribute(decl->pragmas, "qualified_only");
         const Type* base = spec->elem ? resolveTypeSpec(spec->elem.get(), decl->name) : types().elementary(TK::Int);
         if (base && !isInteger(base->kind) && !isBitString(base->kind)) {
-            error(spec->loc, "the base type of an enumeration must be an integer type");
+            error(diag::E0407, spec->loc, "the base type of an enumeration must be an integer type");
             base = types().elementary(TK::Int);
         }
         if (!base) base = types().elementary(TK::Int);
@@ -270,8 +270,8 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
             int64_t v = next;
             if (ev.value && !constIntExpr(ev.value.get(), v, "an enumeration value")) v = next;
             if (!ev.value && pastLargest)
-                error(ev.loc, fmt::format("the enumeration value '{}' would follow the largest LINT: give it an explicit value", ev.name));
-            if (t.findEnumerator(upper(ev.name))) error(ev.loc, fmt::format("duplicate enumeration value '{}'", ev.name));
+                error(diag::E0407, ev.loc, fmt::format("the enumeration value '{}' would follow the largest LINT: give it an explicit value", ev.name));
+            if (t.findEnumerator(upper(ev.name))) error(diag::E0106, ev.loc, fmt::format("duplicate enumeration value '{}'", ev.name));
             t.enumerators.push_back({ev.name, v});
             pastLargest = v == std::numeric_limits<int64_t>::max();
             next = pastLargest ? v : v + 1;
@@ -288,7 +288,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         if (decl->init && decl->init->expr && decl->init->expr->kind == ast::ExprKind::Name) {
             const Enumerator* named = created->findEnumerator(upper(decl->init->expr->name));
             if (named) created->enumDefault = named->value;
-            if (!named) error(decl->init->loc, fmt::format("'{}' is not a value of '{}'", decl->init->expr->name, decl->name));
+            if (!named) error(diag::E0104, decl->init->loc, fmt::format("'{}' is not a value of '{}'", decl->init->expr->name, decl->name));
         }
         created->defaultImage.resize(created->size);
         writeScalar(created->defaultImage.data(), created, constInt(created->enumDefault, created->base, decl->loc));
@@ -320,7 +320,7 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
             int64_t len = 80;
             if (spec->length && !constIntExpr(spec->length.get(), len, "a string length")) len = 80;
             if (len < 1 || len > 65535) {
-                error(spec->loc, fmt::format("string length {} outside 1..65535", len));
+                error(diag::E0407, spec->loc, fmt::format("string length {} outside 1..65535", len));
                 len = 80;
             }
             return types().string(static_cast<uint32_t>(len), spec->wide);
@@ -339,13 +339,13 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
                 bool ok = constIntExpr(r.lo.get(), lo, "an array bound") & constIntExpr(r.hi.get(), hi, "an array bound");
                 if (!ok) return nullptr;
                 if (hi < lo) {
-                    error(spec->loc, fmt::format("array upper bound {} is below lower bound {}", hi, lo));
+                    error(diag::E0407, spec->loc, fmt::format("array upper bound {} is below lower bound {}", hi, lo));
                     return nullptr;
                 }
                 // Unsigned span: LINT#-9223372036854775808..LINT#9223372036854775807 has 2^64 elements.
                 const uint64_t span = static_cast<uint64_t>(hi) - static_cast<uint64_t>(lo);
                 if (span >= kMaxStorage || (span + 1) > kMaxStorage / total) {
-                    error(spec->loc, "array too large (more than 256 MiB)");
+                    error(diag::E0007, spec->loc, "array too large (more than 256 MiB)");
                     return nullptr;
                 }
                 total *= span + 1;
@@ -366,7 +366,7 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
             const Type* base = resolveTypeSpec(spec->elem.get(), context);
             if (!base) return nullptr;
             if (!isInteger(base->kind)) {
-                error(spec->loc, "a subrange needs an integer base type");
+                error(diag::E0407, spec->loc, "a subrange needs an integer base type");
                 return base;
             }
             int64_t lo = 0, hi = 0;
@@ -432,7 +432,7 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
             return t;
         }
         case ast::TypeSpecKind::Struct:
-            error(spec->loc, "a STRUCT can only be declared in a TYPE");
+            error(diag::E0009, spec->loc, "a STRUCT can only be declared in a TYPE");
             return nullptr;
     }
     return nullptr;
@@ -443,7 +443,7 @@ bool Checker::constIntExpr(const ast::Expr* e, int64_t& out, const char* what) {
     Checked c = checkExpr(*e);
     if (!c.ok) return false;
     if (!c.isConst || !(isIntRep(c.type) || c.untypedInt)) {
-        error(e->loc, fmt::format("{} must be a constant integer expression", what));
+        error(diag::E0401, e->loc, fmt::format("{} must be a constant integer expression", what));
         return false;
     }
     out = c.constInt;
@@ -481,7 +481,7 @@ void Checker::layoutPou(PouInfo* pou) {
             if (!pous_.count(base) && base.rfind('.') != std::string::npos) base = base.substr(base.rfind('.') + 1);
             auto it = pous_.find(base);
             if (it == pous_.end() || it->second->kind != ast::PouKind::FunctionBlock) {
-                error(pou->ast->loc, fmt::format("unknown function block '{}' in EXTENDS", pou->ast->extends));
+                error(diag::E0102, pou->ast->loc, fmt::format("unknown function block '{}' in EXTENDS", pou->ast->extends));
             } else {
                 layoutPou(it->second);
             }
@@ -630,7 +630,7 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 bool dup = pou->vars.count(key) != 0;
                 for (PouInfo* p = pou->parent; p && !dup; p = p->parent) dup = p->vars.count(key) != 0;
                 if (dup) {
-                    error(loc, fmt::format("duplicate variable '{}' in '{}'", name, pou->name));
+                    error(diag::E0106, loc, fmt::format("duplicate variable '{}' in '{}'", name, pou->name));
                     continue;
                 }
                 auto v = std::make_unique<VarSym>();
@@ -645,13 +645,13 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 if (isExternal) {
                     auto g = globals_.find(key);
                     if (g == globals_.end()) {
-                        suggest(error(loc, fmt::format("VAR_EXTERNAL '{}' names no global variable", name)), name, globalNames());
+                        suggest(error(diag::E0406, loc, fmt::format("VAR_EXTERNAL '{}' names no global variable", name)), name, globalNames());
                         unresolvedVars_.insert({pou, key});
                         continue;
                     }
                     if (g->second->sharedName) ambiguousGlobal(g->second, loc, name);
                     if (t && !sameType(t, g->second->type))
-                        error(loc, fmt::format("VAR_EXTERNAL '{}' is declared {} but the global is {}", name, typeName(t), typeName(g->second->type)));
+                        error(diag::E0406, loc, fmt::format("VAR_EXTERNAL '{}' is declared {} but the global is {}", name, typeName(t), typeName(g->second->type)));
                     v->global = g->second;
                     v->type = g->second->type;
                     v->storage = Storage::Abs;
@@ -663,9 +663,9 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                     continue;
                 }
                 if (t->kind == TK::FunctionBlock && t->pou && t->pou->ast->abstract && !byRefSection(block.section))
-                    error(decl.type ? decl.type->loc : loc, fmt::format("'{}' is ABSTRACT: it cannot have instances", t->name));
+                    error(diag::E0405, decl.type ? decl.type->loc : loc, fmt::format("'{}' is ABSTRACT: it cannot have instances", t->name));
                 if (t->kind == TK::Array && t->flexible && block.section != ast::VarSection::InOut)
-                    error(loc, "ARRAY[*] is only allowed in VAR_IN_OUT");
+                    error(diag::E0407, loc, "ARRAY[*] is only allowed in VAR_IN_OUT");
                 const bool byRef = block.section == ast::VarSection::InOut;
                 // ARRAY[*]: address and bounds (docs/decisions/0077); other in-outs: an address.
                 const uint32_t size = byRef ? (t->flexible ? 8 + 16 * static_cast<uint32_t>(t->dims.size()) : 8) : t->size;
@@ -688,14 +688,14 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                         v->storage = Storage::Frame;
                         v->offset = frameOff;
                         frameOff += size;
-                        if (frameOff > kMaxStorage) { error(loc, "too many local variables (frame above 256 MiB)"); frameOff = 0; }
+                        if (frameOff > kMaxStorage) { error(diag::E0007, loc, "too many local variables (frame above 256 MiB)"); frameOff = 0; }
                     }
                 } else {
                     instOff = alignUp(instOff, align);
                     v->storage = Storage::Self;
                     v->offset = instOff;
                     instOff += size;
-                    if (instOff > kMaxStorage) { error(loc, "instance too large (above 256 MiB)"); instOff = 0; }
+                    if (instOff > kMaxStorage) { error(diag::E0007, loc, "instance too large (above 256 MiB)"); instOff = 0; }
                     instanceFields->push_back({name, byRef ? types().reference(t) : t, v->offset, loc});
                 }
                 v->byRef = byRef;
@@ -704,7 +704,7 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                     block.section == ast::VarSection::InOut)
                     pou->params.push_back(v.get());
                 if (block.constant) {
-                    if (!decl.init) error(loc, fmt::format("CONSTANT '{}' needs an initial value", name));
+                    if (!decl.init) error(diag::E0401, loc, fmt::format("CONSTANT '{}' needs an initial value", name));
                     else foldConstant(*v, decl);
                 }
                 pou->vars[key] = v.get();
@@ -737,7 +737,7 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     // list, or beside a global of no list, it is a duplicate.
     VarSym* other = existing == globals_.end() ? nullptr : existing->second;
     if (other && (other->listName.empty() || declaringList_.empty() || listGlobals_.count(upper(declaringList_) + "." + key))) {
-        error(loc, fmt::format("duplicate global variable '{}'", name));
+        error(diag::E0106, loc, fmt::format("duplicate global variable '{}'", name));
         return nullptr;
     }
     const Type* t = resolveTypeSpec(decl.type.get(), name);
@@ -768,7 +768,7 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
         v->offset = listSize;
         listSize += std::max<uint32_t>(t->size, 1);
         if (listSize > kMaxStorage) {
-            error(loc, "global variable list too large (above 256 MiB)");
+            error(diag::E0007, loc, "global variable list too large (above 256 MiB)");
             listSize = 0;
         }
     }
@@ -887,32 +887,32 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
             Checked c = checkExpr(*init->expr);
             if (!c.ok) return;
             if (t->kind == TK::Enum && c.type && c.type->kind == TK::Enum && c.type != t) {
-                error(init->loc, fmt::format("initial value of type {} for a variable of type {}", typeName(c.type), typeName(t)));
+                error(diag::E0201, init->loc, fmt::format("initial value of type {} for a variable of type {}", typeName(c.type), typeName(t)));
                 return;
             }
             c = coerce(c, t, init->expr->loc, "initial value");
             if (!c.ok) return;
             if (isIntRep(t) || isRealRep(t)) {
                 if (!c.isConst) {
-                    error(init->expr->loc, "an initial value must be a constant expression");
+                    error(diag::E0401, init->expr->loc, "an initial value must be a constant expression");
                     return;
                 }
                 writeScalar(p, t, c);
             } else if (isStringType(t->kind)) {
                 auto* bytes = dynamic_cast<exec::ConstBytes*>(c.node);
-                if (!bytes) { error(init->expr->loc, "an initial value must be a constant expression"); return; }
+                if (!bytes) { error(diag::E0401, init->expr->loc, "an initial value must be a constant expression"); return; }
                 size_t n = std::min<size_t>(bytes->bytes.size(), t->size);
                 std::memcpy(p, bytes->bytes.data(), n);
                 p[t->size - 1] = 0;
                 if (t->kind == TK::WString) p[t->size - 2] = 0;
             } else {
-                error(init->expr->loc, fmt::format("a value of type {} cannot be initialised with an expression", typeName(t)));
+                error(diag::E0401, init->expr->loc, fmt::format("a value of type {} cannot be initialised with an expression", typeName(t)));
             }
             return;
         }
         case ast::InitKind::Array: {
             if (t->kind != TK::Array || t->flexible) {
-                error(init->loc, fmt::format("an array initialiser for a variable of type {}", typeName(t)));
+                error(diag::E0402, init->loc, fmt::format("an array initialiser for a variable of type {}", typeName(t)));
                 return;
             }
             uint64_t k = 0;
@@ -921,7 +921,7 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
                 if (item.repeat && !constIntExpr(item.repeat.get(), repeat, "a repetition count")) repeat = 1;
                 if (repeat <= 0) continue;
                 if (static_cast<uint64_t>(repeat) > t->elemCount - k) {
-                    error(init->loc, fmt::format("too many initial values for {} elements", t->elemCount));
+                    error(diag::E0402, init->loc, fmt::format("too many initial values for {} elements", t->elemCount));
                     return;
                 }
                 // `N(x)`: x is checked and written once, then its bytes copied
@@ -937,13 +937,13 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
         }
         case ast::InitKind::Struct: {
             if (t->kind != TK::Struct && t->kind != TK::FunctionBlock) {
-                error(init->loc, fmt::format("a structure initialiser for a variable of type {}", typeName(t)));
+                error(diag::E0402, init->loc, fmt::format("a structure initialiser for a variable of type {}", typeName(t)));
                 return;
             }
             for (const auto& f : init->fields) {
                 const Field* fld = t->findField(upper(f.name));
                 if (!fld) {
-                    error(f.loc, fmt::format("'{}' has no member '{}'", typeName(t), f.name));
+                    error(diag::E0103, f.loc, fmt::format("'{}' has no member '{}'", typeName(t), f.name));
                     continue;
                 }
                 const Type* ft = fld->type;
@@ -960,7 +960,7 @@ uint8_t* Checker::mapAddress(const std::string& address, const Type* t, const as
     std::string a = upper(address);
     bit = -1;
     auto fail = [&](const std::string& why) -> uint8_t* {
-        error(loc, fmt::format("bad direct address '{}': {}", address, why));
+        error(diag::E0408, loc, fmt::format("bad direct address '{}': {}", address, why));
         return nullptr;
     };
     if (a.size() < 3 || a[0] != '%') return fail("expected %I, %Q or %M");
@@ -1016,7 +1016,7 @@ uint8_t* Checker::mapAddress(const std::string& address, const Type* t, const as
         }
         byte = parts[0] * unit;
         if (t->size > unit && t->kind != TK::Array && t->kind != TK::Struct && !isStringType(t->kind))
-            log_.warning(loc, fmt::format("{} is larger than the {}-byte address '{}'", typeName(t), unit, address));
+            log_.warning(diag::W0008, loc, fmt::format("{} is larger than the {}-byte address '{}'", typeName(t), unit, address));
     }
     uint64_t end = byte + std::max<uint64_t>(t->size, 1);
     if (end > area->size()) return fail("address outside the process image");
@@ -1035,12 +1035,12 @@ namespace strun::sema {
 // a target that has system variables (M340); the layout is runtime/machine.h's.
 uint8_t* Checker::mapSystemAddress(const std::string& address, const Type* t, const ast::Loc& loc, int& bit) {
     auto fail = [&](const std::string& why) -> uint8_t* {
-        error(loc, fmt::format("bad system address '{}': {}", address, why));
+        error(diag::E0408, loc, fmt::format("bad system address '{}': {}", address, why));
         return nullptr;
     };
     if (profile().systemVariables == rt::SystemVariables::None) {
         const rt::PlcProfile* owner = rt::profileWithSystemVariables();
-        error(loc, fmt::format("system variable '{}' exists only with --target {} ({}); the target is {}", address,
+        error(diag::E0602, loc, fmt::format("system variable '{}' exists only with --target {} ({}); the target is {}", address,
                                owner ? owner->id : "m340", owner ? owner->description : "Modicon M340", profile().id));
         return nullptr;
     }
@@ -1098,7 +1098,7 @@ uint8_t* Checker::mapSystemAddress(const std::string& address, const Type* t, co
         }
     }
     if (!emulated)
-        log_.warning(loc, fmt::format("'{}' is not maintained by strun on {}: it reads 0 unless the program writes it",
+        log_.warning(diag::W0009, loc, fmt::format("'{}' is not maintained by strun on {}: it reads 0 unless the program writes it",
                                       address, profile().description));
     return where;
 }

@@ -155,7 +155,7 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
             auto r = stdlib::parseDurationLiteral(e.text, isLong, &saturated);
             if (!r) return fail(fmt::format("invalid duration literal '{}': {}", e.text.substr(0, 40), r.error()));
             if (saturated)  // TwinCAT's LTIME is unsigned; strun's is signed (decision 0092)
-                warning(e.loc, fmt::format("'{}' is beyond the largest LTIME (2^63-1 ns); it is taken as LTIME#106751d23h47m16s854ms775us807ns", e.text.substr(0, 60)));
+                warning(diag::W0005, e.loc, fmt::format("'{}' is beyond the largest LTIME (2^63-1 ns); it is taken as LTIME#106751d23h47m16s854ms775us807ns", e.text.substr(0, 60)));
             if (isLong) return constInt(r.value(), types().elementary(TK::LTime), e.loc);
             int64_t ms = r.value() / 1000000;
             if (ms > std::numeric_limits<int32_t>::max() || ms < std::numeric_limits<int32_t>::min())
@@ -354,7 +354,7 @@ void Checker::ambiguousGlobal(const VarSym* v, const ast::Loc& loc, const std::s
     std::string lists;
     for (const VarSym* g : model_.globals)
         if (g->sharedName && upper(g->name) == upper(v->name)) lists += (lists.empty() ? "" : ", ") + g->listName + "." + g->name;
-    error(loc, fmt::format("'{}' is declared in several global lists; write one of {}", written, lists));
+    error(diag::E0108, loc, fmt::format("'{}' is declared in several global lists; write one of {}", written, lists));
 }
 
 Checked Checker::checkName(const ast::Expr& e) {
@@ -369,7 +369,7 @@ Checked Checker::checkName(const ast::Expr& e) {
             return bad(e.loc);
         }
         if (!v->qualifiedOnlyList.empty() && !qualifiedAccess_ && v->section == ast::VarSection::Global) {
-            error(e.loc, fmt::format("'{}' is in global list '{}' with {{attribute 'qualified_only'}}: write {}.{}", e.name,
+            error(diag::E0108, e.loc, fmt::format("'{}' is in global list '{}' with {{attribute 'qualified_only'}}: write {}.{}", e.name,
                                      v->qualifiedOnlyList, v->qualifiedOnlyList, e.name));
             return bad(e.loc);
         }
@@ -409,7 +409,7 @@ Checked Checker::checkName(const ast::Expr& e) {
     const Type* et = nullptr;
     if (const Enumerator* en = lookupEnumValue(key, &et)) {
         if (ambiguousEnumValues_.count(key)) {
-            error(e.loc, fmt::format("'{}' is a value of several enumerations; qualify it (Type#{} or Type.{})", e.name, e.name, e.name));
+            error(diag::E0108, e.loc, fmt::format("'{}' is a value of several enumerations; qualify it (Type#{} or Type.{})", e.name, e.name, e.name));
             return bad(e.loc);
         }
         return constInt(en->value, et, e.loc);
@@ -428,13 +428,13 @@ Checked Checker::checkName(const ast::Expr& e) {
             return c;
         }
     if (pous_.count(key)) {
-        error(e.loc, fmt::format("'{}' is a POU, not a variable", e.name));
+        error(diag::E0107, e.loc, fmt::format("'{}' is a POU, not a variable", e.name));
         return bad(e.loc);
     }
     if (Checked later = laterConstant(key, e.loc); later.ok) return later;
     // A variable declared with an unknown type: that error is the root cause.
     if (isUnresolved(key)) return bad(e.loc);
-    suggest(error(e.loc, fmt::format("undeclared identifier '{}'", e.name)), e.name, visibleVariableNames());
+    suggest(error(diag::E0101, e.loc, fmt::format("undeclared identifier '{}'", e.name)), e.name, visibleVariableNames());
     return bad(e.loc);
 }
 
@@ -493,7 +493,7 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
         // Bit access x.3
         TK k = t->kind;
         if (!(isInteger(k) || isBitString(k))) {
-            error(loc, fmt::format("bit access needs an integer or bit-string value, not {}", typeName(t)));
+            error(diag::E0207, loc, fmt::format("bit access needs an integer or bit-string value, not {}", typeName(t)));
             return bad(loc);
         }
         int bit = 0;
@@ -502,11 +502,11 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
             bit = bit * 10 + (ch - '0');
         }
         if (bit >= bitWidth(k)) {
-            error(loc, fmt::format("bit {} does not exist in {}", member, typeName(t)));
+            error(diag::E0103, loc, fmt::format("bit {} does not exist in {}", member, typeName(t)));
             return bad(loc);
         }
         if (!base.isPlace) {
-            error(loc, "bit access needs a variable");
+            error(diag::E0207, loc, "bit access needs a variable");
             return bad(loc);
         }
         Checked c = base;
@@ -530,11 +530,11 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
         bool found = false;
         Checked p = propertyAccess(base, key, loc, found);
         if (found) return p;
-        error(loc, fmt::format("interface '{}' has no property '{}'", typeName(t), member));
+        error(diag::E0103, loc, fmt::format("interface '{}' has no property '{}'", typeName(t), member));
         return bad(loc);
     }
     if (t->kind != TK::Struct && t->kind != TK::FunctionBlock) {
-        error(loc, fmt::format("'{}' is not a member: {} has no members", member, typeName(t)));
+        error(diag::E0103, loc, fmt::format("'{}' is not a member: {} has no members", member, typeName(t)));
         return bad(loc);
     }
     const Field* f = t->findField(key);
@@ -556,7 +556,7 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
             for (const PouInfo* p = t->pou; p; p = p->parent)
                 for (const auto& [mkey, m] : p->methods)
                     if (m->name.rfind("__", 0) != 0) members.push_back(m->name);
-        suggest(error(loc, fmt::format("'{}' has no member '{}'", typeName(t), member)), member, members);
+        suggest(error(diag::E0103, loc, fmt::format("'{}' has no member '{}'", typeName(t), member)), member, members);
         return bad(loc);
     }
     Checked c;
@@ -581,7 +581,7 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
             // from outside (`fb.count`, `ADR(fb.buffer)`); IEC 61131-3 does not
             // (decision 0206, revising 0072): an error with --strict only.
             if (options_.strict && !libraryFiles_.count(loc.file)) {
-                error(loc, fmt::format("'{}' is an internal variable of '{}'; only its inputs and outputs are visible outside", mv->name, t->name));
+                error(diag::E0109, loc, fmt::format("'{}' is an internal variable of '{}'; only its inputs and outputs are visible outside", mv->name, t->name));
                 return bad(loc);
             }
             c.readOnly = true;
@@ -630,7 +630,7 @@ Checked Checker::partialAccess(Checked base, const std::string& key, const std::
     TK partKind = key[1] == 'B' ? TK::Byte : key[1] == 'W' ? TK::Word : key[1] == 'D' ? TK::DWord : TK::LWord;
     const Type* part = types().elementary(partKind);
     if (!(isInteger(k) || isBitString(k))) {
-        error(loc, fmt::format("partial access {} needs an integer or bit-string value, not {}", member, typeName(t)));
+        error(diag::E0207, loc, fmt::format("partial access {} needs an integer or bit-string value, not {}", member, typeName(t)));
         return bad(loc);
     }
     uint64_t index = 0;
@@ -639,11 +639,11 @@ Checked Checker::partialAccess(Checked base, const std::string& key, const std::
         index = index * 10 + static_cast<uint64_t>(key[i] - '0');
     }
     if ((index + 1) * part->size > t->size) {
-        error(loc, fmt::format("{} does not exist in {}", member, typeName(t)));
+        error(diag::E0103, loc, fmt::format("{} does not exist in {}", member, typeName(t)));
         return bad(loc);
     }
     if (!base.isPlace) {
-        error(loc, "partial access needs a variable");
+        error(diag::E0207, loc, "partial access needs a variable");
         return bad(loc);
     }
     Checked c = base;
@@ -701,17 +701,17 @@ Checked Checker::checkIndex(const ast::Expr& e) {
     const Type* t = base.type;
     if (isStringType(t->kind) || t->kind == TK::Pointer) return checkStringOrPointerIndex(e, base);
     if (t->kind != TK::Array) {
-        error(e.loc, fmt::format("subscript on a value of type {}, which is not an array", typeName(t)));
+        error(diag::E0204, e.loc, fmt::format("subscript on a value of type {}, which is not an array", typeName(t)));
         return bad(e.loc);
     }
     size_t nsub = e.kids.size() - 1;
     if (t->flexible) {
         if (!base.flexDesc) {
-            error(e.loc, "ARRAY[*] is only usable as a VAR_IN_OUT parameter");
+            error(diag::E0407, e.loc, "ARRAY[*] is only usable as a VAR_IN_OUT parameter");
             return bad(e.loc);
         }
         if (e.kids.size() - 1 != t->dims.size()) {
-            error(e.loc, fmt::format("{} subscript(s) given, the array has {} dimension(s)", e.kids.size() - 1, t->dims.size()));
+            error(diag::E0204, e.loc, fmt::format("{} subscript(s) given, the array has {} dimension(s)", e.kids.size() - 1, t->dims.size()));
             return bad(e.loc);
         }
         auto* n = pool().make<exec::FlexIndexPlace>();
@@ -728,7 +728,7 @@ Checked Checker::checkIndex(const ast::Expr& e) {
             Checked ix = checkExpr(*e.kids[k]);
             if (!ix.ok) return bad(e.loc);
             if (!(isInteger(ix.type->kind) || isBitString(ix.type->kind) || ix.untypedInt)) {
-                error(e.kids[k]->loc, fmt::format("an array subscript must be an integer, not {}", typeName(ix.type)));
+                error(diag::E0204, e.kids[k]->loc, fmt::format("an array subscript must be an integer, not {}", typeName(ix.type)));
                 return bad(e.loc);
             }
             c.hasCall = c.hasCall || ix.hasCall;
@@ -739,7 +739,7 @@ Checked Checker::checkIndex(const ast::Expr& e) {
         return c;
     }
     if (nsub != t->dims.size()) {
-        error(e.loc, fmt::format("{} subscript(s) given, the array has {} dimension(s)", nsub, t->dims.size()));
+        error(diag::E0204, e.loc, fmt::format("{} subscript(s) given, the array has {} dimension(s)", nsub, t->dims.size()));
         return bad(e.loc);
     }
     std::vector<exec::IndexPlace::Dim> dims;
@@ -757,13 +757,13 @@ Checked Checker::checkIndex(const ast::Expr& e) {
         if (!ix.ok) return bad(e.loc);
         hasCall = hasCall || ix.hasCall;
         if (!(isInteger(ix.type->kind) || isBitString(ix.type->kind) || ix.type->kind == TK::Enum || ix.untypedInt)) {
-            error(e.kids[k + 1]->loc, fmt::format("an array subscript must be an integer, not {}", typeName(ix.type)));
+            error(diag::E0204, e.kids[k + 1]->loc, fmt::format("an array subscript must be an integer, not {}", typeName(ix.type)));
             return bad(e.loc);
         }
         ix = settle(ix);
         if (ix.isConst) {
             if (ix.constInt < t->dims[k].lo || ix.constInt > t->dims[k].hi) {
-                error(e.kids[k + 1]->loc, fmt::format("subscript {} is outside the array bounds {}..{}", ix.constInt, t->dims[k].lo, t->dims[k].hi));
+                error(diag::E0204, e.kids[k + 1]->loc, fmt::format("subscript {} is outside the array bounds {}..{}", ix.constInt, t->dims[k].lo, t->dims[k].hi));
                 return bad(e.loc);
             }
             constOffset += static_cast<uint64_t>(ix.constInt - t->dims[k].lo) * strides[k];
@@ -856,7 +856,7 @@ Checked Checker::checkExprOfKind(const ast::Expr& e) {
             Checked p = checkExpr(*e.kids[0]);
             if (!p.ok) return p;
             if (p.type->kind != TK::Pointer && p.type->kind != TK::Reference) {
-                error(e.loc, fmt::format("'^' needs a POINTER, not {}", typeName(p.type)));
+                error(diag::E0201, e.loc, fmt::format("'^' needs a POINTER, not {}", typeName(p.type)));
                 return bad(e.loc);
             }
             Checked c;
@@ -881,7 +881,7 @@ Checked Checker::checkCondition(const ast::Expr& e, const char* what) {
     Checked c = checkExpr(e);
     if (!c.ok) return c;
     if (c.type->kind != TK::Bool) {
-        error(e.loc, fmt::format("{} must be BOOL, not {}", what, typeName(c.type)));
+        error(diag::E0203, e.loc, fmt::format("{} must be BOOL, not {}", what, typeName(c.type)));
         return bad(e.loc);
     }
     return c;
@@ -975,7 +975,7 @@ Checked Checker::convert(Checked e, const Type* target, const ast::Loc& loc, boo
         }
     } else if (isReal(f)) {
         if (!(isIntRep(target))) {
-            error(loc, fmt::format("no conversion from {} to {}", typeName(from), typeName(target)));
+            error(diag::E0201, loc, fmt::format("no conversion from {} to {}", typeName(from), typeName(target)));
             return bad(loc);
         }
         IntInfo ii = intInfo(t);
@@ -1002,7 +1002,7 @@ Checked Checker::convert(Checked e, const Type* target, const ast::Loc& loc, boo
     } else if (isIntRep(from) && isIntRep(target)) {
         n = intConv(e.node);
     } else {
-        error(loc, fmt::format("no conversion from {} to {}", typeName(from), typeName(target)));
+        error(diag::E0201, loc, fmt::format("no conversion from {} to {}", typeName(from), typeName(target)));
         return bad(loc);
     }
     n->type = target;
@@ -1021,12 +1021,12 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
                 // A literal that does not fit is an error; a constant expression
                 // (127 + 1) wraps like the run-time arithmetic, with a warning (decision 0090).
                 if (!e.foldedExpr || t == TK::Bool) {
-                    error(loc, fmt::format("constant {} is outside the range of {}", e.constInt, typeName(target)));
+                    error(diag::E0205, loc, fmt::format("constant {} is outside the range of {}", e.constInt, typeName(target)));
                     return bad(loc);
                 }
                 Checked wrapped = convert(settle(e), target, loc);
                 if (!wrapped.ok) return wrapped;
-                if (!lenient(loc, fmt::format("constant {} does not fit {}; it wraps to {}", e.constInt, typeName(target), wrapped.constInt)))
+                if (!lenient(diag::W0002, loc, fmt::format("constant {} does not fit {}; it wraps to {}", e.constInt, typeName(target), wrapped.constInt)))
                     return bad(loc);
                 return wrapped;
             }
@@ -1043,9 +1043,8 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         from = e.type;
     }
     if (isStringType(from->kind) && from->kind == target->kind && e.isConst && from->maxLen > target->maxLen && target->maxLen > 0)
-        warning(e.loc.line ? e.loc : loc, fmt::format("the string has {} characters; {} keeps only the first {}", from->maxLen,
-                                                      typeName(target), target->maxLen))
-            .withCode("W0016");
+        warning(diag::W0016, e.loc.line ? e.loc : loc, fmt::format("the string has {} characters; {} keeps only the first {}", from->maxLen,
+                                                      typeName(target), target->maxLen));
     if (isCharType(target->kind) && isStringType(from->kind) && e.isConst) {
         // c : CHAR := 'A': a one-character string literal is that character.
         if (auto* bytes = dynamic_cast<exec::ConstBytes*>(e.node)) {
@@ -1077,7 +1076,7 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
     auto pointerWide = [](const Type* t) { return t->kind == TK::ULInt || t->kind == TK::LWord; };
     if ((target->kind == TK::Pointer && pointerWide(from)) || (from->kind == TK::Pointer && pointerWide(target))) {
         const bool promotion = std::strcmp(what, "operand") == 0;  // `pt < end`: compared as addresses
-        if (!promotion && !lenient(loc, fmt::format("implicit conversion from {} to {}", typeName(from), typeName(target)))) return bad(loc);
+        if (!promotion && !lenient(diag::W0001, loc, fmt::format("implicit conversion from {} to {}", typeName(from), typeName(target)))) return bad(loc);
         e.type = target;
         if (e.node) e.node->type = target;
         e.isPlace = false;
@@ -1104,7 +1103,7 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
             for (PouInfo* i : all) ok = ok || i == target->pou;
         }
         if (!ok) {
-            error(loc, fmt::format("{}: {} does not implement {}", what, typeName(from), typeName(target)));
+            error(diag::E0405, loc, fmt::format("{}: {} does not implement {}", what, typeName(from), typeName(target)));
             return bad(loc);
         }
         Checked c = e;
@@ -1127,7 +1126,7 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         const bool promotion = std::strcmp(what, "operand") == 0;  // operands brought to their common type
         if (promotion && bitStringMix(from, target)) return convert(e, target, loc);
         if (codesysImplicit(from, target)) {
-            if (!lenient(loc, fmt::format("implicit conversion from {} to {}: possible loss of data", typeName(from), typeName(target)),
+            if (!lenient(diag::W0001, loc, fmt::format("implicit conversion from {} to {}: possible loss of data", typeName(from), typeName(target)),
                          fmt::format("; use {}_TO_{}", upper(from->name), upper(target->name))))
                 return bad(loc);
             return convert(e, target, loc);
@@ -1138,11 +1137,11 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
     if (enumToInt || intToEnum) {
         const Type* en = enumToInt ? from : target;
         if (en->strictEnum) {
-            error(loc, fmt::format("{}: cannot convert {} to {} implicitly; '{}' has {{attribute 'strict'}}", what, typeName(from),
+            error(diag::E0201, loc, fmt::format("{}: cannot convert {} to {} implicitly; '{}' has {{attribute 'strict'}}", what, typeName(from),
                                    typeName(target), en->name));
             return bad(loc);
         }
-        if (!lenient(loc, fmt::format("implicit conversion from {} to {}", typeName(from), typeName(target)))) return bad(loc);
+        if (!lenient(diag::W0001, loc, fmt::format("implicit conversion from {} to {}", typeName(from), typeName(target)))) return bad(loc);
         Checked c = convert(e, enumToInt ? target : en->base, loc);
         if (!c.ok) return c;
         c.type = target;
@@ -1153,7 +1152,7 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
     if (isElementary(from->kind) && isElementary(target->kind) && !isStringType(from->kind))
         hint = fmt::format("; use {}_TO_{}", upper(from->name == "TIME_OF_DAY" ? "TOD" : from->name == "DATE_AND_TIME" ? "DT" : from->name),
                            upper(target->name == "TIME_OF_DAY" ? "TOD" : target->name == "DATE_AND_TIME" ? "DT" : target->name));
-    Diagnostic& d = error(loc, fmt::format("{}: cannot convert {} to {} implicitly{}", what, typeName(from), typeName(target), hint));
+    Diagnostic& d = error(diag::E0201, loc, fmt::format("{}: cannot convert {} to {} implicitly{}", what, typeName(from), typeName(target), hint));
     // `s := "hello"`: in ST double quotes make a WSTRING literal (a C or Python habit).
     if (e.isConst && from->kind == TK::WString && target->kind == TK::String)
         d.withHelp("a STRING literal is written in single quotes ('hello'); double quotes make a WSTRING");
@@ -1162,7 +1161,7 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
 
 const Type* Checker::commonType(Checked& a, Checked& b, const ast::Loc& loc, bool report) {
     auto fail = [&]() -> const Type* {
-        if (report) error(loc, fmt::format("operands of types {} and {} need an explicit conversion", typeName(a.type), typeName(b.type)));
+        if (report) error(diag::E0202, loc, fmt::format("operands of types {} and {} need an explicit conversion", typeName(a.type), typeName(b.type)));
         return nullptr;
     };
     if ((a.untypedInt || a.untypedReal) && (b.untypedInt || b.untypedReal)) {

@@ -77,7 +77,7 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
     // array of ten million such blocks is an error, not gigabytes and minutes.
     if (model_.initCalls.size() >= kMaxFbInitCalls) {
         if (!fbInitLimitReported_)
-            error(declSpec ? declSpec->loc : init->ast->loc,
+            error(diag::E0007, declSpec ? declSpec->loc : init->ast->loc,
                   fmt::format("more than {} instances of function blocks with FB_init (the limit per project)", kMaxFbInitCalls));
         fbInitLimitReported_ = true;
         return;

@@ -50,13 +50,13 @@ struct AssignmentValue final : exec::Expr {
 Checked Checker::checkStringOrPointerIndex(const ast::Expr& e, const Checked& base) {
     const Type* t = base.type;
     if (e.kids.size() != 2) {
-        error(e.loc, fmt::format("{} subscript(s) given, a {} takes one", e.kids.size() - 1, typeName(t)));
+        error(diag::E0301, e.loc, fmt::format("{} subscript(s) given, a {} takes one", e.kids.size() - 1, typeName(t)));
         return bad(e.loc);
     }
     Checked ix = checkExpr(*e.kids[1]);
     if (!ix.ok) return bad(e.loc);
     if (!(isInteger(ix.type->kind) || isBitString(ix.type->kind) || ix.untypedInt)) {
-        error(e.kids[1]->loc, fmt::format("a subscript must be an integer, not {}", typeName(ix.type)));
+        error(diag::E0204, e.kids[1]->loc, fmt::format("a subscript must be an integer, not {}", typeName(ix.type)));
         return bad(e.loc);
     }
     ix = settle(ix);
@@ -86,7 +86,7 @@ Checked Checker::checkStringOrPointerIndex(const ast::Expr& e, const Checked& ba
     // p[i] is (p + i * SIZEOF(p^))^, checked like every dereference.
     const Type* target = t->target;
     if (!target || target->size == 0) {
-        error(e.loc, fmt::format("cannot index a {}: its target has no size", typeName(t)));
+        error(diag::E0204, e.loc, fmt::format("cannot index a {}: its target has no size", typeName(t)));
         return bad(e.loc);
     }
     c.type = target;

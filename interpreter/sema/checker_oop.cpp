@@ -40,7 +40,7 @@ void Checker::collectInterfaces(PouInfo* itf, std::vector<PouInfo*>& out) {
     for (const auto& b : bases) {
         auto it = pous_.find(upper(b));
         if (it == pous_.end() || it->second->kind != ast::PouKind::Interface) {
-            error(itf->ast->loc, fmt::format("'{}' is not an interface", b));
+            error(diag::E0405, itf->ast->loc, fmt::format("'{}' is not an interface", b));
             continue;
         }
         collectInterfaces(it->second, out);
@@ -72,20 +72,20 @@ void Checker::buildClasses() {
             build(fb->parent);
             if (fb->parent->classDesc) d.methods = fb->parent->classDesc->methods;
             fb->interfaces = fb->parent->interfaces;
-            if (fb->parent->ast->final) error(fb->ast->loc, fmt::format("'{}' cannot extend the FINAL '{}'", fb->name, fb->parent->name));
+            if (fb->parent->ast->final) error(diag::E0405, fb->ast->loc, fmt::format("'{}' cannot extend the FINAL '{}'", fb->name, fb->parent->name));
         }
         for (auto& [key, m] : fb->methods) {
             if (m->slot < 0) continue;
             if (m->ast && m->ast->override && !(fb->parent && findMethod(fb->parent, key)))
-                error(m->ast->nameLoc.line ? m->ast->nameLoc : m->ast->loc,
+                error(diag::E0405, m->ast->nameLoc.line ? m->ast->nameLoc : m->ast->loc,
                       fmt::format("method '{}' is marked OVERRIDE but '{}' has no base with a method '{}'", m->name,
                                   fb->name, m->name));
             if (fb->parent) {
                 PouInfo* base = findMethod(fb->parent, key);
                 if (base && base->ast && base->ast->final)
-                    error(m->ast->loc, fmt::format("method '{}' is FINAL in '{}'", m->name, fb->parent->name));
+                    error(diag::E0405, m->ast->loc, fmt::format("method '{}' is FINAL in '{}'", m->name, fb->parent->name));
                 if (base && !sameSignature(base, m))
-                    error(m->ast->nameLoc.line ? m->ast->nameLoc : m->ast->loc,
+                    error(diag::E0405, m->ast->nameLoc.line ? m->ast->nameLoc : m->ast->loc,
                           fmt::format("'{}' overrides '{}.{}' with a different signature", m->name, fb->parent->name, m->name));
             }
             if (m->ast && (m->ast->hasBody || !m->ast->body.empty() || !m->ast->abstract)) d.methods[static_cast<size_t>(m->slot)] = m->code;
@@ -94,7 +94,7 @@ void Checker::buildClasses() {
         for (const auto& name : fb->ast->implements) {
             auto it = pous_.find(upper(name));
             if (it == pous_.end() || it->second->kind != ast::PouKind::Interface) {
-                error(fb->ast->loc, fmt::format("'{}' in IMPLEMENTS is not an interface", name));
+                error(diag::E0405, fb->ast->loc, fmt::format("'{}' in IMPLEMENTS is not an interface", name));
                 continue;
             }
             collectInterfaces(it->second, fb->interfaces);
@@ -106,12 +106,12 @@ void Checker::buildClasses() {
                 PouInfo* impl = findMethod(fb, key);
                 if (!impl && im->property) continue;  // an accessor left out faults when called (NULL_POINTER)
                 if (!impl) {
-                    error(fb->ast->nameLoc.line ? fb->ast->nameLoc : fb->ast->loc,
+                    error(diag::E0405, fb->ast->nameLoc.line ? fb->ast->nameLoc : fb->ast->loc,
                           fmt::format("'{}' does not implement '{}.{}'", fb->name, itf->name, im->property ? im->property->name : im->name));
                 } else {
                     layoutPou(im);
                     if (!sameSignature(im, impl))
-                        error(impl->ast->loc, fmt::format("'{}.{}' does not match the signature in '{}'", fb->name, impl->name, itf->name));
+                        error(diag::E0405, impl->ast->loc, fmt::format("'{}.{}' does not match the signature in '{}'", fb->name, impl->name, itf->name));
                 }
             }
         }
@@ -122,7 +122,7 @@ void Checker::buildClasses() {
                     if (!m->ast || !m->ast->abstract || m->slot < 0) continue;
                     PouInfo* impl = findMethod(fb, key);
                     if (!impl || !impl->ast || impl->ast->abstract)
-                        error(fb->ast->nameLoc.line ? fb->ast->nameLoc : fb->ast->loc,
+                        error(diag::E0405, fb->ast->nameLoc.line ? fb->ast->nameLoc : fb->ast->loc,
                               fmt::format("'{}' must implement the ABSTRACT method '{}' of '{}'", fb->name, m->name, p->name));
                 }
         }
@@ -140,28 +140,28 @@ Checked Checker::methodCall(Checked base, PouInfo* method, const ast::Expr& call
     bool viaInterface = base.type->kind == TK::Interface;
     if (viaInterface) instance = pool().make<exec::AddressValuePlace>(base.node);
     if (method->ast && method->ast->access == ast::Access::Private && !insideOwnInstance(method->owner))
-        error(call.kids[0]->nameLoc.line ? call.kids[0]->nameLoc : call.loc, fmt::format("method '{}' is PRIVATE", method->name));
+        error(diag::E0109, call.kids[0]->nameLoc.line ? call.kids[0]->nameLoc : call.loc, fmt::format("method '{}' is PRIVATE", method->name));
     Checked r = callUserFunction(method, call, instance);
     if (!r.ok) return r;
     auto* node = static_cast<exec::CallPou*>(r.node);
     const bool isProgram = method->owner && method->owner->kind == ast::PouKind::Program;
     if (!base.superRef && !isProgram) node->virtualSlot = method->slot;
     if (!viaInterface && !isProgram && method->ast && method->ast->abstract && base.superRef)
-        error(call.loc, fmt::format("'{}' is ABSTRACT in the parent", method->name));
+        error(diag::E0405, call.loc, fmt::format("'{}' is ABSTRACT in the parent", method->name));
     return r;
 }
 
 Checked Checker::checkThis(const ast::Expr& e, bool deref) {
     PouInfo* fb = pou_ && pou_->owner ? pou_->owner : pou_;
     if (!fb || (fb->kind != ast::PouKind::FunctionBlock && fb->kind != ast::PouKind::Program)) {
-        error(e.loc, fmt::format("{} is only available inside a function block", e.kind == ast::ExprKind::Super ? "SUPER" : "THIS"));
+        error(diag::E0109, e.loc, fmt::format("{} is only available inside a function block", e.kind == ast::ExprKind::Super ? "SUPER" : "THIS"));
         return bad(e.loc);
     }
     const Type* t = fb->instanceType;
     bool super = e.kind == ast::ExprKind::Super;
     if (super) {
         if (!fb->parent) {
-            error(e.loc, fmt::format("'{}' has no parent: SUPER needs EXTENDS", fb->name));
+            error(diag::E0405, e.loc, fmt::format("'{}' has no parent: SUPER needs EXTENDS", fb->name));
             return bad(e.loc);
         }
         t = fb->parent->instanceType;
@@ -235,7 +235,7 @@ Checked Checker::propertyAccess(Checked base, const std::string& key, const ast:
 exec::Stmt* Checker::assignProperty(Checked target, Checked value, const ast::Loc& loc) {
     PouInfo* setter = target.propertySetter;
     if (!setter) {
-        error(loc, fmt::format("the property '{}' has no SET accessor (it can be read, not assigned)", target.propertyName));
+        error(diag::E0405, loc, fmt::format("the property '{}' has no SET accessor (it can be read, not assigned)", target.propertyName));
         return nullptr;
     }
     layoutPou(setter);
@@ -278,7 +278,7 @@ Checked Checker::addressOf(const ast::Expr& e, const char* fn) {
     suppressAutoDeref_ = saved;
     if (!v.ok) return v;
     if (!v.isPlace || v.node->bitIndex() >= 0) {
-        error(e.loc, fmt::format("{} needs a variable", fn));
+        error(diag::E0206, e.loc, fmt::format("{} needs a variable", fn));
         return bad(e.loc);
     }
     // OSCAT writes a function's result through a pointer (pt := ADR(BYTE_TO_STRB)).

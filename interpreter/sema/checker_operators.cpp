@@ -117,7 +117,7 @@ Checked Checker::checkUnary(const ast::Expr& e) {
     r.hasCall = a.hasCall;
     if (e.op == ast::Op::Plus) {
         if (!(isNumeric(a.type->kind) || a.untypedInt || a.untypedReal || isTimeLike(a.type->kind))) {
-            error(e.loc, fmt::format("unary '+' needs a number, not {}", typeName(a.type)));
+            error(diag::E0202, e.loc, fmt::format("unary '+' needs a number, not {}", typeName(a.type)));
             return bad(e.loc);
         }
         a.isPlace = false;
@@ -151,7 +151,7 @@ Checked Checker::checkUnary(const ast::Expr& e) {
             k = a.type->kind;
         }
         if (!(isInteger(k) || isReal(k) || isTimeLike(k))) {
-            error(e.loc, fmt::format("unary '-' needs a number or a duration, not {}", typeName(a.type)));
+            error(diag::E0202, e.loc, fmt::format("unary '-' needs a number or a duration, not {}", typeName(a.type)));
             return bad(e.loc);
         }
         r.type = a.type;
@@ -167,7 +167,7 @@ Checked Checker::checkUnary(const ast::Expr& e) {
     if (k == TK::Bool) r.node = pool().make<exec::NotBool>(a.node);
     else if (isBitString(k) || isInteger(k)) r.node = makeIntByRep<exec::NotBits>(pool(), repOf(a.type), a.node);
     else {
-        error(e.loc, fmt::format("NOT needs a BOOL or a bit string, not {}", typeName(a.type)));
+        error(diag::E0202, e.loc, fmt::format("NOT needs a BOOL or a bit string, not {}", typeName(a.type)));
         return bad(e.loc);
     }
     r.node->type = r.type;
@@ -196,9 +196,8 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
     TK ka = a.type->kind, kb = b.type->kind;
     if ((op == ast::Op::Div || op == ast::Op::Mod) && b.isConst && (b.untypedInt || isInteger(kb) || isBitString(kb)) &&
         b.constInt == 0)
-        warning(b.loc.line ? b.loc : loc, fmt::format("division by the constant 0: at run time {} records DIV_BY_ZERO and divides by 1",
-                                                       op == ast::Op::Div ? "'/'" : "MOD"))
-            .withCode("W0012");
+        warning(diag::W0012, b.loc.line ? b.loc : loc, fmt::format("division by the constant 0: at run time {} records DIV_BY_ZERO and divides by 1",
+                                                       op == ast::Op::Div ? "'/'" : "MOD"));
     bool aNum = a.untypedInt || a.untypedReal || isNumeric(ka);
     bool bNum = b.untypedInt || b.untypedReal || isNumeric(kb);
     // ---- durations and dates (IEC table of time operations)
@@ -214,7 +213,7 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
                 // TIME * ANY_INT: the count multiplies the time's own unit.
                 Checked bb = settle(b);
                 if (!(isInteger(bb.type->kind) || isBitString(bb.type->kind))) {
-                    error(loc, fmt::format("a duration can be multiplied or divided only by a number, not {}", typeName(bb.type)));
+                    error(diag::E0202, loc, fmt::format("a duration can be multiplied or divided only by a number, not {}", typeName(bb.type)));
                     return bad(loc);
                 }
                 if (op == ast::Op::Mul) r.node = intOp<exec::MulI>(pool(), repOf(a.type), a.node, bb.node);
@@ -240,7 +239,7 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
                 result = (ka == TK::Date || ka == TK::Dt || ka == TK::Tod) ? types().elementary(TK::Time) : types().elementary(TK::LTime);
             }
             if (!result) {
-                error(loc, fmt::format("operator '{}' is not defined for {} and {}", opText(op), typeName(a.type), typeName(b.type)));
+                error(diag::E0202, loc, fmt::format("operator '{}' is not defined for {} and {}", opText(op), typeName(a.type), typeName(b.type)));
                 return bad(loc);
             }
             if (isDateLike(ka) || isDateLike(kb)) {
@@ -277,7 +276,7 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
             r.node->type = result;
             return foldIfConst(r, {&a, &b});
         }
-        error(loc, fmt::format("operator '{}' is not defined for {} and {}", opText(op), typeName(a.type), typeName(b.type)));
+        error(diag::E0202, loc, fmt::format("operator '{}' is not defined for {} and {}", opText(op), typeName(a.type), typeName(b.type)));
         return bad(loc);
     }
     if ((ka == TK::Pointer && (b.untypedInt || isInteger(kb) || (isBitString(kb) && kb != TK::Bool))) && (op == ast::Op::Add || op == ast::Op::Sub)) {
@@ -291,7 +290,7 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
     bool aInt = a.untypedInt || isInteger(ka) || isBitString(ka);
     bool bInt = b.untypedInt || isInteger(kb) || isBitString(kb);
     if (!(aNum || aInt) || !(bNum || bInt)) {
-        error(loc, fmt::format("operator '{}' needs numbers, not {} and {}", opText(op), typeName(a.type), typeName(b.type)));
+        error(diag::E0202, loc, fmt::format("operator '{}' needs numbers, not {} and {}", opText(op), typeName(a.type), typeName(b.type)));
         return bad(loc);
     }
     if (op == ast::Op::Pow) {
@@ -319,7 +318,7 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
     const Type* t = commonType(a, b, loc);
     if (!t) return bad(loc);
     if (op == ast::Op::Mod && !(isInteger(t->kind) || isBitString(t->kind))) {
-        error(loc, fmt::format("MOD needs integers, not {}", typeName(t)));
+        error(diag::E0202, loc, fmt::format("MOD needs integers, not {}", typeName(t)));
         return bad(loc);
     }
     Checked x = coerce(a, t, loc, "operand");
@@ -390,7 +389,7 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
                           : makeIntByRep<exec::DivI>(pool(), rep, x.node, y.node, site(loc));
             break;
         case ast::Op::Mod: r.node = makeIntByRep<exec::ModI>(pool(), rep, x.node, y.node, site(loc)); break;
-        default: error(loc, "unsupported operator"); return bad(loc);
+        default: error(diag::E0202, loc, "unsupported operator"); return bad(loc);
     }
     r.node->type = t;
     if ((op == ast::Op::Div || op == ast::Op::Mod) && !real && y.isConst && y.constInt == 0) {
@@ -426,14 +425,14 @@ Checked Checker::makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& l
             r.node->type = r.type;
             return r;
         }
-        error(loc, fmt::format("cannot compare {} with {}", typeName(a.type), typeName(b.type)));
+        error(diag::E0202, loc, fmt::format("cannot compare {} with {}", typeName(a.type), typeName(b.type)));
         return bad(loc);
     }
     Checked x = isStringType(t->kind) ? a : coerce(a, t, loc, "operand");
     Checked y = isStringType(t->kind) ? b : coerce(b, t, loc, "operand");
     if (!x.ok || !y.ok) return bad(loc);
     if (isStringType(t->kind) && a.type->kind != b.type->kind) {
-        error(loc, fmt::format("cannot compare {} with {}", typeName(a.type), typeName(b.type)));
+        error(diag::E0202, loc, fmt::format("cannot compare {} with {}", typeName(a.type), typeName(b.type)));
         return bad(loc);
     }
     if (isIntRep(t) && y.isConst && !x.isConst) {
@@ -469,7 +468,7 @@ Checked Checker::makeLogic(ast::Op op, Checked a, Checked b, const ast::Loc& loc
     r.hasCall = a.hasCall || b.hasCall;
     if (op == ast::Op::AndThen || op == ast::Op::OrElse) {
         if (a.type->kind != TK::Bool || b.type->kind != TK::Bool) {
-            error(loc, fmt::format("{} needs BOOL operands", opText(op)));
+            error(diag::E0202, loc, fmt::format("{} needs BOOL operands", opText(op)));
             return bad(loc);
         }
         r.type = a.type;
@@ -480,12 +479,12 @@ Checked Checker::makeLogic(ast::Op op, Checked a, Checked b, const ast::Loc& loc
     const Type* t = nullptr;
     if (a.type->kind == TK::Bool && b.type->kind == TK::Bool && !a.untypedInt && !b.untypedInt) t = a.type;
     else if (a.type->kind == TK::Bool || b.type->kind == TK::Bool) {
-        error(loc, fmt::format("{} of {} and {}: both operands must be BOOL or both bit strings", opText(op), typeName(a.type), typeName(b.type)));
+        error(diag::E0202, loc, fmt::format("{} of {} and {}: both operands must be BOOL or both bit strings", opText(op), typeName(a.type), typeName(b.type)));
         return bad(loc);
     } else {
         TK ka = a.untypedInt ? TK::Byte : a.type->kind, kb = b.untypedInt ? TK::Byte : b.type->kind;
         if (!(isBitString(ka) || isInteger(ka)) || !(isBitString(kb) || isInteger(kb))) {
-            error(loc, fmt::format("{} needs BOOL or bit-string operands, not {} and {}", opText(op), typeName(a.type), typeName(b.type)));
+            error(diag::E0202, loc, fmt::format("{} needs BOOL or bit-string operands, not {} and {}", opText(op), typeName(a.type), typeName(b.type)));
             return bad(loc);
         }
         t = commonType(a, b, loc);
@@ -523,8 +522,7 @@ void Checker::warnConstantComparison(ast::Op op, const Checked& a, const Checked
     }
     if (!alwaysTrue && !alwaysFalse) return;
     const Type* unsignedType = isUnsignedInt(a.type->kind) ? a.type : b.type;
-    warning(loc, fmt::format("this comparison is always {}: a {} is never negative", alwaysTrue ? "TRUE" : "FALSE", typeName(unsignedType)))
-        .withCode("W0013");
+    warning(diag::W0013, loc, fmt::format("this comparison is always {}: a {} is never negative", alwaysTrue ? "TRUE" : "FALSE", typeName(unsignedType)));
 }
 
 }  // namespace strun::sema

@@ -99,11 +99,11 @@ exec::Stmt* Checker::assignChecked(Checked target, Checked value, const ast::Loc
     if (!target.ok || !value.ok) return nullptr;
     if (target.propertyInstance) return assignProperty(target, value, loc);
     if (!target.isPlace) {
-        error(loc, "the left side of ':=' is not a variable");
+        error(diag::E0206, loc, "the left side of ':=' is not a variable");
         return nullptr;
     }
     if (target.readOnly) {
-        error(loc, fmt::format("cannot assign: {}", target.readOnlyWhy));
+        error(diag::E0201, loc, fmt::format("cannot assign: {}", target.readOnlyWhy));
         return nullptr;
     }
     const Type* t = target.type;
@@ -112,7 +112,7 @@ exec::Stmt* Checker::assignChecked(Checked target, Checked value, const ast::Loc
     if (t->kind == TK::Enum && value.type && value.type->kind == TK::Enum && value.type != t && value.type->base && t->base) {
         // Another enumeration: CODESYS converts through the integer value with a
         // warning; an error with --strict (decision 0207).
-        if (!lenient(value.loc, fmt::format("implicit conversion from {} to {}: enumerations of different types", typeName(value.type), typeName(t))))
+        if (!lenient(diag::W0001, value.loc, fmt::format("implicit conversion from {} to {}: enumerations of different types", typeName(value.type), typeName(t))))
             return nullptr;
         Checked asInt = value;
         asInt.type = value.type->base;
@@ -123,7 +123,7 @@ exec::Stmt* Checker::assignChecked(Checked target, Checked value, const ast::Loc
         value = asInt;
     }
     if (t->kind == TK::Enum && !(value.type == t) && !(value.untypedInt || isInteger(value.type->kind) || isBitString(value.type->kind))) {
-        error(value.loc, fmt::format("cannot assign {} to {} (an enumeration takes only its own values)", typeName(value.type), typeName(t)));
+        error(diag::E0201, value.loc, fmt::format("cannot assign {} to {} (an enumeration takes only its own values)", typeName(value.type), typeName(t)));
         return nullptr;
     }
     Checked v = coerce(value, t, value.loc, "assignment");
@@ -158,8 +158,7 @@ exec::Block* Checker::checkBlock(const ast::StmtList& list) {
         if (leaving && s->kind != ast::StmtKind::Label && s->kind != ast::StmtKind::Empty) {
             const char* how = leaving->kind == ast::StmtKind::Return ? "RETURN" : leaving->kind == ast::StmtKind::Exit ? "EXIT"
                               : leaving->kind == ast::StmtKind::Continue ? "CONTINUE" : "JMP";
-            warning(s->loc, fmt::format("unreachable code: it follows {}", how))
-                .withCode("W0011")
+            warning(diag::W0011, s->loc, fmt::format("unreachable code: it follows {}", how))
                 .note(leaving->loc, fmt::format("the statements after this {} never run", how));
             leaving = nullptr;  // one warning per unreachable stretch
         }
@@ -169,7 +168,7 @@ exec::Block* Checker::checkBlock(const ast::StmtList& list) {
         if (s->kind == ast::StmtKind::Label) leaving = nullptr;
         if (s->kind == ast::StmtKind::Label) {
             std::string key = upper(s->name);
-            if (definedLabels_.count(key)) error(s->loc, fmt::format("duplicate label '{}'", s->name));
+            if (definedLabels_.count(key)) error(diag::E0504, s->loc, fmt::format("duplicate label '{}'", s->name));
             definedLabels_.insert(key);
             block->labels.push_back({labelId(key), block->stmts.size()});
             continue;
@@ -196,7 +195,7 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
     if (!target.ok) return nullptr;
     if (s.kind == ast::StmtKind::RefAssign) {
         if (target.type->kind != TK::Reference || !target.isPlace) {
-            error(s.target->loc, "REF= needs a REFERENCE TO variable on the left");
+            error(diag::E0206, s.target->loc, "REF= needs a REFERENCE TO variable on the left");
             return nullptr;
         }
         bool isNull = s.expr->kind == ast::ExprKind::Literal && s.expr->lit == ast::LitKind::Integer && s.expr->text == "0";
@@ -207,7 +206,7 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
             Checked src = checkExpr(*s.expr);
             if (!src.ok) return nullptr;
             if (!src.isPlace || !sameType(src.type, target.type->target)) {
-                error(s.expr->loc, fmt::format("REF= needs a variable of type {}, not {}", typeName(target.type->target), typeName(src.type)));
+                error(diag::E0206, s.expr->loc, fmt::format("REF= needs a variable of type {}, not {}", typeName(target.type->target), typeName(src.type)));
                 return nullptr;
             }
             v.ok = true;
@@ -220,7 +219,7 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
     Checked src = checkExpr(*s.expr);
     if (!src.ok) return nullptr;
     if (target.type->kind != TK::Interface || !target.isPlace) {
-        error(s.target->loc, "?= needs an interface variable on the left");
+        error(diag::E0206, s.target->loc, "?= needs an interface variable on the left");
         return nullptr;
     }
     exec::Expr* addr = nullptr;
@@ -228,7 +227,7 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
     else if (src.type->kind == TK::FunctionBlock && src.isPlace) addr = pool().make<exec::AddressOf>(src.node);
     else if (src.type->kind == TK::Pointer && src.type->target->kind == TK::FunctionBlock) addr = src.node;
     if (!addr) {
-        error(s.expr->loc, fmt::format("?= needs an interface, a function-block instance or a pointer to one, not {}", typeName(src.type)));
+        error(diag::E0405, s.expr->loc, fmt::format("?= needs an interface, a function-block instance or a pointer to one, not {}", typeName(src.type)));
         return nullptr;
     }
     exec::Expr* cast = pool().make<exec::TryCastInterface>(addr, target.type->pou);
@@ -247,7 +246,7 @@ exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
     if (!target.ok || !value.ok) return nullptr;
     if (s.kind == ast::StmtKind::SetAssign || s.kind == ast::StmtKind::ResetAssign) {
         if (target.type->kind != TK::Bool || value.type->kind != TK::Bool) {
-            error(s.loc, fmt::format("{} needs BOOL operands", s.kind == ast::StmtKind::SetAssign ? "S=" : "R="));
+            error(diag::E0202, s.loc, fmt::format("{} needs BOOL operands", s.kind == ast::StmtKind::SetAssign ? "S=" : "R="));
             return nullptr;
         }
         exec::Stmt* set = assignChecked(target, constInt(s.kind == ast::StmtKind::SetAssign, types().elementary(TK::Bool), s.loc), s.loc);
@@ -272,11 +271,11 @@ exec::Stmt* Checker::checkFor(const ast::Stmt& s) {
     if (s.by) by = checkExpr(*s.by);
     if (!var.ok || !from.ok || !to.ok || (s.by && !by.ok)) return nullptr;
     if (!(isInteger(var.type->kind) || isBitString(var.type->kind)) || !var.isPlace) {
-        error(s.loc, fmt::format("the FOR control variable '{}' must be an integer variable, not {}", s.name, typeName(var.type)));
+        error(diag::E0502, s.loc, fmt::format("the FOR control variable '{}' must be an integer variable, not {}", s.name, typeName(var.type)));
         return nullptr;
     }
     if (var.readOnly) {
-        error(s.loc, fmt::format("cannot use '{}' as FOR control variable: {}", s.name, var.readOnlyWhy));
+        error(diag::E0502, s.loc, fmt::format("cannot use '{}' as FOR control variable: {}", s.name, var.readOnlyWhy));
         return nullptr;
     }
     from = coerce(from, var.type, s.from->loc, "FOR start");
@@ -312,7 +311,7 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
     sel = settle(sel);
     const Type* st = sel.type;
     if (!(isInteger(st->kind) || isBitString(st->kind) || st->kind == TK::Enum)) {
-        error(s.expr->loc, fmt::format("the CASE selector must be an integer or an enumeration, not {}", typeName(st)));
+        error(diag::E0503, s.expr->loc, fmt::format("the CASE selector must be an integer or an enumeration, not {}", typeName(st)));
         return nullptr;
     }
     auto* n = pool().make<exec::CaseStmt>();
@@ -326,17 +325,17 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
                 Checked c = checkExpr(*e);
                 if (!c.ok) return false;
                 if (!c.isConst) {
-                    error(e->loc, "a CASE label must be a constant");
+                    error(diag::E0503, e->loc, "a CASE label must be a constant");
                     return false;
                 }
                 if (st->kind == TK::Enum) {
                     if (c.type != st) {
-                        error(e->loc, fmt::format("CASE label of type {} does not match the selector type {}", typeName(c.type), typeName(st)));
+                        error(diag::E0503, e->loc, fmt::format("CASE label of type {} does not match the selector type {}", typeName(c.type), typeName(st)));
                         return false;
                     }
                 } else {
                     if (!(c.untypedInt || isInteger(c.type->kind) || isBitString(c.type->kind))) {
-                        error(e->loc, fmt::format("CASE label of type {} does not match the selector type {}", typeName(c.type), typeName(st)));
+                        error(diag::E0503, e->loc, fmt::format("CASE label of type {} does not match the selector type {}", typeName(c.type), typeName(st)));
                         return false;
                     }
                     c = coerce(c, st, e->loc, "CASE label");
@@ -349,13 +348,13 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
             if (!one(lab.lo.get(), lo)) continue;
             hi = lo;
             if (lab.hi && !one(lab.hi.get(), hi)) continue;
-            if (hi < lo) error(lab.lo->loc, fmt::format("empty CASE range {}..{}", lo, hi));
+            if (hi < lo) error(diag::E0503, lab.lo->loc, fmt::format("empty CASE range {}..{}", lo, hi));
             // The labels so far, as disjoint ranges by their start: only the
             // range starting last at or before `hi` can overlap (O(log n) per
             // label; a linear scan made 200 000 arms take 19 s).
             auto after = used.upper_bound(hi);
             if (after != used.begin() && std::prev(after)->second >= lo)
-                error(lab.lo->loc, fmt::format("CASE label {} is already used", lo == hi ? std::to_string(lo) : fmt::format("{}..{}", lo, hi)));
+                error(diag::E0503, lab.lo->loc, fmt::format("CASE label {} is already used", lo == hi ? std::to_string(lo) : fmt::format("{}..{}", lo, hi)));
             else if (lo <= hi)
                 used.emplace(lo, hi);
             n->entries.push_back({lo, hi, index});
@@ -376,7 +375,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
             return checkAssign(s);
         case ast::StmtKind::Call: {
             if (!s.expr || s.expr->kind != ast::ExprKind::Call) {
-                error(s.loc, "this expression is not a statement");
+                error(diag::E0206, s.loc, "this expression is not a statement");
                 return nullptr;
             }
             const ast::Expr& callee = *s.expr->kids[0];
@@ -463,7 +462,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
         case ast::StmtKind::Exit:
         case ast::StmtKind::Continue:
             if (loopDepth_ == 0) {
-                error(s.loc, fmt::format("{} outside a loop", s.kind == ast::StmtKind::Exit ? "EXIT" : "CONTINUE"));
+                error(diag::E0501, s.loc, fmt::format("{} outside a loop", s.kind == ast::StmtKind::Exit ? "EXIT" : "CONTINUE"));
                 return nullptr;
             }
             return pool().make<exec::FlowStmt>(s.kind == ast::StmtKind::Exit ? exec::Flow::Exit : exec::Flow::Continue);
@@ -508,9 +507,9 @@ void Checker::checkBody(PouInfo* pou) {
         for (auto& label : block->labels) label.second += inits.size();
     }
     for (const auto& [loc, name] : pendingJumps_)
-        if (!definedLabels_.count(upper(name))) error(loc, fmt::format("JMP to undefined label '{}'", name));
+        if (!definedLabels_.count(upper(name))) error(diag::E0504, loc, fmt::format("JMP to undefined label '{}'", name));
     if (pou->kind == ast::PouKind::Function && pou->result && !assignedResult_ && !libraryFiles_.count(pou->ast->loc.file))
-        log_.warning(pou->ast->loc, fmt::format("function '{}' never assigns its result", pou->name));
+        log_.warning(diag::W0004, pou->ast->loc, fmt::format("function '{}' never assigns its result", pou->name));
     if (!libraryFiles_.count(pou->ast->loc.file)) warnReadBeforeWrite(*pou, log_);
     uint32_t size = alignUp(frameTop_, 16);
     pou->code->frameSize = size;

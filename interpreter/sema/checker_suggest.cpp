@@ -98,7 +98,7 @@ bool Checker::isUnresolved(const std::string& upperName) const {
 namespace strun::sema {
 
 void Checker::enumValueError(const ast::Loc& loc, const std::string& written, const Type* enumType) {
-    Diagnostic& d = error(loc, fmt::format("'{}' is not a value of enumeration '{}'", written, enumType->name));
+    Diagnostic& d = error(diag::E0104, loc, fmt::format("'{}' is not a value of enumeration '{}'", written, enumType->name));
     std::vector<std::string> values;
     std::string list;
     for (const auto& en : enumType->enumerators) {

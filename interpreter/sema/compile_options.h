@@ -3,6 +3,7 @@
 // which passes it to the checker.
 #pragma once
 
+#include <map>
 #include <string>
 
 namespace strun::sema {
@@ -19,6 +20,10 @@ struct CompileOptions {
     // names) it runs in the project's first cyclic or freewheeling task, or
     // else in the target's task for programs without a task (decision 0141).
     std::string testProgram;
+    // `strun test`: TcUnit's library parameters (GVL_Param_TcUnit, name as
+    // TcUnit spells it -> ST literal), from --tcunit-param and a .plcproj;
+    // they replace the defaults in the embedded stdlib/st/tcunit.st.
+    std::map<std::string, std::string> tcunitParameters;
 };
 
 }  // namespace strun::sema

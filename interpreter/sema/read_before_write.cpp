@@ -46,8 +46,7 @@ private:
                 const VarSym* v = it->second;
                 open.erase(it);  // one warning per variable: its first read
                 if (!warned_.insert(v).second) return;
-                log_.warning(e->loc, fmt::format("variable '{}' is read before it is ever written", v->name))
-                    .withCode("W0017")
+                log_.warning(diag::W0017, e->loc, fmt::format("variable '{}' is read before it is ever written", v->name))
                     .note(v->loc, fmt::format("'{}' is declared here without an initial value: it holds 0 on every call",
                                               v->name))
                     .withHelp(fmt::format("assign '{}' before this line, or give it an initial value ('{} : ... := ...;')",

@@ -10,6 +10,7 @@
 
 #include "interpreter/ast/ast.h"
 #include "interpreter/source/diagnostic.h"
+#include "interpreter/source/diagnostic_code.h"
 #include "interpreter/source/diagnostic_codes.h"
 
 namespace strun {
@@ -72,6 +73,18 @@ public:
     // catalogue's classification of the message is not the right one).
     Diagnostic& error(const ast::Loc& loc, std::string message) { return add(Severity::Error, loc, std::move(message)); }
     Diagnostic& warning(const ast::Loc& loc, std::string message) { return add(Severity::Warning, loc, std::move(message)); }
+    // With the code given where the diagnostic is raised (decision 0298): the
+    // wording no longer decides it. The forms above classify the message.
+    Diagnostic& error(diag::Code code, const ast::Loc& loc, std::string message) {
+        Diagnostic& d = add(Severity::Error, loc, std::move(message));
+        d.code = diag::text(code);
+        return d;
+    }
+    Diagnostic& warning(diag::Code code, const ast::Loc& loc, std::string message) {
+        Diagnostic& d = add(Severity::Warning, loc, std::move(message));
+        d.code = diag::text(code);
+        return d;
+    }
     bool hasErrors() const { return errors_ > 0; }
     size_t errorCount() const { return errors_; }
     const std::vector<Diagnostic>& messages() const { return messages_; }

@@ -40,7 +40,7 @@ bool bindArgs(Checker& ck, CallArgs& call, std::initializer_list<Param> params, 
     for (size_t k = 0; k < call.args.size(); ++k) {
         const ast::Arg& a = call.call->args[k];
         if (a.output) {
-            ck.error(a.loc, fmt::format("'{}' has no output '{}'", written(call), a.name));
+            ck.error(diag::E0302, a.loc, fmt::format("'{}' has no output '{}'", written(call), a.name));
             return false;
         }
         size_t idx = n;
@@ -49,19 +49,19 @@ bool bindArgs(Checker& ck, CallArgs& call, std::initializer_list<Param> params, 
             // `AssertEquals(Expected := e, Actual := a, 'msg')` (decision 0204).
             idx = k;
             if (idx >= n) {
-                ck.error(call.loc, fmt::format("too many arguments for '{}' (it takes {})", written(call), n));
+                ck.error(diag::E0301, call.loc, fmt::format("too many arguments for '{}' (it takes {})", written(call), n));
                 return false;
             }
         } else {
             for (size_t j = 0; j < n; ++j)
                 if (call.names[k] == sema::upper(p[j].name)) idx = j;
             if (idx == n) {
-                ck.error(a.loc, fmt::format("'{}' has no parameter '{}'", written(call), a.name));
+                ck.error(diag::E0302, a.loc, fmt::format("'{}' has no parameter '{}'", written(call), a.name));
                 return false;
             }
         }
         if (given[idx]) {
-            ck.error(a.loc, fmt::format("parameter '{}' of '{}' given twice", p[idx].name, written(call)));
+            ck.error(diag::E0302, a.loc, fmt::format("parameter '{}' of '{}' given twice", p[idx].name, written(call)));
             return false;
         }
         given[idx] = true;
@@ -69,7 +69,7 @@ bool bindArgs(Checker& ck, CallArgs& call, std::initializer_list<Param> params, 
     }
     for (size_t j = 0; j < n; ++j)
         if (p[j].required && !given[j]) {
-            ck.error(call.loc, fmt::format("'{}' needs the input '{}'", written(call), p[j].name));
+            ck.error(diag::E0301, call.loc, fmt::format("'{}' needs the input '{}'", written(call), p[j].name));
             return false;
         }
     return true;
@@ -90,7 +90,7 @@ Checked result(Checker& ck, Expr* node, TK kind, const CallArgs& call) {
 bool stringInput(Checker& ck, const Checked& a, const CallArgs& call, const char* what, Expr*& node, const Type*& type) {
     if (!a.ok) return true;  // not given: ''
     if (!a.type || !sema::isStringType(a.type->kind)) {
-        ck.error(a.loc, fmt::format("{}: {} must be a STRING, not {}", written(call), what, sema::typeName(a.type)));
+        ck.error(diag::E0201, a.loc, fmt::format("{}: {} must be a STRING, not {}", written(call), what, sema::typeName(a.type)));
         return false;
     }
     node = a.node;
@@ -134,7 +134,7 @@ bool assertCommon(Checker& ck, TestRegistry& reg, CallArgs& call, const Checked&
 bool typedOperand(Checker& ck, const Checked& a, TK kind, const CallArgs& call, Operand& out) {
     if (kind == TK::String || kind == TK::WString) {
         if (!a.type || a.type->kind != kind) {
-            ck.error(a.loc, fmt::format("{}: expected a {}, not {}", written(call), kind == TK::String ? "STRING" : "WSTRING", sema::typeName(a.type)));
+            ck.error(diag::E0201, a.loc, fmt::format("{}: expected a {}, not {}", written(call), kind == TK::String ? "STRING" : "WSTRING", sema::typeName(a.type)));
             return false;
         }
         out.e = a.node;
@@ -153,26 +153,26 @@ bool typedOperand(Checker& ck, const Checked& a, TK kind, const CallArgs& call, 
 bool arrayOperand(Checker& ck, const Checked& a, TK kind, size_t dims, const CallArgs& call, ArrayOperand& out, const Type*& elem) {
     const Type* t = a.type;
     if (!t || t->kind != TK::Array || !t->elem || t->elem->kind != kind) {
-        ck.error(a.loc, fmt::format("{}: expected an ARRAY of {}, not {}", written(call), sema::typeName(ck.types().elementary(kind)), sema::typeName(t)));
+        ck.error(diag::E0201, a.loc, fmt::format("{}: expected an ARRAY of {}, not {}", written(call), sema::typeName(ck.types().elementary(kind)), sema::typeName(t)));
         return false;
     }
     if (kind == TK::String || kind == TK::WString) {
         if (elem && elem->maxLen != t->elem->maxLen) {
-            ck.error(a.loc, fmt::format("{}: the arrays' string lengths differ", written(call)));
+            ck.error(diag::E0407, a.loc, fmt::format("{}: the arrays' string lengths differ", written(call)));
             return false;
         }
     }
     elem = t->elem;
     if (t->flexible) {
         if (!a.flexDesc) {
-            ck.error(a.loc, fmt::format("{}: this ARRAY[*] cannot be compared here", written(call)));
+            ck.error(diag::E0407, a.loc, fmt::format("{}: this ARRAY[*] cannot be compared here", written(call)));
             return false;
         }
         out.desc = a.flexDesc;
         return true;
     }
     if (t->dims.size() != dims) {
-        ck.error(a.loc, fmt::format("{}: expected a {}-dimensional array, not {}", written(call), dims, sema::typeName(t)));
+        ck.error(diag::E0201, a.loc, fmt::format("{}: expected a {}-dimensional array, not {}", written(call), dims, sema::typeName(t)));
         return false;
     }
     out.place = a.node;
@@ -243,7 +243,7 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
                 Checked d = ck.settle(a[0]);
                 if (!d.ok) return ck.bad(call.loc);
                 if (!d.type || (d.type->kind != TK::Time && d.type->kind != TK::LTime)) {
-                    ck.error(d.loc, fmt::format("{}: expected a TIME, not {}", written(call), sema::typeName(d.type)));
+                    ck.error(diag::E0201, d.loc, fmt::format("{}: expected a TIME, not {}", written(call), sema::typeName(d.type)));
                     return ck.bad(call.loc);
                 }
                 n->pause = d.node;
@@ -260,7 +260,7 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
             Checked d = ck.settle(a[0]);
             if (!d.ok) return ck.bad(call.loc);
             if (!d.type || (d.type->kind != TK::Time && d.type->kind != TK::LTime)) {
-                ck.error(d.loc, fmt::format("{}: expected a TIME, not {}", written(call), sema::typeName(d.type)));
+                ck.error(diag::E0201, d.loc, fmt::format("{}: expected a TIME, not {}", written(call), sema::typeName(d.type)));
                 return ck.bad(call.loc);
             }
             const int64_t scale = d.type->kind == TK::Time ? 1000000 : 1;
@@ -295,7 +295,7 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
             bool ok = named ? bindArgs(ck, call, {{"Suite", true}, {"TestName", true}}, a) : bindArgs(ck, call, {{"Suite", true}}, a);
             if (!ok) return ck.bad(call.loc);
             if (!a[0].type || a[0].type->kind != TK::Pointer) {
-                ck.error(a[0].loc, fmt::format("{}: expected THIS", written(call)));
+                ck.error(diag::E0405, a[0].loc, fmt::format("{}: expected THIS", written(call)));
                 return ck.bad(call.loc);
             }
             auto* n = ck.pool().make<SuiteQueryNode>();
@@ -307,10 +307,16 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
             return result(ck, n, boolean ? TK::Bool : TK::UInt, call);
         });
     }
-    ck.addBuiltin("TCUNIT_ADSLOGSTR", [](Checker& ck, CallArgs& call) -> Checked {
+    ck.addBuiltin("TCUNIT_ADSLOGSTR", [&reg](Checker& ck, CallArgs& call) -> Checked {
         std::vector<Checked> a;
         if (!bindArgs(ck, call, {{"msgCtrlMask", false}, {"msgFmtStr", true}, {"strArg", false}}, a)) return ck.bad(call.loc);
         auto* n = ck.pool().make<AdsLogNode>();
+        n->reg = &reg;
+        if (a[0].ok && a[0].node) {
+            Checked mask = ck.coerce(a[0], ck.types().elementary(TK::DWord), a[0].loc, "msgCtrlMask");
+            if (!mask.ok) return ck.bad(call.loc);
+            n->mask = mask.node;
+        }
         if (!stringInput(ck, a[1], call, "msgFmtStr", n->format, n->formatType) ||
             !stringInput(ck, a[2], call, "strArg", n->arg, n->argType))
             return ck.bad(call.loc);
@@ -351,7 +357,7 @@ void registerAssertions(Checker& ck, TestRegistry& reg) {
         for (Checked* x : {&e, &v}) {
             TK k = x->type ? x->type->kind : TK::Void;
             if (k == TK::Void) {
-                ck.error(x->loc, fmt::format("{}: this argument has no value", written(call)));
+                ck.error(diag::E0301, x->loc, fmt::format("{}: this argument has no value", written(call)));
                 return ck.bad(call.loc);
             }
         }

@@ -65,7 +65,8 @@ struct RunSuitesNode final : Expr {
     Expr* pause = nullptr;  // RUN_IN_SEQUENCE(TimeBetweenTestSuitesExecution); null: none
     int64_t scale = 1;      // to nanoseconds
     int64_t i(Ctx& c) override {
-        reg->runSuites(c, inSequence, pause ? pause->i(c) * scale : 0);
+        // RUN_IN_SEQUENCE() pauses GVL_Param_TcUnit.TimeBetweenTestSuitesExecution.
+        reg->runSuites(c, inSequence, pause ? pause->i(c) * scale : reg->timeBetweenSuites);
         return 0;
     }
 };
@@ -109,6 +110,8 @@ struct SuiteQueryNode final : Expr {
 
 // TCUNIT_ADSLOGSTR(msgCtrlMask, msgFmtStr, strArg): the message, %s replaced by strArg, on stderr.
 struct AdsLogNode final : Expr {
+    TestRegistry* reg = nullptr;  // GVL_Param_TcUnit.LogExtendedResults
+    Expr* mask = nullptr;         // msgCtrlMask; null: 0
     Expr* format = nullptr;
     const sema::Type* formatType = nullptr;
     Expr* arg = nullptr;
@@ -124,7 +127,13 @@ struct AssertBase : Expr {
     Expr* message = nullptr;  // null: ''
     const sema::Type* messageType = nullptr;
     void fail(Ctx& c, std::string expected, std::string actual, const char* messageSuffix = "");
+    // Counts this evaluation among the suite's assertion records (GVL_Param_TcUnit.
+    // MaxNumberOfAssertsForEachTestSuite); `values` hashes what it compared.
+    void note(Ctx& c, uint64_t values);
 };
+
+// FNV-1a over `n` bytes, continuing `h`: what an assertion compared, for note().
+uint64_t hashBytes(uint64_t h, const void* p, size_t n);
 
 // AssertTrue / AssertFalse.
 struct AssertConditionNode final : AssertBase {

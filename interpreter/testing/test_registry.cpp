@@ -263,6 +263,46 @@ std::vector<std::string> TestRegistry::declaredTests(const Suite& s) const {
     return names;
 }
 
+void TestRegistry::noteAssertion(uint64_t hash) {
+    Suite& s = suites[static_cast<size_t>(currentSuite)];
+    hash = hash * 1099511628211ULL ^ static_cast<uint64_t>(currentTest);
+    if (s.assertCycle != s.cycles) {
+        s.assertCycle = s.cycles;
+        s.assertsThisCycle.clear();
+    }
+    uint32_t seen = ++s.assertsThisCycle[hash];
+    uint32_t& stored = s.assertRecords[hash];
+    if (seen <= stored) return;  // the same assertion as in an earlier cycle
+    if (s.assertCount >= maxAsserts) {
+        if (!s.assertOverflowReported) {
+            s.assertOverflowReported = true;
+            std::cerr << s.path << ". Max number of assertions exceeded. Check parameter MaxNumberOfAssertsForEachTestSuite.\n";
+        }
+        return;
+    }
+    ++stored;
+    ++s.assertCount;
+}
+
+void TestRegistry::applyTestLimit() {
+    for (auto& s : suites) {
+        if (maxTests < 0 || s.tests.size() <= static_cast<size_t>(maxTests)) continue;
+        for (size_t k = static_cast<size_t>(maxTests); k < s.tests.size(); ++k) {
+            TestCase& t = s.tests[k];
+            if (t.skipped) continue;
+            // TcUnit has no room for its results: it counts it as failed.
+            Failure f;
+            f.fault = fmt::format("not recorded: the suite has more tests than GVL_Param_TcUnit.MaxNumberOfTestsForEachTestSuite ({})",
+                                  maxTests);
+            t.failures.assign(1, std::move(f));
+            t.finished = true;
+        }
+        std::cerr << "Tests failed because the number of tests (" << s.tests.size() << ") in the test suite '" << s.path
+                  << "' are more than is defined in parameter 'GVL_Param_TcUnit.MaxNumberOfTestsForEachTestSuite' (" << maxTests
+                  << "). Please increase this parameter.\n";
+    }
+}
+
 void TestRegistry::addNotRun() {
     for (auto& s : suites) {
         size_t insertAt = 0;

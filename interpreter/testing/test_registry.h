@@ -9,6 +9,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "runtime/machine.h"
@@ -47,6 +48,13 @@ struct Suite {
     std::vector<TestCase> tests;
     int orderedCount = 0;
     uint64_t cycles = 0;      // how many times RUN() called it
+    // TcUnit's assertion records (MaxNumberOfAssertsForEachTestSuite): each
+    // distinct assertion (test, place, message, values) once, the same one
+    // again only when it comes more often in one cycle than in any before.
+    std::unordered_map<uint64_t, uint32_t> assertRecords, assertsThisCycle;
+    uint64_t assertCycle = 0;
+    int64_t assertCount = 0;
+    bool assertOverflowReported = false;
     bool finished() const;    // called at least once and every test finished or skipped
 };
 
@@ -96,6 +104,12 @@ public:
     std::string filter;               // --filter: glob over "Suite.Test"; empty = all
     rt::PlcTime watchdog = 0;         // budget of one suite call (the task's watchdog); 0 = none
     rt::PlcTime testTimeout = 0;      // TIMEOUT_FOR_EACH_TEST; 0 = none
+    // GVL_Param_TcUnit as compiled (readTcUnitLimits; TcUnit's defaults).
+    int64_t maxTests = 100;           // MaxNumberOfTestsForEachTestSuite
+    int64_t maxAsserts = 1000;        // MaxNumberOfAssertsForEachTestSuite
+    int64_t maxSuites = 1000;         // MaxNumberOfTestSuites (readable only)
+    bool logExtendedResults = true;   // FALSE: TCUNIT_ADSLOGSTR prints only ADSLOG_MSGTYPE_ERROR
+    rt::PlcTime timeBetweenSuites = 0;  // TimeBetweenTestSuitesExecution: RUN_IN_SEQUENCE()'s pause
 
     // ---- the API (called by the nodes)
     // TEST / TEST_ORDERED: makes `name` the current test; for TEST_ORDERED
@@ -117,6 +131,10 @@ public:
     // Whether an assertion now counts (a test is current, running, not skipped).
     bool assertionsActive() const { return currentSuite >= 0 && currentTest >= 0 && !ignoreCurrent; }
     void recordFailure(Failure f);  // into the current test (duplicates of an earlier one are dropped)
+    // Every evaluated assertion of the current test, by a hash of what TcUnit
+    // compares (place, message, expected, actual): past the suite's
+    // MaxNumberOfAssertsForEachTestSuite records TcUnit logs its error once.
+    void noteAssertion(uint64_t hash);
     // RUN(): calls the suites (all, or in sequence) on the task's context.
     // RUN_IN_SEQUENCE waits `pause` of PLC time between one suite finishing
     // and the next one starting (TcUnit's TimeBetweenTestSuitesExecution).
@@ -140,6 +158,9 @@ public:
     // before it looped, the run stopped) is added and fails with `not run`,
     // so that the report lists every test --list shows.
     void addNotRun();
+    // After the run: a suite with more tests than MaxNumberOfTestsForEachTestSuite
+    // fails the tests past the limit and logs TcUnit's error (its text).
+    void applyTestLimit();
 
     int currentSuite = -1;
     int currentTest = -1;

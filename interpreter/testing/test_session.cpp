@@ -3,6 +3,7 @@
 #include "interpreter/project/compile.h"
 #include "interpreter/project/task_runner.h"
 #include "interpreter/testing/suite_finder.h"
+#include "interpreter/testing/tcunit_parameters.h"
 #include "interpreter/testing/test_registry.h"
 
 namespace strun::testing {
@@ -33,7 +34,10 @@ std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const st
     const CompileLog before = log;
     auto model = project::compileProject(sources, userFiles, log, options);
     if (!model || model->tests->runCalls > 0) {
-        if (model) collectSuites(*model, *model->tests);
+        if (model) {
+            collectSuites(*model, *model->tests);
+            readTcUnitLimits(*model, *model->tests);
+        }
         return model;
     }
     log = before;
@@ -42,7 +46,10 @@ std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const st
     sema::CompileOptions withProgram = options;
     withProgram.testProgram = kSyntheticProgramName;
     model = project::compileProject(sources, files, log, withProgram);
-    if (model) collectSuites(*model, *model->tests);
+    if (model) {
+        collectSuites(*model, *model->tests);
+        readTcUnitLimits(*model, *model->tests);
+    }
     return model;
 }
 
@@ -92,6 +99,7 @@ TestRunResult runTests(sema::ProgramModel& model, rt::RunOptions options, const 
         reg.failUnfinished(reg.aborted ? reg.abortReason : "timeout");
     }
     reg.addNotRun();
+    reg.applyTestLimit();
     return result;
 }
 

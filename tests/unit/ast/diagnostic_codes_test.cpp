@@ -68,3 +68,30 @@ TEST_CASE("closest name: typos, transpositions and prefixes; nothing far off", "
     CHECK(closestName("--virt", {"--virtual", "--cycles"}) == "--virtual");
     CHECK(closestName("SPEED", {"TEMPERATURE", "PRESSURE"}).empty());
 }
+
+TEST_CASE("diagnostic codes: every typed code is in the catalogue, with its kind", "[diagnostics]") {
+    // The codes call sites give (decision 0298) and the catalogue's pages are one list.
+    std::set<std::string> typed;
+    for (diag::Code code : diag::kAllCodes) {
+        const std::string text(diag::text(code));
+        CHECK(typed.insert(text).second);
+        const CodeInfo* info = find(text);
+        REQUIRE(info != nullptr);
+        CHECK(info->kind == (diag::isWarning(code) ? Kind::Warning : Kind::Error));
+    }
+    for (const CodeInfo& info : catalogue())
+        if (info.kind != Kind::Runtime && info.code != "E0999" && info.code != "W0999") CHECK(typed.count(std::string(info.code)) == 1);
+}
+
+TEST_CASE("diagnostic codes: a code given at the call site wins over the wording", "[diagnostics]") {
+    CompileLog log;
+    // Worded like an undeclared identifier (E0101) and a W0001 warning, coded otherwise:
+    // rewording can never move a message to another code.
+    log.error(diag::E0406, ast::Loc{0, 1, 1}, "undeclared identifier 'x'");
+    log.warning(diag::W0011, ast::Loc{0, 2, 1}, "implicit conversion from INT to SINT");
+    log.error(ast::Loc{0, 3, 1}, "undeclared identifier 'y'");  // not converted yet: by its wording
+    REQUIRE(log.messages().size() == 3);
+    CHECK(log.messages()[0].code == "E0406");
+    CHECK(log.messages()[1].code == "W0011");
+    CHECK(log.messages()[2].code == "E0101");
+}
