@@ -21,6 +21,12 @@ namespace strun::source::plcopen {
 
 // One line of generated ST: written by strun for an element (`verbatim`
 // false), or ST copied from the XML (an inline SFC condition or action body).
+// Put before the declaration of a variable the translation needs for itself
+// (temporaries, edge detectors, transition flags, action control): the
+// checker marks it hidden, so --dump, --vcd, --watch and the live API leave
+// it out (docs/graphical.md). Steps are declared without it.
+inline constexpr const char* kHiddenPragma = "{attribute 'strun_hidden'} ";
+
 struct StLine {
     std::string text;
     int line = 1, col = 1;

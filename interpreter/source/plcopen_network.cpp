@@ -398,7 +398,7 @@ struct Network {
 
     void declare(int i, const std::string& name, const std::string& type) {
         auto [line, col] = conv.where(els[i].node);
-        out.declarations.push_back({"    " + name + " : " + type + ";", line, col, els[i].label, false});
+        out.declarations.push_back({"    " + std::string(kHiddenPragma) + name + " : " + type + ";", line, col, els[i].label, false});
     }
 
     // Writes element i's statement (and first the statements it reads) unless

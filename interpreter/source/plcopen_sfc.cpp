@@ -65,7 +65,7 @@ struct Chart {
     }
     void declare(const pugi::xml_node& n, const std::string& text, const std::string& element) {
         auto [l, c] = conv.where(n);
-        out.declarations.push_back({"    " + text, l, c, element, false});
+        out.declarations.push_back({"    " + std::string(kHiddenPragma) + text, l, c, element, false});
     }
 
     static std::vector<int> inputRefs(const pugi::xml_node& n) {

@@ -19,8 +19,9 @@ struct Writer {
     const std::string& stepName(int s) const { return c.steps[static_cast<size_t>(s)].name; }
 
     void line(SfcChart::Where at, const std::string& text, const std::string& element) { out.body.push_back({text, at.line, at.col, element, false}); }
-    void declare(SfcChart::Where at, const std::string& text, const std::string& element) {
-        out.declarations.push_back({"    " + text, at.line, at.col, element, false});
+    // A variable of the translation's own (hidden), or a step (visible).
+    void declare(SfcChart::Where at, const std::string& text, const std::string& element, bool hidden = true) {
+        out.declarations.push_back({"    " + std::string(hidden ? plcopen::kHiddenPragma : "") + text, at.line, at.col, element, false});
     }
 
     void action(int index) {
@@ -131,7 +132,7 @@ struct Writer {
     void write() {
         for (size_t s = 0; s < c.steps.size(); ++s)
             declare(c.steps[s].at, c.steps[s].name + " : __SFC_STEP" + (c.steps[s].initial ? " := (X := TRUE, _X := TRUE)" : "") + ";",
-                    stepLabel(static_cast<int>(s)));
+                    stepLabel(static_cast<int>(s)), false);
         // 1. Step times.
         for (size_t s = 0; s < c.steps.size(); ++s) {
             const std::string& n = c.steps[s].name;

@@ -227,7 +227,7 @@ struct Reader {
                     if (k > cb) t.before.push_back({src.substr(at(cb).begin, at(k - 1).end - at(cb).begin), at(cb).line, at(cb).col, t.label, true});
                     t.expr = name;
                     if (!declaredNames.count(upper(name))) {
-                        tr.declarations.push_back({"    " + name + " : BOOL;", kw.line, kw.col, t.label, false});
+                        tr.declarations.push_back({"    " + std::string(plcopen::kHiddenPragma) + name + " : BOOL;", kw.line, kw.col, t.label, false});
                         declaredNames.insert(upper(name));
                     }
                 } else {
