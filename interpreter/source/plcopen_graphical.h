@@ -74,6 +74,13 @@ struct ChartCondition {
 void translateChartConditions(XmlConversion& conv, const pugi::xml_node& sfc, PouContext& ctx, const std::vector<ChartCondition>& conditions,
                               Translation& out);
 
+// An action block in an LD/FBD body: each of its actions runs under the
+// action control of IEC 61131-3 with `activity` (the block's power flow or
+// input) in the place of a step's X. Hidden variables are named from
+// `prefix`; messages start with `where`.
+void translateActionBlock(XmlConversion& conv, const pugi::xml_node& block, const std::string& activity, const std::string& prefix,
+                          const std::string& where, PouContext& ctx, Translation& out);
+
 // An SFC chart (<SFC> element) as ST statements.
 void translateChart(XmlConversion& conv, const pugi::xml_node& lang, PouContext& ctx, Translation& out);
 

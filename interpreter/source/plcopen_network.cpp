@@ -27,7 +27,7 @@ std::string upper(std::string s) {
     return s;
 }
 
-enum class Kind { InVar, OutVar, InOutVar, Block, Connector, Continuation, Label, Jump, Return, LeftRail, RightRail, Contact, Coil };
+enum class Kind { InVar, OutVar, InOutVar, Block, Connector, Continuation, Label, Jump, Return, LeftRail, RightRail, Contact, Coil, ActionBlock };
 
 struct Conn {
     int ref = 0;
@@ -139,6 +139,7 @@ struct Network {
     int currentRoot = -1;
     bool failed = false;
     bool inChart = false;  // the LD/FBD elements of an SFC body: its SFC elements are skipped
+    std::map<std::string, int> actionBlockOf;  // action (upper) -> the action block that uses it
 
     Network(XmlConversion& c, PouContext& x, Translation& o, bool isLd) : conv(c), ctx(x), out(o), ld(isLd) {
         prefix = "_g" + std::to_string(++ctx.bodies) + "_";
@@ -228,6 +229,22 @@ struct Network {
                 if (e.text.empty()) {
                     conv.error(n, where() + k + " " + std::to_string(e.id) + " names no variable");
                     failed = true;
+                }
+            } else if (k == "actionBlock" && !inChart) {
+                // Actions activated by the power flow (LD) or a BOOL input (FBD) instead of a step.
+                e.kind = Kind::ActionBlock;
+                e.ins.push_back({"", false, "", connectionsOf(child(n, "connectionPointIn"))});
+                e.label = "action block " + std::to_string(e.id);
+                // Each action block has its own action control: one action, one block (decision 0291).
+                for (pugi::xml_node a : children(n, "action")) {
+                    const std::string name = child(a, "reference").attribute("name").value();
+                    if (name.empty()) continue;
+                    auto [it, added] = actionBlockOf.emplace(upper(name), e.id);
+                    if (!added && it->second != e.id) {
+                        conv.error(a, where() + "action '" + name + "' is used by action blocks " + std::to_string(it->second) + " and " +
+                                          std::to_string(e.id) + "; in LD/FBD an action may be used by one action block only");
+                        failed = true;
+                    }
                 }
             } else if (k == "comment" || k == "error" || k == "documentation" || k == "addData") {
                 continue;
@@ -463,6 +480,9 @@ struct Network {
                 }
                 return powerFlow(i);
             case Kind::Block: return blockOutput(i, c.param);
+            case Kind::ActionBlock:
+                require(i);
+                return hidden(i, "");
             default: return "FALSE";
         }
     }
@@ -774,6 +794,19 @@ struct Network {
             }
             case Kind::Label: return e.text + ": ;";
             case Kind::Block: return blockStatement(i);
+            case Kind::ActionBlock: {
+                // The activity in a hidden BOOL, then the actions' control, calls and final scans.
+                declare(i, hidden(i, ""), "BOOL");
+                write(i, hidden(i, "") + " := " + powerIn(e) + ";");
+                Translation actions;
+                translateActionBlock(conv, e.node, hidden(i, ""), hidden(i, "a"), where(), ctx, actions);
+                for (StLine& l : actions.body) {
+                    if (!l.verbatim) l.element = e.label;  // the control and calls name the block
+                    lines.push_back(std::move(l));
+                }
+                out.declarations.insert(out.declarations.end(), actions.declarations.begin(), actions.declarations.end());
+                return "";
+            }
             default: return "";
         }
     }
@@ -854,7 +887,7 @@ struct Network {
         for (size_t i = 0; i < els.size(); ++i) {
             Kind k = els[i].kind;
             if (k == Kind::OutVar || k == Kind::InOutVar || k == Kind::Coil || k == Kind::Block || k == Kind::Jump || k == Kind::Return ||
-                k == Kind::Label)
+                k == Kind::Label || k == Kind::ActionBlock)
                 roots.push_back(static_cast<int>(i));
         }
         explicitOrder = !roots.empty() && std::all_of(roots.begin(), roots.end(), [&](int i) { return els[i].order > 0; });
