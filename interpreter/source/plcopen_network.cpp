@@ -258,6 +258,11 @@ struct Network {
                 failed = true;
                 continue;
             }
+            if (!n.attribute("localId")) {
+                conv.error(n, where() + "the " + k + " element has no localId (PLCopen TC6 requires one)");
+                failed = true;
+                continue;
+            }
             if (byId.count(e.id)) {
                 conv.error(n, where() + "two elements have localId " + std::to_string(e.id));
                 failed = true;

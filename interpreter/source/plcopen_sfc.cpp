@@ -184,6 +184,11 @@ struct Chart {
             if (n.type() != pugi::node_element) continue;
             const std::string k = localName(n);
             if (k == "comment" || k == "documentation" || k == "addData") continue;
+            if (!n.attribute("localId")) {
+                fail(n, "the " + k + " element" + (n.attribute("name") ? " '" + std::string(n.attribute("name").value()) + "'" : std::string()) +
+                            " has no localId (PLCopen TC6 requires one)");
+                continue;
+            }
             const Id id = idOf(n);
             if (byId.count(id)) {
                 fail(n, "two elements have localId " + std::string(n.attribute("localId").value()));
