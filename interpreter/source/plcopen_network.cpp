@@ -857,8 +857,10 @@ struct Network {
             }
             declare(i, hidden(i, "OUT"), type);
             call = hidden(i, "OUT") + " := " + callText(i) + ";";
+        } else if (totalReaders(i) == 0 && e.stdFunction) {
+            return "";  // a standard function (no side effect) whose output is connected to nothing: a dangling drawing
         } else if (totalReaders(i) == 0) {
-            call = callText(i) + ";";  // a function whose result nobody reads: called for its effect
+            call = callText(i) + ";";  // a user function whose result nobody reads: called for its effect
         } else {
             return "";  // written inline where it is read
         }
