@@ -647,7 +647,7 @@ json DapServer::scopes(const json& args, bool& ok, std::string& error) {
             for (const auto& decl : block.vars)
                 for (const auto& name : decl.names) {
                     auto it = p->vars.find(sema::upper(name));
-                    if (it == p->vars.end()) continue;
+                    if (it == p->vars.end() || it->second->hidden) continue;  // a graphical translation's own (decision 0290)
                     Shown s = shownOf(it->second);
                     switch (block.section) {
                         case ast::VarSection::Input: inputs.items.push_back(s); break;

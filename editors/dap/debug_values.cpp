@@ -105,6 +105,7 @@ std::vector<Member> membersOf(const sema::Type* t, uint8_t* p, size_t limit) {
     for (const sema::Type* s : chain)
         for (const sema::Field& f : s->fields) {
             if (out.size() >= limit) return out;
+            if (f.hidden) continue;  // a graphical translation's own (decision 0290)
             out.push_back({f.name, "." + f.name, f.type, p + f.offset});
         }
     return out;

@@ -70,7 +70,7 @@ void append(json& obj, const std::string& key, json value) {
 void membersJson(json& obj, const Type* t, const uint8_t* p) {
     if (t->parent) membersJson(obj, t->parent, p);
     for (const auto& f : t->fields) {
-        if (omitted(f.type)) continue;
+        if (omitted(f.type) || f.hidden) continue;
         append(obj, f.name, valueToJson(f.type, p + f.offset));
     }
 }
@@ -133,7 +133,7 @@ json valueToJson(const Type* t, const uint8_t* p) {
 json globalsJson(const sema::ProgramModel& model) {
     json obj = json::object();
     for (const sema::VarSym* g : model.globals) {
-        if (omitted(g->type)) continue;
+        if (omitted(g->type) || g->hidden) continue;
         append(obj, g->globalKey(), g->bit >= 0 ? json(((*g->abs >> g->bit) & 1) != 0) : valueToJson(g->type, g->abs));
     }
     return obj;
@@ -144,7 +144,7 @@ json programsJson(const sema::ProgramModel& model) {
     for (const auto& inst : model.programs) {
         json vars = json::object();
         for (const auto& v : inst.pou->ownedVars) {
-            if (v->section == ast::VarSection::Temp || v->byRef || omitted(v->type)) continue;
+            if (v->section == ast::VarSection::Temp || v->byRef || v->hidden || omitted(v->type)) continue;
             const uint8_t* p = v->storage == sema::Storage::Self ? inst.memory + v->offset : v->abs;
             if (!p) continue;
             append(vars, v->name, v->bit >= 0 ? json(((*p >> v->bit) & 1) != 0) : valueToJson(v->type, p));

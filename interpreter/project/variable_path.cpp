@@ -211,6 +211,7 @@ bool expand(const VariableRef& ref, std::vector<std::string>& scopes, const std:
         for (const Type* c = t; c; c = c->parent) chain.insert(chain.begin(), c);
         for (const Type* c : chain)
             for (const auto& f : c->fields) {
+                if (f.hidden) continue;
                 VariableRef member{ref.path + "." + f.name, f.type, ref.addr + f.offset, -1, ref.constant, ref.program};
                 if (!expand(member, scopes, f.name, visit)) return false;
             }
@@ -246,7 +247,7 @@ void forEachElementary(const sema::ProgramModel& model, const std::function<bool
     for (const auto& inst : model.programs) {
         scopes.assign(1, inst.name);
         for (const auto& v : inst.pou->ownedVars) {
-            if (v->section == ast::VarSection::Temp || v->byRef) continue;
+            if (v->section == ast::VarSection::Temp || v->byRef || v->hidden) continue;
             uint8_t* addr = programVarAddress(inst, *v);
             if (!addr) continue;
             if (!expand(VariableRef{inst.name + "." + v->name, v->type, addr, v->bit, v->constant, &inst}, scopes, v->name, visit)) return;
@@ -254,7 +255,7 @@ void forEachElementary(const sema::ProgramModel& model, const std::function<bool
     }
     scopes.clear();
     for (const sema::VarSym* g : model.globals) {
-        if (g->byRef || !g->abs) continue;
+        if (g->byRef || !g->abs || g->hidden) continue;
         if (!expand(VariableRef{g->globalKey(), g->type, g->abs, g->bit, g->constant, nullptr}, scopes, g->globalKey(), visit)) return;
     }
 }

@@ -219,12 +219,12 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
                 align = std::max(align, ft->align);
                 if (spec->isUnion) {
                     // UNION: every member starts at the union's first byte.
-                    t->fields.push_back({f.names[n], ft, 0, n < f.nameLocs.size() ? f.nameLocs[n] : f.loc});
+                    t->fields.push_back({f.names[n], ft, 0, n < f.nameLocs.size() ? f.nameLocs[n] : f.loc, hasAttribute(f.pragmas, "strun_hidden")});
                     unionSize = std::max(unionSize, ft->size);
                     continue;
                 }
                 off = alignUp(off, ft->align);
-                t->fields.push_back({f.names[n], ft, off, n < f.nameLocs.size() ? f.nameLocs[n] : f.loc});
+                t->fields.push_back({f.names[n], ft, off, n < f.nameLocs.size() ? f.nameLocs[n] : f.loc, hasAttribute(f.pragmas, "strun_hidden")});
                 off += ft->size;
                 if (off > kMaxStorage) { error(diag::E0007, f.loc, "structure too large"); off = 0; break; }
             }
@@ -642,6 +642,7 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 v->retain = block.retain || block.persistent;
                 v->decl = &decl;
                 v->owner = pou;
+                v->hidden = hasAttribute(decl.pragmas, "strun_hidden");
                 if (isExternal) {
                     auto g = globals_.find(key);
                     if (g == globals_.end()) {
@@ -696,7 +697,7 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                     v->offset = instOff;
                     instOff += size;
                     if (instOff > kMaxStorage) { error(diag::E0007, loc, "instance too large (above 256 MiB)"); instOff = 0; }
-                    instanceFields->push_back({name, byRef ? types().reference(t) : t, v->offset, loc});
+                    instanceFields->push_back({name, byRef ? types().reference(t) : t, v->offset, loc, v->hidden});
                 }
                 v->byRef = byRef;
                 model_.largestType = std::max(model_.largestType, t->size);

@@ -40,6 +40,9 @@ struct VarSym {
     PouInfo* owner = nullptr;    // POU the variable belongs to (null for globals)
     VarSym* global = nullptr;    // VAR_EXTERNAL: the global it names
     bool used = false;
+    // {attribute 'strun_hidden'}: a variable a graphical body's translation
+    // needs for itself; --dump, --vcd, --watch and the live API leave it out.
+    bool hidden = false;
     // Global of a list with {attribute 'qualified_only'}: only `LIST.name` names it.
     std::string qualifiedOnlyList;
     // Global of a named global list (GVL): the list's name. `sharedName` when

@@ -40,6 +40,7 @@ struct Field {
     const Type* type = nullptr;
     uint32_t offset = 0;
     ast::Loc loc;
+    bool hidden = false;  // {attribute 'strun_hidden'} (VarSym::hidden)
 };
 
 struct Enumerator {

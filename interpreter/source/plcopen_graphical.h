@@ -21,6 +21,12 @@ namespace strun::source::plcopen {
 
 // One line of generated ST: written by strun for an element (`verbatim`
 // false), or ST copied from the XML (an inline SFC condition or action body).
+// Put before the declaration of a variable the translation needs for itself
+// (temporaries, edge detectors, transition flags, action control): the
+// checker marks it hidden, so --dump, --vcd, --watch and the live API leave
+// it out (docs/graphical.md). Steps are declared without it.
+inline constexpr const char* kHiddenPragma = "{attribute 'strun_hidden'} ";
+
 struct StLine {
     std::string text;
     int line = 1, col = 1;
@@ -67,6 +73,13 @@ struct ChartCondition {
 };
 void translateChartConditions(XmlConversion& conv, const pugi::xml_node& sfc, PouContext& ctx, const std::vector<ChartCondition>& conditions,
                               Translation& out);
+
+// An action block in an LD/FBD body: each of its actions runs under the
+// action control of IEC 61131-3 with `activity` (the block's power flow or
+// input) in the place of a step's X. Hidden variables are named from
+// `prefix`; messages start with `where`.
+void translateActionBlock(XmlConversion& conv, const pugi::xml_node& block, const std::string& activity, const std::string& prefix,
+                          const std::string& where, PouContext& ctx, Translation& out);
 
 // An SFC chart (<SFC> element) as ST statements.
 void translateChart(XmlConversion& conv, const pugi::xml_node& lang, PouContext& ctx, Translation& out);

@@ -27,7 +27,7 @@ std::string upper(std::string s) {
     return s;
 }
 
-enum class Kind { InVar, OutVar, InOutVar, Block, Connector, Continuation, Label, Jump, Return, LeftRail, RightRail, Contact, Coil };
+enum class Kind { InVar, OutVar, InOutVar, Block, Connector, Continuation, Label, Jump, Return, LeftRail, RightRail, Contact, Coil, ActionBlock };
 
 struct Conn {
     int ref = 0;
@@ -139,6 +139,7 @@ struct Network {
     int currentRoot = -1;
     bool failed = false;
     bool inChart = false;  // the LD/FBD elements of an SFC body: its SFC elements are skipped
+    std::map<std::string, int> actionBlockOf;  // action (upper) -> the action block that uses it
 
     Network(XmlConversion& c, PouContext& x, Translation& o, bool isLd) : conv(c), ctx(x), out(o), ld(isLd) {
         prefix = "_g" + std::to_string(++ctx.bodies) + "_";
@@ -229,6 +230,22 @@ struct Network {
                     conv.error(n, where() + k + " " + std::to_string(e.id) + " names no variable");
                     failed = true;
                 }
+            } else if (k == "actionBlock" && !inChart) {
+                // Actions activated by the power flow (LD) or a BOOL input (FBD) instead of a step.
+                e.kind = Kind::ActionBlock;
+                e.ins.push_back({"", false, "", connectionsOf(child(n, "connectionPointIn"))});
+                e.label = "action block " + std::to_string(e.id);
+                // Each action block has its own action control: one action, one block (decision 0291).
+                for (pugi::xml_node a : children(n, "action")) {
+                    const std::string name = child(a, "reference").attribute("name").value();
+                    if (name.empty()) continue;
+                    auto [it, added] = actionBlockOf.emplace(upper(name), e.id);
+                    if (!added && it->second != e.id) {
+                        conv.error(a, where() + "action '" + name + "' is used by action blocks " + std::to_string(it->second) + " and " +
+                                          std::to_string(e.id) + "; in LD/FBD an action may be used by one action block only");
+                        failed = true;
+                    }
+                }
             } else if (k == "comment" || k == "error" || k == "documentation" || k == "addData") {
                 continue;
             } else if (inChart && (k == "step" || k == "transition" || k == "selectionDivergence" || k == "selectionConvergence" ||
@@ -238,6 +255,11 @@ struct Network {
             } else {
                 conv.error(n, where() + "the " + k + " element " + std::to_string(e.id) + " is not supported in " +
                                   (ld ? "LD" : "FBD") + " bodies (docs/graphical.md)");
+                failed = true;
+                continue;
+            }
+            if (!n.attribute("localId")) {
+                conv.error(n, where() + "the " + k + " element has no localId (PLCopen TC6 requires one)");
                 failed = true;
                 continue;
             }
@@ -398,7 +420,7 @@ struct Network {
 
     void declare(int i, const std::string& name, const std::string& type) {
         auto [line, col] = conv.where(els[i].node);
-        out.declarations.push_back({"    " + name + " : " + type + ";", line, col, els[i].label, false});
+        out.declarations.push_back({"    " + std::string(kHiddenPragma) + name + " : " + type + ";", line, col, els[i].label, false});
     }
 
     // Writes element i's statement (and first the statements it reads) unless
@@ -463,6 +485,9 @@ struct Network {
                 }
                 return powerFlow(i);
             case Kind::Block: return blockOutput(i, c.param);
+            case Kind::ActionBlock:
+                require(i);
+                return hidden(i, "");
             default: return "FALSE";
         }
     }
@@ -774,6 +799,19 @@ struct Network {
             }
             case Kind::Label: return e.text + ": ;";
             case Kind::Block: return blockStatement(i);
+            case Kind::ActionBlock: {
+                // The activity in a hidden BOOL, then the actions' control, calls and final scans.
+                declare(i, hidden(i, ""), "BOOL");
+                write(i, hidden(i, "") + " := " + powerIn(e) + ";");
+                Translation actions;
+                translateActionBlock(conv, e.node, hidden(i, ""), hidden(i, "a"), where(), ctx, actions);
+                for (StLine& l : actions.body) {
+                    if (!l.verbatim) l.element = e.label;  // the control and calls name the block
+                    lines.push_back(std::move(l));
+                }
+                out.declarations.insert(out.declarations.end(), actions.declarations.begin(), actions.declarations.end());
+                return "";
+            }
             default: return "";
         }
     }
@@ -819,8 +857,10 @@ struct Network {
             }
             declare(i, hidden(i, "OUT"), type);
             call = hidden(i, "OUT") + " := " + callText(i) + ";";
+        } else if (totalReaders(i) == 0 && e.stdFunction) {
+            return "";  // a standard function (no side effect) whose output is connected to nothing: a dangling drawing
         } else if (totalReaders(i) == 0) {
-            call = callText(i) + ";";  // a function whose result nobody reads: called for its effect
+            call = callText(i) + ";";  // a user function whose result nobody reads: called for its effect
         } else {
             return "";  // written inline where it is read
         }
@@ -854,7 +894,7 @@ struct Network {
         for (size_t i = 0; i < els.size(); ++i) {
             Kind k = els[i].kind;
             if (k == Kind::OutVar || k == Kind::InOutVar || k == Kind::Coil || k == Kind::Block || k == Kind::Jump || k == Kind::Return ||
-                k == Kind::Label)
+                k == Kind::Label || k == Kind::ActionBlock)
                 roots.push_back(static_cast<int>(i));
         }
         explicitOrder = !roots.empty() && std::all_of(roots.begin(), roots.end(), [&](int i) { return els[i].order > 0; });

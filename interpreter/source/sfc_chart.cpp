@@ -19,8 +19,35 @@ struct Writer {
     const std::string& stepName(int s) const { return c.steps[static_cast<size_t>(s)].name; }
 
     void line(SfcChart::Where at, const std::string& text, const std::string& element) { out.body.push_back({text, at.line, at.col, element, false}); }
-    void declare(SfcChart::Where at, const std::string& text, const std::string& element) {
-        out.declarations.push_back({"    " + text, at.line, at.col, element, false});
+    // A variable of the translation's own (hidden), or a step (visible).
+    void declare(SfcChart::Where at, const std::string& text, const std::string& element, bool hidden = true) {
+        out.declarations.push_back({"    " + std::string(hidden ? plcopen::kHiddenPragma : "") + text, at.line, at.col, element, false});
+    }
+
+    static bool onlyN(const SfcChart::Action& a) {
+        return std::all_of(a.uses.begin(), a.uses.end(), [](const SfcChart::Association& as) { return as.qualifier == "N"; });
+    }
+
+    // SFCInit / SFCReset: every step back to its initial state, stored
+    // actions cleared, no final scan owed.
+    void resetLines(const std::string& condition) {
+        const SfcChart::Where at = c.steps.empty() ? SfcChart::Where{} : c.steps[0].at;
+        line(at, "IF " + condition + " THEN", "");
+        for (const SfcChart::Step& st : c.steps) {
+            const std::string x = st.initial ? "TRUE" : "FALSE";
+            line(st.at, st.name + ".X := " + x + "; " + st.name + "._X := " + x + "; " + st.name + ".START := TIME(); " + st.name +
+                            ".T := T#0s; " + st.name + "._T := T#0s;",
+                 "step '" + st.name + "'");
+        }
+        for (size_t i = 0; i < c.actions.size(); ++i) {
+            const SfcChart::Action& a = c.actions[i];
+            const std::string base = prefix + "a" + std::to_string(i);
+            // R clears the stored qualifiers; the input is then released (the chart's calls pass only the qualifiers it uses).
+            if (!onlyN(a)) line(a.at, base + "_control(R := TRUE); " + base + "_control.R := FALSE;", a.label);
+            if (!a.isVariable) line(a.at, base + "_q := FALSE;", a.label);
+            else line(a.at, a.name + " := FALSE;", a.label);
+        }
+        line(at, "END_IF;", "");
     }
 
     void action(int index) {
@@ -30,7 +57,7 @@ struct Writer {
         bool onlyN = true, onlyPulses = true;
         for (const SfcChart::Association& as : a.uses) {
             std::string& in = inputs[as.qualifier];
-            in += (in.empty() ? "" : " OR ") + stepName(as.step) + ".X";
+            in += (in.empty() ? "" : " OR ") + (as.activity.empty() ? stepName(as.step) + ".X" : as.activity);
             if (!as.duration.empty() && !times.count(as.qualifier)) times[as.qualifier] = as.duration;
             onlyN = onlyN && as.qualifier == "N";
             onlyPulses = onlyPulses && (as.qualifier == "P" || as.qualifier == "P1" || as.qualifier == "P0");
@@ -131,7 +158,12 @@ struct Writer {
     void write() {
         for (size_t s = 0; s < c.steps.size(); ++s)
             declare(c.steps[s].at, c.steps[s].name + " : __SFC_STEP" + (c.steps[s].initial ? " := (X := TRUE, _X := TRUE)" : "") + ";",
-                    stepLabel(static_cast<int>(s)));
+                    stepLabel(static_cast<int>(s)), false);
+        // CODESYS' flags: SFCPause skips the evaluation, SFCInit/SFCReset reset the chart first.
+        if (c.sfcPause) line(c.steps[0].at, "IF NOT SFCPause THEN", "");
+        if (c.sfcInit || c.sfcReset)
+            resetLines(c.sfcInit && c.sfcReset ? "SFCInit OR SFCReset" : c.sfcInit ? "SFCInit" : "SFCReset");
+        if (c.sfcInit) line(c.steps[0].at, "IF NOT SFCInit THEN", "");
         // 1. Step times.
         for (size_t s = 0; s < c.steps.size(); ++s) {
             const std::string& n = c.steps[s].name;
@@ -191,10 +223,19 @@ struct Writer {
             }
             line(c.transitions[t].at, "IF " + fire[t] + " THEN " + s + "END_IF;", c.transitions[t].label);
         }
+        if (c.sfcInit) line(c.steps[0].at, "END_IF;", "");
+        if (c.sfcPause) line(c.steps[0].at, "END_IF;", "");
     }
 };
 
 }  // namespace
+
+void writeSfcAction(const SfcChart::Action& action, const std::string& prefix, plcopen::Translation& out) {
+    SfcChart alone;
+    alone.actions.push_back(action);
+    Writer w{alone, prefix, out};
+    w.action(0);
+}
 
 bool writeSfcChart(const SfcChart& chart, const std::string& prefix, plcopen::Translation& out,
                    const std::function<void(SfcChart::Where, const std::string&)>& fail) {

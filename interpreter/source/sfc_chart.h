@@ -36,6 +36,7 @@ struct SfcChart {
     };
     struct Association {
         int step = -1;
+        std::string activity;  // instead of the step's X: what activates it (an action block's power flow in LD/FBD)
         std::string qualifier = "N";
         std::string duration;  // an IEC literal
     };
@@ -51,7 +52,16 @@ struct SfcChart {
     std::vector<plcopen::StLine> conditionNetworks;  // evaluated before the transitions
     std::vector<Transition> transitions;
     std::vector<Action> actions;
+    // CODESYS' implicit SFC flags, used when the POU declares them (BOOL):
+    // SFCInit resets the chart to its initial steps and holds it there,
+    // SFCReset resets it and goes on, SFCPause freezes it (decision 0293).
+    bool sfcInit = false, sfcReset = false, sfcPause = false;
 };
+
+// Writes one action (its action control, the call and the final scan) whose
+// associations all have an `activity`: an action block of an LD/FBD body.
+// Hidden variables are named from `prefix`.
+void writeSfcAction(const SfcChart::Action& action, const std::string& prefix, plcopen::Translation& out);
 
 // Checks the chart (an initial step, every step reachable) and writes it;
 // problems go to `fail` with the position of the element. False on errors.

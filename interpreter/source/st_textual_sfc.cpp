@@ -227,7 +227,7 @@ struct Reader {
                     if (k > cb) t.before.push_back({src.substr(at(cb).begin, at(k - 1).end - at(cb).begin), at(cb).line, at(cb).col, t.label, true});
                     t.expr = name;
                     if (!declaredNames.count(upper(name))) {
-                        tr.declarations.push_back({"    " + name + " : BOOL;", kw.line, kw.col, t.label, false});
+                        tr.declarations.push_back({"    " + std::string(plcopen::kHiddenPragma) + name + " : BOOL;", kw.line, kw.col, t.label, false});
                         declaredNames.insert(upper(name));
                     }
                 } else {
@@ -267,6 +267,13 @@ struct Reader {
             chart.actions[static_cast<size_t>(it->second)].uses.push_back(as);
         }
         if (failed) return;
+        // CODESYS' SFC flags, when the POU declares them (`SFCInit : BOOL;`, `SFCInit, x : BOOL;`).
+        for (size_t k = b; k + 1 < e; ++k) {
+            if (at(k + 1).text != ":" && at(k + 1).text != ",") continue;
+            chart.sfcInit = chart.sfcInit || at(k).up == "SFCINIT";
+            chart.sfcReset = chart.sfcReset || at(k).up == "SFCRESET";
+            chart.sfcPause = chart.sfcPause || at(k).up == "SFCPAUSE";
+        }
         const std::string prefix = "_g" + std::to_string(++charts) + "_";
         if (!writeSfcChart(chart, prefix, tr, [&](SfcChart::Where w, const std::string& what) {
                 result.errors.push_back({w.line, w.col, "in the SFC chart of '" + pou + "': " + what});
