@@ -115,8 +115,22 @@ private:
     VarSym* addGlobal(const ast::VarDecl& decl, size_t nameIndex, const ast::VarBlock& block, uint32_t& listSize);
     bool constIntExpr(const ast::Expr* e, int64_t& out, const char* what);
     bool isAddressInit(const VarSym* v) const;
-    exec::Stmt* addressInitStmt(VarSym* v);
-    std::vector<VarSym*> globalAddressInits_;
+    exec::Stmt* addressInitStmt(const RuntimeInit& init);
+    std::vector<RuntimeInit> globalAddressInits_;
+    // ---- initial values computed at initialisation (checker_runtime_init.cpp)
+    // While writing the initial value of `runtimeInitVar_`: where a part that is
+    // not a compile-time constant goes (null: it is an error), and the path
+    // from the variable to the part being written.
+    struct InitPathStep {
+        std::string member;       // a structure member, or
+        const Type* array = nullptr;  // an element of this array type ...
+        uint64_t element = 0;     // ... at this flat position
+    };
+    std::vector<RuntimeInit>* runtimeInits_ = nullptr;
+    VarSym* runtimeInitVar_ = nullptr;
+    std::vector<InitPathStep> initPath_;
+    void writeVarInitial(uint8_t* p, VarSym* v, std::vector<RuntimeInit>* runtime);
+    bool deferInitial(const ast::Expr& value);
     std::string qualifiedOnlyList_;   // while declaring a {attribute 'qualified_only'} global list: its name
     bool qualifiedAccess_ = false;    // while resolving the member of `LIST.name`
     std::string qualifiedList_;       // ... and LIST, upper-case
