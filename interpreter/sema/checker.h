@@ -246,6 +246,24 @@ private:
     // Variables whose declaration failed (unknown type): their uses are not reported again.
     void markUnresolved(const std::string& upperName);
     bool isUnresolved(const std::string& upperName) const;
+public:
+    // A variable of `pou` (or of a block it extends) whose type was unknown: already
+    // reported, so a call naming it as a parameter says nothing more.
+    bool isUnresolvedParameter(const PouInfo* pou, const std::string& upperName) const {
+        for (const PouInfo* p = pou; p != nullptr; p = p->parent)
+            if (unresolvedVars_.count({p, upperName})) return true;
+        return false;
+    }
+    // Whether some variable of `pou` (or of a block it extends) had an unknown type:
+    // positional arguments cannot be matched to its inputs then, and are not reported.
+    bool hasUnresolvedVariables(const PouInfo* pou) const {
+        for (const PouInfo* p = pou; p != nullptr; p = p->parent) {
+            auto it = unresolvedVars_.lower_bound({p, std::string()});
+            if (it != unresolvedVars_.end() && it->first == p) return true;
+        }
+        return false;
+    }
+private:
     // "'X' is not a value of enumeration 'E'" with the values E has and the closest one.
     void enumValueError(const ast::Loc& loc, const std::string& written, const Type* enumType);
     // The instance name a suggestion declares for block type `typeName` (its first letter: t for TON).
