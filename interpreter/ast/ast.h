@@ -185,9 +185,12 @@ enum class VarSection {
     Var, Input, Output, InOut, Temp, Stat, Inst, Global, External, Access, Config,
 };
 
+enum class Access { Default, Public, Private, Protected, Internal };
+
 struct VarBlock {
     Loc loc;
     VarSection section = VarSection::Var;
+    Access access = Access::Default;  // Ed.3 `VAR PUBLIC` / `VAR PRIVATE` ... (decision 0278)
     bool constant = false;
     bool retain = false;
     bool nonRetain = false;
@@ -247,8 +250,6 @@ struct Stmt {
 // ---------------------------------------------------------------- POUs
 
 enum class PouKind { Program, Function, FunctionBlock, Method, Interface };
-
-enum class Access { Default, Public, Private, Protected, Internal };
 
 struct Pou;
 

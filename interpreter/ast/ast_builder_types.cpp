@@ -41,6 +41,10 @@ VarBlock AstBuilder::varBlock(P::VarBlockContext* c) {
             case L::RETAIN: out.retain = true; break;
             case L::NON_RETAIN: out.nonRetain = true; break;
             case L::PERSISTENT: out.persistent = true; break;
+            case L::PUBLIC: out.access = Access::Public; break;
+            case L::PRIVATE: out.access = Access::Private; break;
+            case L::PROTECTED: out.access = Access::Protected; break;
+            case L::INTERNAL: out.access = Access::Internal; break;
             default: break;
         }
     }

@@ -37,15 +37,29 @@ bool startsDeclarations(std::size_t type) {
     }
 }
 
+// Tokens that open a block of declarations ended by END_VAR or END_STRUCT.
+bool opensDeclarations(std::size_t type) {
+    switch (type) {
+        case L::VAR: case L::VAR_INPUT: case L::VAR_OUTPUT: case L::VAR_IN_OUT: case L::VAR_TEMP: case L::VAR_STAT:
+        case L::VAR_INST: case L::VAR_GLOBAL: case L::VAR_EXTERNAL: case L::VAR_CONFIG: case L::VAR_ACCESS: case L::STRUCT:
+            return true;
+        default:
+            return false;
+    }
+}
+
 }  // namespace
 
-void resolveAxTwinCatForms(std::string_view text, std::vector<ScannedToken>& tokens) {
+void resolveAxTwinCatForms(std::string_view text, std::vector<ScannedToken>& tokens, std::vector<std::size_t>* emptyDeclarations) {
     const std::size_t none = tokens.size();
     std::size_t lastDefault = none;  // index of the last default-channel token seen
+    bool inDeclarations = false;     // inside a VAR ... END_VAR block or STRUCT ... END_STRUCT
     for (std::size_t i = 0; i + 1 < tokens.size(); ++i) {
         ScannedToken& token = tokens[i];
         if (token.channel != antlr4::Token::DEFAULT_CHANNEL) continue;
         const std::size_t before = lastDefault == none ? 0 : tokens[lastDefault].type;
+        if (opensDeclarations(token.type)) inDeclarations = true;
+        else if (token.type == L::END_VAR || token.type == L::END_STRUCT) inDeclarations = false;
         if (token.type == L::IDENTIFIER && (before == L::METHOD || before == L::PROPERTY || isModifier(before)) &&
             stdlib::equalsIgnoreCase(text.substr(token.start, token.stop + 1 - token.start), "OVERRIDE")) {
             // A modifier only when a name (or another modifier) follows:
@@ -63,6 +77,11 @@ void resolveAxTwinCatForms(std::string_view text, std::vector<ScannedToken>& tok
             if (afterEndVar || afterPragma) {
                 token.channel = antlr4::Token::HIDDEN_CHANNEL;
                 continue;  // the hidden `;` is not the last token seen
+            }
+            if (inDeclarations && before == L::SEMI) {
+                token.channel = antlr4::Token::HIDDEN_CHANNEL;
+                if (emptyDeclarations) emptyDeclarations->push_back(i);
+                continue;
             }
         }
         lastDefault = i;

@@ -9,7 +9,10 @@
 // - A `;` right after `END_VAR` (`END_VAR;`) or right after a pragma that
 //   stands where a declaration may start (`{attribute 'x'};` in a VAR block)
 //   changes nothing: it goes to the hidden channel, so the parser never sees
-//   it. A `;` anywhere else is left as it is.
+//   it. So does a `;` right after another `;` inside a VAR block or a STRUCT
+//   (`x : INT;;`, an empty declaration): its index goes to
+//   `emptyDeclarations` for a warning (decision 0276). A `;` anywhere else is
+//   left as it is.
 #pragma once
 
 #include <string_view>
@@ -19,6 +22,7 @@
 
 namespace strun::ast {
 
-void resolveAxTwinCatForms(std::string_view text, std::vector<ScannedToken>& tokens);
+void resolveAxTwinCatForms(std::string_view text, std::vector<ScannedToken>& tokens,
+                           std::vector<std::size_t>* emptyDeclarations = nullptr);
 
 }  // namespace strun::ast

@@ -62,7 +62,7 @@ std::string lexerErrorMessage(const antlr4::Token& token) {
 ScanResult scanWithActionKeyword(std::string_view text) {
     ScanResult scan = scanSource(text, kMaxTokensPerFile);
     resolveActionKeyword(scan.tokens);
-    resolveAxTwinCatForms(text, scan.tokens);  // OVERRIDE, `END_VAR;`, `{pragma};`
+    resolveAxTwinCatForms(text, scan.tokens, &scan.emptyDeclarations);  // OVERRIDE, `END_VAR;`, `{pragma};`, `;;`
     return scan;
 }
 
@@ -89,6 +89,7 @@ public:
         if (!lexWithinLimit()) return emptyUnit();
         reportForeignOperators();
         reportMessagePragmas();
+        reportEmptyDeclarations();
         if (!reportLexerErrors()) return emptyUnit();
         if (scan_.tokens.size() >= halvesFrom_)
             if (auto halves = parseInHalves(text_, scan_.tokens, fileIndex_)) return std::move(*halves);
@@ -145,6 +146,15 @@ private:
         }
         tokens_.fill();
         return true;
+    }
+
+    // `x : INT;;`: the extra `;` is dropped with a warning (decision 0276).
+    void reportEmptyDeclarations() {
+        for (std::size_t i : scan_.emptyDeclarations) {
+            const ScannedToken& t = scan_.tokens[i];
+            log_.warning(Loc{fileIndex_, static_cast<int>(t.line), static_cast<int>(t.column) + 1},
+                         "an empty declaration: this ';' ends nothing and is ignored");
+        }
     }
 
     // The operators of C and Java that ST beginners type (`==`, `!=`, `&&`,

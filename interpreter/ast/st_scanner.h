@@ -34,6 +34,9 @@ struct ScannedToken {
 struct ScanResult {
     std::vector<ScannedToken> tokens;  // always ends with an EOF token
     bool overLimit = false;            // more than maxTokens tokens: scanning stopped there
+    // Empty declarations (`x : INT;;` in a VAR block or STRUCT): the index of
+    // each extra `;`, hidden from the parser and reported as one warning (decision 0276).
+    std::vector<std::size_t> emptyDeclarations;
 };
 
 // `text` must be valid UTF-8 (ast/utf8_input.h makes it so) and shorter

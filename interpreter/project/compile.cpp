@@ -7,6 +7,7 @@
 #include "interpreter/ast/large_stack.h"
 #include "interpreter/ast/parse.h"
 #include "interpreter/project/library_selection.h"
+#include "interpreter/project/missing_libraries.h"
 #include "interpreter/project/syntax_recovery.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/builtins/libraries/task_info.h"
@@ -138,6 +139,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     });
     if (failure) std::rethrow_exception(failure);
     if (!damage.lines.empty()) dropSyntaxCascades(log, damage);
+    groupMissingLibraryNames(log, sources.referencedLibraries());  // a .plcproj's libraries strun lacks
     if (extras && extras->keepChecker) *extras->keepChecker = std::move(checkerOwner);
     if (log.hasErrors()) {
         if (extras && extras->modelEvenWithErrors) *extras->modelEvenWithErrors = std::move(model);

@@ -130,8 +130,22 @@ private:
     VarSym* addGlobal(const ast::VarDecl& decl, size_t nameIndex, const ast::VarBlock& block, uint32_t& listSize);
     bool constIntExpr(const ast::Expr* e, int64_t& out, const char* what);
     bool isAddressInit(const VarSym* v) const;
-    exec::Stmt* addressInitStmt(VarSym* v);
-    std::vector<VarSym*> globalAddressInits_;
+    exec::Stmt* addressInitStmt(const RuntimeInit& init);
+    std::vector<RuntimeInit> globalAddressInits_;
+    // ---- initial values computed at initialisation (checker_runtime_init.cpp)
+    // While writing the initial value of `runtimeInitVar_`: where a part that is
+    // not a compile-time constant goes (null: it is an error), and the path
+    // from the variable to the part being written.
+    struct InitPathStep {
+        std::string member;       // a structure member, or
+        const Type* array = nullptr;  // an element of this array type ...
+        uint64_t element = 0;     // ... at this flat position
+    };
+    std::vector<RuntimeInit>* runtimeInits_ = nullptr;
+    VarSym* runtimeInitVar_ = nullptr;
+    std::vector<InitPathStep> initPath_;
+    void writeVarInitial(uint8_t* p, VarSym* v, std::vector<RuntimeInit>* runtime);
+    bool deferInitial(const ast::Expr& value);
     std::string qualifiedOnlyList_;   // while declaring a {attribute 'qualified_only'} global list: its name
     bool qualifiedAccess_ = false;    // while resolving the member of `LIST.name`
     std::string qualifiedList_;       // ... and LIST, upper-case
@@ -247,6 +261,24 @@ private:
     // Variables whose declaration failed (unknown type): their uses are not reported again.
     void markUnresolved(const std::string& upperName);
     bool isUnresolved(const std::string& upperName) const;
+public:
+    // A variable of `pou` (or of a block it extends) whose type was unknown: already
+    // reported, so a call naming it as a parameter says nothing more.
+    bool isUnresolvedParameter(const PouInfo* pou, const std::string& upperName) const {
+        for (const PouInfo* p = pou; p != nullptr; p = p->parent)
+            if (unresolvedVars_.count({p, upperName})) return true;
+        return false;
+    }
+    // Whether some variable of `pou` (or of a block it extends) had an unknown type:
+    // positional arguments cannot be matched to its inputs then, and are not reported.
+    bool hasUnresolvedVariables(const PouInfo* pou) const {
+        for (const PouInfo* p = pou; p != nullptr; p = p->parent) {
+            auto it = unresolvedVars_.lower_bound({p, std::string()});
+            if (it != unresolvedVars_.end() && it->first == p) return true;
+        }
+        return false;
+    }
+private:
     // "'X' is not a value of enumeration 'E'" with the values E has and the closest one.
     void enumValueError(const ast::Loc& loc, const std::string& written, const Type* enumType);
     // The instance name a suggestion declares for block type `typeName` (its first letter: t for TON).

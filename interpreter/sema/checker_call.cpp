@@ -38,6 +38,9 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
     std::unordered_map<std::string, VarSym*> byName;
     size_t positionalCount = 0;
     for (const auto& a : call.args) positionalCount += a.name.empty() ? 1 : 0;
+    // A variable of unknown type is not declared: positional arguments cannot be
+    // matched to the inputs, and the unknown type was the error.
+    if (positionalCount > 0 && ck.hasUnresolvedVariables(owner)) return false;
     if (positionalCount > inputsInOrder.size()) {
         ck.error(diag::E0301, call.kids[0]->loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
         return false;
@@ -55,14 +58,16 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
             // CODESYS/TwinCAT: a positional argument after named ones binds by
             // its position in the call (`F(a := 1, b := 2, 3)`: c), decision 0204.
             if (k >= inputsInOrder.size()) {
-                ck.error(diag::E0301, a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
+                if (!ck.hasUnresolvedVariables(owner))
+                    ck.error(diag::E0301, a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
                 ok = false;
                 continue;
             }
             param = inputsInOrder[k];
         } else if (a.name.empty()) {
             if (positional >= inputsInOrder.size()) {
-                ck.error(diag::E0301, a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
+                if (!ck.hasUnresolvedVariables(owner))
+                    ck.error(diag::E0301, a.loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
                 ok = false;
                 continue;
             }
@@ -73,6 +78,10 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
             if (byName.empty())
                 for (VarSym* p : params) byName[upper(p->name)] = p;  // the last of a name, as the scan found it
             if (auto it = byName.find(key); it != byName.end()) param = it->second;
+            if (!param && ck.isUnresolvedParameter(owner, key)) {
+                ok = false;  // its unknown type was the error
+                continue;
+            }
             if (!param) {
                 std::vector<std::string> names;
                 for (const VarSym* p : params) names.push_back(p->name);

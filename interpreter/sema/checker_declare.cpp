@@ -549,8 +549,10 @@ void Checker::layoutPou(PouInfo* pou) {
             for (auto& v : owner->ownedVars) {
                 if (v->storage != Storage::Self || v->byRef) continue;
                 writeDefault(image.data() + v->offset, v->type);
-                if (isAddressInit(v.get())) { pou->addressInits.push_back(v.get()); continue; }
-                if (v->decl && v->decl->init) writeInitial(image.data() + v->offset, v->type, v->decl->init.get(), v->decl->loc);
+                if (isAddressInit(v.get())) { pou->addressInits.push_back({v.get(), nullptr, v->decl->init->expr.get()}); continue; }
+                // Only the block's own variables may be initialised at run time (a
+                // method's VAR_INST has no name an assignment could spell).
+                writeVarInitial(image.data() + v->offset, v.get(), owner == pou ? &pou->addressInits : nullptr);
             }
         };
         initialise(pou);
@@ -578,8 +580,10 @@ void Checker::layoutPou(PouInfo* pou) {
         if (v->storage != Storage::Frame || v->byRef) continue;
         uint8_t* p = pou->code->frameInit.data() + v->offset;
         writeDefault(p, v->type);
-        if (isAddressInit(v.get())) { pou->frameAddressInits.push_back(v.get()); continue; }
-        if (v->decl && v->decl->init) writeInitial(p, v->type, v->decl->init.get(), v->decl->loc);
+        if (isAddressInit(v.get())) { pou->frameAddressInits.push_back({v.get(), nullptr, v->decl->init->expr.get()}); continue; }
+        // Inputs keep what the caller passed: only locals and outputs are assigned at each call.
+        const bool assignable = v->section != ast::VarSection::Input && v->section != ast::VarSection::InOut;
+        writeVarInitial(p, v.get(), assignable ? &pou->frameAddressInits : nullptr);
     }
     pou->layingOut = false;
     pou->laidOut = true;
@@ -638,6 +642,7 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 v->loc = loc;
                 v->type = t;
                 v->section = block.section;
+                v->access = block.access;
                 v->constant = block.constant;
                 v->retain = block.retain || block.persistent;
                 v->decl = &decl;
@@ -811,8 +816,8 @@ void Checker::declareGlobals() {
         }
         for (VarSym* v : placed) {
             writeDefault(v->abs, v->type);
-            if (isAddressInit(v)) { globalAddressInits_.push_back(v); continue; }
-            if (v->decl->init) writeInitial(v->abs, v->type, v->decl->init.get(), v->decl->loc);
+            if (isAddressInit(v)) { globalAddressInits_.push_back({v, nullptr, v->decl->init->expr.get()}); continue; }
+            writeVarInitial(v->abs, v, &globalAddressInits_);
         }
     };
     for (auto* list : globalLists_) {
@@ -885,8 +890,16 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
     switch (init->kind) {
         case ast::InitKind::Expr: {
             if (!init->expr) return;
+            const size_t messagesBefore = log_.messages().size();
             Checked c = checkExpr(*init->expr);
             if (!c.ok) return;
+            // Not known at compile time: an assignment at initialisation, when this
+            // variable may have one (its warnings come when that is checked).
+            auto deferred = [&] {
+                if (!deferInitial(*init->expr)) return false;
+                log_.dropFrom(messagesBefore);
+                return true;
+            };
             if (t->kind == TK::Enum && c.type && c.type->kind == TK::Enum && c.type != t) {
                 error(diag::E0201, init->loc, fmt::format("initial value of type {} for a variable of type {}", typeName(c.type), typeName(t)));
                 return;
@@ -895,18 +908,22 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
             if (!c.ok) return;
             if (isIntRep(t) || isRealRep(t)) {
                 if (!c.isConst) {
+                    if (deferred()) return;
                     error(diag::E0401, init->expr->loc, "an initial value must be a constant expression");
                     return;
                 }
                 writeScalar(p, t, c);
             } else if (isStringType(t->kind)) {
                 auto* bytes = dynamic_cast<exec::ConstBytes*>(c.node);
-                if (!bytes) { error(diag::E0401, init->expr->loc, "an initial value must be a constant expression"); return; }
+                if (!bytes) {
+                    if (!deferred()) error(diag::E0401, init->expr->loc, "an initial value must be a constant expression");
+                    return;
+                }
                 size_t n = std::min<size_t>(bytes->bytes.size(), t->size);
                 std::memcpy(p, bytes->bytes.data(), n);
                 p[t->size - 1] = 0;
                 if (t->kind == TK::WString) p[t->size - 2] = 0;
-            } else {
+            } else if (!deferred()) {
                 error(diag::E0401, init->expr->loc, fmt::format("a value of type {} cannot be initialised with an expression", typeName(t)));
             }
             return;
@@ -929,8 +946,17 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
                 // (an initialiser of 50 million elements makes no nodes per element).
                 uint8_t* first = p + k * t->elem->size;
                 if (item.value) {
+                    initPath_.push_back({"", t, k});
+                    const size_t runtimeBefore = runtimeInits_ ? runtimeInits_->size() : 0;
                     writeInitial(first, t->elem, item.value.get(), loc);
                     for (int64_t r = 1; r < repeat; ++r) std::memcpy(first + uint64_t(r) * t->elem->size, first, t->elem->size);
+                    // `N(x)` with x known only at run time: one assignment per element.
+                    if (runtimeInits_ && runtimeInits_->size() > runtimeBefore)
+                        for (int64_t r = 1; r < repeat; ++r) {
+                            initPath_.back().element = k + static_cast<uint64_t>(r);
+                            writeInitial(first + uint64_t(r) * t->elem->size, t->elem, item.value.get(), loc);
+                        }
+                    initPath_.pop_back();
                 }
                 k += static_cast<uint64_t>(repeat);
             }
@@ -949,7 +975,9 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
                 }
                 const Type* ft = fld->type;
                 if (ft->kind == TK::Reference && t->kind == TK::FunctionBlock) continue;
+                initPath_.push_back({f.name, nullptr, 0});
                 writeInitial(p + fld->offset, ft, f.value.get(), f.loc);
+                initPath_.pop_back();
             }
             return;
         }

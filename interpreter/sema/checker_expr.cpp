@@ -158,6 +158,14 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
                 warning(diag::W0005, e.loc, fmt::format("'{}' is beyond the largest LTIME (2^63-1 ns); it is taken as LTIME#106751d23h47m16s854ms775us807ns", e.text.substr(0, 60)));
             if (isLong) return constInt(r.value(), types().elementary(TK::LTime), e.loc);
             int64_t ms = r.value() / 1000000;
+            // TwinCAT's and CODESYS' TIME is unsigned up to T#49d17h2m47s295ms; strun's
+            // is signed (negative durations, the --dump format), so a literal above
+            // T#24d20h31m23s647ms is taken as that, with a warning (decision 0277).
+            if (ms > std::numeric_limits<int32_t>::max() && ms <= int64_t{std::numeric_limits<uint32_t>::max()}) {
+                warning(e.loc, fmt::format("'{}' is beyond the largest TIME (2^31-1 ms); it is taken as T#24d20h31m23s647ms",
+                                           e.text.substr(0, 60)));
+                ms = std::numeric_limits<int32_t>::max();
+            }
             if (ms > std::numeric_limits<int32_t>::max() || ms < std::numeric_limits<int32_t>::min())
                 return fail(fmt::format("'{}' is outside the range of TIME (32-bit milliseconds); use LTIME", e.text));
             return constInt(ms, types().elementary(TK::Time), e.loc);
@@ -364,6 +372,12 @@ Checked Checker::checkName(const ast::Expr& e) {
         if (it != listGlobals_.end() && !(pou_ && pou_->ast && libraryFiles_.count(pou_->ast->loc.file))) return varAccess(it->second, e.loc, false);
     }
     if (VarSym* v = lookupVar(key)) {
+        // A base class's `VAR PRIVATE` member, named in a derived class (decision 0278).
+        if (v->access == ast::Access::Private && v->section == ast::VarSection::Var && v->owner &&
+            v->owner != (pou_ && pou_->owner ? pou_->owner : pou_) && v->owner != pou_) {
+            error(e.loc, fmt::format("'{}' is PRIVATE in '{}'", v->name, v->owner->name));
+            return bad(e.loc);
+        }
         if (v->section == ast::VarSection::Global && v->sharedName) {
             ambiguousGlobal(v, e.loc, e.name);
             return bad(e.loc);
@@ -574,8 +588,21 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
             auto it = p->vars.find(key);
             if (it != p->vars.end()) mv = it->second;
         }
-        if (mv && (mv->section == ast::VarSection::Var || mv->section == ast::VarSection::Temp ||
-                   mv->section == ast::VarSection::Stat || mv->section == ast::VarSection::Inst) &&
+        // Ed.3 `VAR PUBLIC` / `VAR INTERNAL` are visible and writable outside, `VAR PRIVATE`
+        // only in the class that declares them, `VAR PROTECTED` also in derived ones (decision 0278).
+        const ast::Access access = mv && mv->section == ast::VarSection::Var ? mv->access : ast::Access::Default;
+        if (access == ast::Access::Private || access == ast::Access::Protected) {
+            const PouInfo* here = pou_ && pou_->owner ? pou_->owner : pou_;
+            const bool visible = access == ast::Access::Private ? here == mv->owner : insideOwnInstance(mv->owner);
+            if (!visible) {
+                error(loc, fmt::format("'{}' is {} in '{}'", mv->name, access == ast::Access::Private ? "PRIVATE" : "PROTECTED",
+                                       mv->owner ? mv->owner->name : t->name));
+                return bad(loc);
+            }
+        }
+        if (mv && access == ast::Access::Default &&
+            (mv->section == ast::VarSection::Var || mv->section == ast::VarSection::Temp ||
+             mv->section == ast::VarSection::Stat || mv->section == ast::VarSection::Inst) &&
             t->pou->kind == ast::PouKind::FunctionBlock && !insideOwnInstance(t->pou)) {
             // TwinCAT and CODESYS let an instance's internal variables be read
             // from outside (`fb.count`, `ADR(fb.buffer)`); IEC 61131-3 does not

@@ -57,15 +57,17 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
         for (auto& v : p->ownedVars)
             if (v->storage == Storage::Self && !v->byRef)
                 collectFbInits(v->type, addr + v->offset, v->decl ? v->decl->type.get() : nullptr, depth + 1);
-    // Address initialisers of this instance (its own and its base blocks'), before its FB_init.
-    for (PouInfo* p = fb; p; p = p->parent) {
+    // Run-time initialisers of this instance (its base blocks' first, then its own), before its FB_init.
+    std::vector<PouInfo*> chain;
+    for (PouInfo* p = fb; p && chain.size() <= static_cast<size_t>(kMaxNesting); p = p->parent) chain.insert(chain.begin(), p);
+    for (PouInfo* p : chain) {
         if (p->addressInits.empty()) continue;
         if (!p->addressInitCode) {
             PouInfo* savedPou = pou_;
             pou_ = p;
             auto* block = pool().make<exec::Block>();
-            for (VarSym* v : p->addressInits)
-                if (exec::Stmt* st = addressInitStmt(v)) block->stmts.push_back(st);
+            for (const RuntimeInit& init : p->addressInits)
+                if (exec::Stmt* st = addressInitStmt(init)) block->stmts.push_back(st);
             pou_ = savedPou;
             p->addressInitCode = block;
         }
@@ -124,25 +126,12 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
     model_.initCalls.push_back(pool().make<exec::EvalStmt>(c.node, exec::EvalStmt::Rep::Int));
 }
 
-// `v := <its initialiser>` (REF= for a REFERENCE), checked in the POU that declares v.
-exec::Stmt* Checker::addressInitStmt(VarSym* v) {
-    ast::Stmt st;
-    st.kind = v->type->kind == TK::Reference ? ast::StmtKind::RefAssign : ast::StmtKind::Assign;
-    st.loc = v->decl->init->loc;
-    st.target = std::make_unique<ast::Expr>();
-    st.target->kind = ast::ExprKind::Name;
-    st.target->loc = v->loc;
-    st.target->name = v->name;
-    st.expr = ast::cloneExpr(*v->decl->init->expr);
-    return checkStmt(st);
-}
-
 void Checker::buildFbInitCalls() {
     model_.names.push_back("FB_init");
     currentPouName_ = &model_.names.back();
     pou_ = nullptr;
     frameTop_ = 0;
-    for (VarSym* g : globalAddressInits_)
+    for (const RuntimeInit& g : globalAddressInits_)
         if (exec::Stmt* st = addressInitStmt(g)) model_.initCalls.push_back(st);
     for (VarSym* g : model_.globals)
         if (g->abs) collectFbInits(g->type, g->abs, g->decl ? g->decl->type.get() : nullptr, 0);

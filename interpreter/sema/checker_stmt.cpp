@@ -501,8 +501,8 @@ void Checker::checkBody(PouInfo* pou) {
         // is one of this call's frame, so the assignment runs first in every call.
         auto* block = static_cast<exec::Block*>(pou->code->body);
         std::vector<exec::Stmt*> inits;
-        for (VarSym* v : pou->frameAddressInits)
-            if (exec::Stmt* st = addressInitStmt(v)) inits.push_back(st);
+        for (const RuntimeInit& init : pou->frameAddressInits)
+            if (exec::Stmt* st = addressInitStmt(init)) inits.push_back(st);
         block->stmts.insert(block->stmts.begin(), inits.begin(), inits.end());
         for (auto& label : block->labels) label.second += inits.size();
     }

@@ -23,12 +23,25 @@ enum class Storage : uint8_t {
 };
 
 struct PouInfo;
+struct VarSym;
+
+// A declaration initialiser that is not known at compile time: an address
+// (`p : POINTER TO INT := ADR(x)`), an earlier variable (`b : INT := a * 2`)
+// or a function call. It becomes the assignment `target := value` (REF= for
+// a whole REFERENCE), run at initialisation in declaration order
+// (docs/decisions/0275).
+struct RuntimeInit {
+    VarSym* var = nullptr;
+    ast::ExprPtr target;              // an element or member of var; null: var itself
+    const ast::Expr* value = nullptr;
+};
 
 struct VarSym {
     std::string name;  // as declared
     ast::Loc loc;
     const Type* type = nullptr;
     ast::VarSection section = ast::VarSection::Var;
+    ast::Access access = ast::Access::Default;  // `VAR PUBLIC` ... of an Ed.3 CLASS or FB
     bool constant = false;
     bool retain = false;
     Storage storage = Storage::Self;
@@ -82,13 +95,13 @@ struct PouInfo {
     const ast::Property* property = nullptr;  // property accessor (METHOD): the property
     bool isSetter = false;
     int slot = -1;                            // METHOD: project-wide method slot of its name
-    // Instance variables initialised with an address (`p : POINTER TO INT := ADR(x)`):
-    // assigned once per instance before the first cycle (checker_fb_init.cpp).
-    std::vector<VarSym*> addressInits;
+    // Instance variables initialised at run time (an address, an earlier variable,
+    // a call): assigned once per instance before the first cycle (checker_fb_init.cpp).
+    std::vector<RuntimeInit> addressInits;
     exec::Stmt* addressInitCode = nullptr;
-    // FUNCTION / METHOD locals initialised with an address: assigned at the
+    // FUNCTION / METHOD locals initialised at run time: assigned at the
     // start of every call, as CODESYS does (checkBody).
-    std::vector<VarSym*> frameAddressInits;
+    std::vector<RuntimeInit> frameAddressInits;
 };
 
 // An expression after checking: its node, type, and what the checker knows

@@ -158,8 +158,10 @@ const std::vector<CodeInfo> kCatalogue = {
      "done := t(IN := start, PT := T#1s);", "t(IN := start, PT := T#1s);\ndone := t.Q;"},
     // ---- declarations (E04xx)
     {"E0401", K::Error, "a constant is needed",
-     "Array bounds, string lengths, CASE labels, initial values and VAR CONSTANT need values known when the "
-     "program is compiled: literals, constants, and operators on them.",
+     "Array bounds, string lengths, CASE labels and VAR CONSTANT need values known when the program is compiled: "
+     "literals, constants, and operators on them. So do the initial values of a FUNCTION's inputs, of VAR_STAT, "
+     "of variables AT an address and of TYPE members; other initial values may name earlier variables or call "
+     "functions (decision 0275).",
      "VAR n : INT; a : ARRAY[1..n] OF INT; END_VAR",
      "VAR CONSTANT N : INT := 10; END_VAR\nVAR a : ARRAY[1..N] OF INT; END_VAR"},
     {"E0402", K::Error, "wrong initial value",
@@ -242,6 +244,15 @@ const std::vector<CodeInfo> kCatalogue = {
      "The LTIME literal is above 2^63-1 ns (about 106751 days), the largest LTIME strun holds (TwinCAT's unsigned "
      "range goes further); it is taken as the largest value (decision 0092).",
      "t := LTIME#200000d;", "t := LTIME#100000d;"},
+    {"W0040", K::Warning, "an empty declaration",
+     "A ';' right after another one in a VAR block or STRUCT (`x : INT;;`) declares nothing. It is ignored "
+     "(decision 0276); remove it.",
+     "VAR x : INT;; END_VAR", "VAR x : INT; END_VAR"},
+    {"W0041", K::Warning, "TIME literal beyond strun's range",
+     "The TIME literal is above 2^31-1 ms (T#24d20h31m23s647ms), the largest TIME strun holds: strun's TIME is "
+     "signed so that durations may be negative, TwinCAT's and CODESYS' is unsigned up to T#49d17h2m47s295ms. It is "
+     "taken as the largest TIME (decision 0277); use LTIME for longer durations.",
+     "t := T#48d;", "t := T#24d; (* or an LTIME: LTIME#48d *)"},
     {"W0006", K::Warning, "the file is not valid UTF-8",
      "The file contains bytes that are not UTF-8 (often a Latin-1 file). They are replaced by U+FFFD; in comments "
      "that does no harm, in strings it changes the text. Save the file as UTF-8.",

@@ -37,7 +37,7 @@ const Rule kErrorRules[] = {
     {"E0105", "^undeclared function"},
     {"E0106", "^duplicate (declaration|global|member|method|property|type|variable|enumeration|program instance)"},
     {"E0108", "is a value of several enumerations|qualified_only|declared in several global lists"},
-    {"E0109", "is an internal variable of|is PRIVATE|only available inside a function block"},
+    {"E0109", "is an internal variable of|is PRIVATE|is PROTECTED in|only available inside a function block"},
     {"E0304", "is a function-block instance: call it"},
     {"E0107", "is a POU, not a variable|is a function, not a type|is a variable, not a function|cannot be called|"
               "is not a PROGRAM|is not a global function-block instance|is a type and"},
@@ -82,6 +82,8 @@ const Rule kWarningRules[] = {
     {"W0003", "^variable '.*' is never used"},
     {"W0004", "never assigns its result"},
     {"W0005", "beyond the largest LTIME"},
+    {"W0041", "beyond the largest TIME "},
+    {"W0040", "^an empty declaration"},
     {"W0006", "not valid UTF-8"},
     {"W0007", "is fixed at .* is ignored"},
     {"W0008", "is larger than the [0-9]+-byte address"},

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <set>
 #include <system_error>
 
 #include "interpreter/source/read_source.h"
 #include "interpreter/source/st_textual_sfc.h"
+#include "interpreter/source/twincat_plc_project.h"
 #include "interpreter/source/xml_inputs.h"
 
 namespace strun::source {
@@ -26,11 +28,37 @@ bool isTwinCatObject(const std::string& path) {
     return ext == ".tcpou" || ext == ".tcdut" || ext == ".tcgvl" || ext == ".tcio" || ext == ".tctto";
 }
 
+std::string lowerPath(const fs::path& path) {
+    std::string s = path.lexically_normal().generic_string();
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
 // The bytes of the project's files read so far, for the project size limit.
 std::size_t projectBytes(const SourceSet& sources) {
     std::size_t total = 0;
     for (int k = 0; k < sources.size(); ++k) total += sources.file(k).text.size();
     return total;
+}
+
+// A TwinCAT project folder with .plcproj files: the TwinCAT objects none of
+// them compiles are left out, as TwinCAT leaves them out of the build, and
+// the libraries they reference are noted (decision 0279). A .plcproj that
+// cannot be read, or lists no file, changes nothing.
+void applyPlcProjects(const std::vector<std::string>& plcProjects, std::vector<std::string>& found, SourceSet& sources) {
+    std::set<std::string> compiled;
+    bool listsFiles = false;
+    for (const std::string& path : plcProjects) {
+        std::string text, unused;
+        if (!readSourceText(path, projectBytes(sources), text, unused)) continue;
+        PlcProject project;
+        if (!readPlcProject(text, project, unused)) continue;
+        listsFiles = listsFiles || !project.compiled.empty();
+        for (const std::string& file : project.compiled) compiled.insert(lowerPath(fs::path(path).parent_path() / file));
+        for (const std::string& library : project.libraries) sources.addReferencedLibrary(library);
+    }
+    if (!listsFiles) return;
+    std::erase_if(found, [&](const std::string& f) { return isTwinCatObject(f) && !compiled.count(lowerPath(f)); });
 }
 
 // One file into the SourceSet: converted when it is XML.
@@ -92,14 +120,19 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
         if (fs::is_directory(path, ec)) {
             // Every source under the directory, in a stable (name) order; project
             // files of the IDEs (.plcproj, .tsproj, .sln, ...) are not sources.
-            std::vector<std::string> found;
+            std::vector<std::string> found, plcProjects;
             fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
-            for (; !ec && it != end; it.increment(ec))
-                if (it->is_regular_file(ec) && isProjectSource(it->path().string())) found.push_back(it->path().string());
+            for (; !ec && it != end; it.increment(ec)) {
+                if (!it->is_regular_file(ec)) continue;
+                if (isProjectSource(it->path().string())) found.push_back(it->path().string());
+                else if (lowerExtension(it->path().string()) == ".plcproj") plcProjects.push_back(it->path().string());
+            }
             if (ec) {
                 usageError = "cannot read directory '" + path + "'";
                 return false;
             }
+            std::sort(plcProjects.begin(), plcProjects.end());
+            applyPlcProjects(plcProjects, found, sources);
             if (found.empty()) {
                 usageError = "'" + path + "' contains no source files (.st, PLCopen .xml, .TcPOU, .TcDUT, .TcGVL, .TcIO)";
                 return false;

@@ -59,9 +59,15 @@ public:
     }
     const SourceFile& file(int index) const { return files_.at(static_cast<size_t>(index)); }
     int size() const { return static_cast<int>(files_.size()); }
+    // The libraries a TwinCAT .plcproj of the project references (decision 0279).
+    void addReferencedLibrary(const std::string& name) {
+        if (std::find(libraries_.begin(), libraries_.end(), name) == libraries_.end()) libraries_.push_back(name);
+    }
+    const std::vector<std::string>& referencedLibraries() const { return libraries_; }
 
 private:
     std::vector<SourceFile> files_;
+    std::vector<std::string> libraries_;
 };
 
 class CompileLog {
@@ -97,6 +103,12 @@ public:
         }));
     }
     size_t droppedCount() const { return dropped_; }
+    // Removes the messages from position `count` on (a check whose result was discarded).
+    void dropFrom(size_t count) {
+        if (count >= messages_.size()) return;
+        for (size_t i = count; i < messages_.size(); ++i) errors_ -= messages_[i].severity == Severity::Error;
+        messages_.resize(count);
+    }
     // Appends the messages of `other` (a log filled on another thread), in
     // order and within this log's cap.
     void append(CompileLog&& other) {

@@ -1,0 +1,74 @@
+#include "interpreter/project/missing_libraries.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <regex>
+
+namespace strun::project {
+
+namespace {
+
+bool sameName(const std::string& a, const std::string& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](unsigned char x, unsigned char y) {
+               return std::toupper(x) == std::toupper(y);
+           });
+}
+
+// The library a name error is about, as its help line says (Checker::suggest,
+// stdlib::libraryHint), when the project references it; "" otherwise.
+std::string missingLibraryOf(const Diagnostic& d, const std::vector<std::string>& referenced, std::string* name) {
+    static const std::regex hint("^'([^']+)' comes from library ([A-Za-z0-9_]+), which strun does not provide");
+    if (d.severity != Severity::Error) return "";
+    for (const std::string& h : d.help) {
+        std::smatch m;
+        if (!std::regex_search(h, m, hint)) continue;
+        for (const std::string& lib : referenced)
+            if (sameName(lib, m[2].str())) {
+                if (name) *name = m[1].str();
+                return lib;
+            }
+    }
+    return "";
+}
+
+}  // namespace
+
+void groupMissingLibraryNames(CompileLog& log, const std::vector<std::string>& referenced) {
+    if (referenced.empty()) return;
+    struct Group {
+        ast::Loc loc;
+        std::string code;
+        std::vector<std::string> names;
+    };
+    std::vector<std::pair<std::string, Group>> groups;  // in the order of their first error
+    for (const Diagnostic& d : log.messages()) {
+        std::string name;
+        const std::string lib = missingLibraryOf(d, referenced, &name);
+        if (lib.empty()) continue;
+        auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == lib; });
+        if (it == groups.end()) {
+            groups.push_back({lib, Group{d.loc, d.code, {}}});
+            it = groups.end() - 1;
+        }
+        auto& names = it->second.names;
+        if (std::none_of(names.begin(), names.end(), [&](const std::string& n) { return sameName(n, name); })) names.push_back(name);
+    }
+    if (groups.empty()) return;
+    log.eraseIf([&](const Diagnostic& d) { return !missingLibraryOf(d, referenced, nullptr).empty(); });
+    constexpr size_t kNamesShown = 8;
+    for (const auto& [lib, g] : groups) {
+        std::string list;
+        for (size_t k = 0; k < g.names.size() && k < kNamesShown; ++k) list += (k ? ", " : "") + g.names[k];
+        if (g.names.size() > kNamesShown) list += fmt::format(" and {} more", g.names.size() - kNamesShown);
+        log.error(g.loc, fmt::format("library {} is not available: {} {} unknown", lib, list, g.names.size() == 1 ? "is" : "are"))
+            .withCode(g.code)
+            .withHelp(fmt::format("the project's .plcproj references {}, which strun does not provide (docs/libraries.md lists "
+                                  "what it provides)",
+                                  lib));
+    }
+}
+
+}  // namespace strun::project

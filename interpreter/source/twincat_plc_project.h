@@ -1,0 +1,26 @@
+// A TwinCAT PLC project file (`.plcproj`, MSBuild XML): the objects it
+// compiles and the libraries it references (decision 0279). strun reads a
+// TwinCAT project folder by its objects (.TcPOU, .TcDUT, .TcGVL, .TcIO,
+// .TcTTO); the .plcproj says which of them TwinCAT builds and which
+// libraries the code may name.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace strun::source {
+
+struct PlcProject {
+    // `<Compile Include="POUs\MAIN.TcPOU">`: the paths, '/'-separated and
+    // relative to the folder of the .plcproj.
+    std::vector<std::string> compiled;
+    // `<PlaceholderReference Include="Tc2_MC2">`, `<LibraryReference
+    // Include="Tc2_MC2, 3.3.12.0 (Beckhoff Automation GmbH)">`: the names.
+    std::vector<std::string> libraries;
+};
+
+// False (with `error` set) when `text` is not well-formed XML with a
+// <Project> root.
+bool readPlcProject(const std::string& text, PlcProject& out, std::string& error);
+
+}  // namespace strun::source
