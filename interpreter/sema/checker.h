@@ -221,6 +221,7 @@ private:
     Checked checkCall(const ast::Expr& e, bool statement);
     Checked checkConversionCall(const std::string& upperName, const ast::Expr& e, bool& handled);
     Checked callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* instance);
+    exec::Stmt* bindConstantInOut(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc);
     exec::Stmt* bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc);
     exec::Stmt* bindOutput(const ast::Arg& arg, VarSym* p, Checked src);
     exec::Stmt* bindReference(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc);

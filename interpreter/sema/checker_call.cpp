@@ -419,6 +419,8 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
 // Binds a VAR_IN_OUT parameter `p` to the argument `v`: its address, or for
 // ARRAY[*] its address and bounds.
 exec::Stmt* Checker::bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc) {
+    if (p->constant && !(p->type->kind == TK::Array && p->type->flexible) && (!v.isPlace || (v.node && v.node->bitIndex() >= 0)))
+        return bindConstantInOut(p, v, slot, loc);
     if (!v.isPlace || (v.node && v.node->bitIndex() >= 0)) {
         error(diag::E0206, loc, fmt::format("VAR_IN_OUT '{}' needs a variable, not an expression", p->name));
         return nullptr;
@@ -444,6 +446,25 @@ exec::Stmt* Checker::bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, co
         return nullptr;
     }
     return pool().make<exec::BindAddress>(slot, v.node);
+}
+
+// VAR_IN_OUT CONSTANT given a value (a literal, an expression): the value is
+// stored in a caller temporary whose address is passed (CODESYS, TwinCAT). A
+// string keeps its own length, so a long literal is not cut to the formal's.
+exec::Stmt* Checker::bindConstantInOut(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc) {
+    Checked value = v;
+    const Type* t = p->type;
+    if (isStringType(v.type->kind) && v.type->kind == p->type->kind) {
+        t = v.type->maxLen > p->type->maxLen ? v.type : p->type;
+    } else {
+        value = coerce(v, p->type, loc, "VAR_IN_OUT CONSTANT");
+        if (!value.ok) return nullptr;
+    }
+    exec::Expr* temp = tempPlace(t);
+    auto* seq = pool().make<exec::Block>();
+    seq->stmts.push_back(storeTo(temp, t, value.node));
+    seq->stmts.push_back(pool().make<exec::BindAddress>(slot, temp));
+    return seq;
 }
 
 // `out => target` / `NOT out => target`: stores the output `src` into the caller's target.

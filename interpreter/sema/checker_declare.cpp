@@ -709,7 +709,8 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 if (block.section == ast::VarSection::Input || block.section == ast::VarSection::Output ||
                     block.section == ast::VarSection::InOut)
                     pou->params.push_back(v.get());
-                if (block.constant) {
+                // VAR_IN_OUT CONSTANT (CODESYS, TwinCAT): read-only by reference, no initial value.
+                if (block.constant && !byRef) {
                     if (!decl.init) error(diag::E0401, loc, fmt::format("CONSTANT '{}' needs an initial value", name));
                     else foldConstant(*v, decl);
                 }

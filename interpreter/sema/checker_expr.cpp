@@ -342,7 +342,11 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
         c.node = pool().make<exec::RefSlotPlace>(slot, site(loc), 1u);
     } else if (v->byRef) {
         exec::Expr* slot = directNode(pool(), d, v->offset, v->abs, types().elementary(TK::Void));
-        exec::Expr* ref = pool().make<exec::RefSlotPlace>(slot, site(loc), static_cast<uint32_t>(v->type->size));
+        // A VAR_IN_OUT CONSTANT string may be bound to a shorter string (or a
+        // literal's temporary) and is never written: only its first byte
+        // must lie in the project's memory (decision 0286).
+        const bool anyLength = v->constant && isStringType(v->type->kind);
+        exec::Expr* ref = pool().make<exec::RefSlotPlace>(slot, site(loc), anyLength ? 1u : static_cast<uint32_t>(v->type->size));
         c.node = loadFrom(ref, v->type);
     } else if (v->bit >= 0) {
         exec::Expr* byte = directNode(pool(), Checked::Direct::Abs, 0, v->abs, types().elementary(TK::Void));

@@ -13,5 +13,7 @@ void registerTc2SystemFileNatives(sema::Checker& ck);  // F_strun_File*: the FB_
 void registerTc2EtherCatNatives(sema::Checker& ck);    // DC time
 void registerTc2UtilitiesNatives(sema::Checker& ck);   // F_strun_FormatArg
 void registerTc2Mc2Natives(sema::Checker& ck);         // F_strun_TaskStartNanos: the simulated axes' clock
+void registerTc3JsonXmlNatives(sema::Checker& ck);     // F_strun_Json, F_strun_JsonReal: the DOM parser and SAX reader
+void registerTc3JsonSymbolNatives(sema::Checker& ck);  // F_strun_JsonSymbol: FB_JsonReadWriteDataType
 
 }  // namespace strun::stdlib::bind

@@ -11,6 +11,7 @@ void registerLibraryBuiltins(sema::Checker& checker, const std::vector<std::stri
         else if (library == "Tc2_EtherCAT") bind::registerTc2EtherCatNatives(checker);
         else if (library == "Tc2_Utilities") bind::registerTc2UtilitiesNatives(checker);
         else if (library == "Tc2_MC2") bind::registerTc2Mc2Natives(checker);
+        else if (library == "Tc3_JsonXml") bind::registerTc3JsonXmlNatives(checker);
     }
 }
 
