@@ -119,7 +119,7 @@ public:
     // The statistics of every task, in task order, into `out` (resized; no
     // allocation once it has the size). Scheduler thread, or after run().
     void copyTaskStats(std::vector<TaskStats>& out) const;
-    PlcTime now() const { return machine_.now; }
+    PlcTime now() const { return machine_.time(); }
     uint64_t cyclesOf(size_t task) const { return tasks_[task].cycles; }
     // Activations started, all tasks together (the benchmark's task switches).
     uint64_t activations() const { return activations_; }

@@ -39,6 +39,11 @@ inline size_t frameImageSize(uint32_t frameSize) { return std::max(frameSize, kS
 struct PouCode {
     std::string name;
     Block* body = nullptr;
+    // `body` held inline when it has at most two statements and no labels
+    // (decision 0266): set by the checker once the body is final; a POU
+    // without it runs its Block.
+    Body inlineBody;
+    bool hasInlineBody = false;
     uint32_t frameSize = 0;
     std::vector<uint8_t> frameInit;  // initial image of the frame (locals with their initial values), frameImageSize bytes
     uint32_t resultOffset = 0;       // FUNCTION / METHOD result, in the frame
@@ -77,7 +82,8 @@ inline void runBody(Ctx& c, const PouCode& code, uint8_t* inst, uint8_t* f) {
         c.userPou = savedPou;
     }
     ++c.depth;
-    code.body->exec(c);
+    if (code.hasInlineBody) code.inlineBody.run(c);
+    else code.body->exec(c);
     --c.depth;
     if (entersLibrary) {
         c.userStmt = nullptr;

@@ -507,6 +507,9 @@ void Checker::checkBody(PouInfo* pou) {
         block->stmts.insert(block->stmts.begin(), inits.begin(), inits.end());
         for (auto& label : block->labels) label.second += inits.size();
     }
+    // The body is final now: a short one runs inline in every call (decision 0266).
+    pou->code->inlineBody = exec::Body(pou->code->body);
+    pou->code->hasInlineBody = !pou->code->inlineBody.block;
     for (const auto& [loc, name] : pendingJumps_)
         if (!definedLabels_.count(upper(name))) error(loc, fmt::format("JMP to undefined label '{}'", name));
     if (pou->kind == ast::PouKind::Function && pou->result && !assignedResult_ && !libraryFiles_.count(pou->ast->loc.file))
