@@ -153,7 +153,7 @@ struct Machine {
     // PLC time as a countdown (decision 0265). Every statement boundary and
     // loop back-edge ticks: one decrement of `left` and one branch. `left`
     // counts the ticks that may still pass before PLC time can reach the
-    // deadline; when it runs out, slowTick() works out the time (each tick
+    // deadline; when it runs out, countdownExpired() works out the time (each tick
     // still costs stmtCost on the virtual clock), calls onAttention() if the
     // deadline is reached, and grants the next countdown. PLC time itself is
     // computed when read: time().
@@ -174,7 +174,7 @@ struct Machine {
 
     // At every statement boundary and loop back-edge. True: abort the activation.
     inline bool tick() {
-        if (__builtin_expect(--left < 0, 0)) return slowTick();
+        if (__builtin_expect(--left < 0, 0)) return countdownExpired();
         return false;
     }
     // The current PLC time (virtual clock: base + stmtCost per tick since).
@@ -200,6 +200,22 @@ struct Machine {
     // From another thread or a signal handler: lowers the deadline only (lock
     // free); the running code sees it within kTickPoll statements.
     void requestAttentionFromOtherThread() { deadline.store(std::numeric_limits<PlcTime>::min(), std::memory_order_relaxed); }
+    // Make the next tick take the slow path without touching time or the
+    // deadline: the interpreter unwinding an aborted activation stops there.
+    void expireCountdown() {
+        base_ = time();
+        left = granted_ = 0;
+    }
+    // `left` went below 0: this tick is the (granted_ + 1)-th since base_.
+    // Calls onAttention() when the deadline is reached; true: abort.
+    [[gnu::noinline, gnu::cold]] bool countdownExpired() {
+        base_ = time();
+        left = granted_ = 0;
+        bool abort = false;
+        if (base_ >= deadline.load(std::memory_order_relaxed)) abort = handler->onAttention();
+        regrant();
+        return abort;
+    }
 
 private:
     PlcTime base_ = 0;     // PLC time when `left` was `granted_`
@@ -216,15 +232,6 @@ private:
         else if (stmtCost <= 0) k = kTickPoll;
         else k = std::min<int64_t>((d - t - 1) / stmtCost, kTickPoll);  // ceil((d - t) / cost) - 1 ticks pass below d
         left = granted_ = k;
-    }
-    // `left` went below 0: this tick is the (granted_ + 1)-th since base_.
-    [[gnu::noinline, gnu::cold]] bool slowTick() {
-        base_ = time();
-        left = granted_ = 0;
-        bool abort = false;
-        if (base_ >= deadline.load(std::memory_order_relaxed)) abort = handler->onAttention();
-        regrant();
-        return abort;
     }
 };
 

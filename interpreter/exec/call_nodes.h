@@ -132,7 +132,8 @@ struct ArgBind {
     Expr* value = nullptr;  // Int / Bool / F32 / F64
 };
 
-// Binds the arguments in order into the callee frame `f` (Ctx::pending is `f`).
+// Binds the arguments in order into the callee frame `f` (or, for a
+// FUNCTION_BLOCK call, into the instance `f`).
 inline void bindArgs(Ctx& c, uint8_t* f, const std::vector<ArgBind>& binds) {
     using H = ArgBind::How;
     for (const ArgBind& a : binds) {
@@ -188,6 +189,13 @@ struct CallPou final : Expr {
         }
         uint8_t* f = pushFrame(c, *code, site);
         if (!f) return nullptr;
+        if (directInputs && outputs.empty()) {
+            // Lean call (decision 0267): nothing reads Ctx::pending.
+            bindArgs(c, f, binds);
+            runBody(c, *code, inst, f);
+            c.stackTop = f;
+            return f;
+        }
         uint8_t* savedPending = c.pending;
         c.pending = f;
         if (directInputs) bindArgs(c, f, binds);
@@ -269,11 +277,21 @@ struct CallFbStmt final : Stmt {
     PouCode* body = nullptr;
     Expr* instance = nullptr;
     std::vector<Stmt*> inputs;
+    // The inputs as direct stores into the instance (offsets in it), when
+    // every input has one and the instance is a plain variable (decision 0267).
+    std::vector<ArgBind> binds;
+    bool directInputs = false;
     std::vector<Stmt*> outputs;
     Site site;
     Flow exec(Ctx& c) override {
-        for (Stmt* s : inputs) s->exec(c);
-        uint8_t* inst = instance->addr(c);
+        uint8_t* inst;
+        if (directInputs) {
+            inst = instance->addr(c);
+            bindArgs(c, inst, binds);
+        } else {
+            for (Stmt* s : inputs) s->exec(c);
+            inst = instance->addr(c);
+        }
         uint8_t* f = pushFrame(c, *body, site);
         if (!f) return Flow::Next;
         runBody(c, *body, inst, f);

@@ -4,13 +4,32 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 
 #include "interpreter/exec/operator_nodes.h"
 
 namespace strun::exec {
 
+// The tick's slow path (the countdown ran out, decision 0265). While an
+// activation is being aborted every tick stops it, without costing time:
+// aborting expires the countdown (Machine::expireCountdown), so a statement
+// that returned normally from an aborted call is followed by no other
+// (decision 0267); Block does not test Ctx::aborting per statement.
+[[gnu::noinline, gnu::cold]] inline bool tickExpired(Ctx& c) {
+    if (c.aborting) {
+        ++c.m->left;  // not a tick: the countdown stays expired
+        return true;
+    }
+    if (c.m->countdownExpired()) {
+        c.aborting = true;
+        c.m->expireCountdown();
+        return true;
+    }
+    return false;
+}
+
 inline bool tickAborts(Ctx& c) {
-    if (__builtin_expect(c.m->tick(), 0)) { c.aborting = true; return true; }
+    if (__builtin_expect(--c.m->left < 0, 0)) return tickExpired(c);
     return false;
 }
 
@@ -30,21 +49,17 @@ struct Block final : Stmt {
                 }
                 return f;
             }
-            if (__builtin_expect(c.aborting, 0)) return Flow::Abort;
         }
         return Flow::Next;
     }
 };
 
-// One statement of a list: the tick before it, the statement, and the
-// checks Block::exec makes after it (a call aborted inside it ends the list).
+// One statement of a list, as Block::exec runs it: the tick before it, then
+// the statement.
 inline Flow runOne(Ctx& c, Stmt* s) {
     c.stmt = s;
     if (tickAborts(c)) return Flow::Abort;
-    Flow f = s->exec(c);
-    if (__builtin_expect(f != Flow::Next, 0)) return f;
-    if (__builtin_expect(c.aborting, 0)) return Flow::Abort;
-    return Flow::Next;
+    return s->exec(c);
 }
 
 // The body of a loop, an IF branch or a CASE branch, held by its statement
@@ -216,8 +231,39 @@ struct CaseStmt final : Stmt {
     std::vector<Entry> entries;  // in source order: the first match wins
     std::vector<Body> blocks;
     Body elseBlock;
+    // Dense labels (decision 0268): the branch of every selector value in
+    // [tableLo, tableLo + table.size()), kNoBranch for ELSE; empty: scan.
+    static constexpr uint16_t kNoBranch = 0xFFFF;
+    int64_t tableLo = 0;
+    std::vector<uint16_t> table;
+    // Builds `table` when the labels span at most kMaxTable values.
+    void buildTable() {
+        static constexpr int64_t kMaxTable = 1024;
+        table.clear();
+        if (isUnsigned64 || entries.empty() || blocks.size() >= kNoBranch) return;
+        int64_t lo = std::numeric_limits<int64_t>::max(), hi = std::numeric_limits<int64_t>::min();
+        for (const Entry& e : entries) {
+            if (e.lo > e.hi) continue;
+            lo = std::min(lo, e.lo);
+            hi = std::max(hi, e.hi);
+        }
+        int64_t span = 0;
+        if (lo > hi || __builtin_sub_overflow(hi, lo, &span) || span >= kMaxTable) return;
+        table.assign(static_cast<size_t>(hi - lo + 1), kNoBranch);
+        tableLo = lo;
+        for (const Entry& e : entries)
+            for (int64_t v = e.lo; v <= e.hi && e.lo <= e.hi; ++v) {
+                uint16_t& slot = table[static_cast<size_t>(v - lo)];
+                if (slot == kNoBranch) slot = static_cast<uint16_t>(e.block);  // the first match wins
+            }
+    }
     Flow exec(Ctx& c) override {
         int64_t v = selector->i(c);
+        if (!table.empty()) {
+            uint64_t k = static_cast<uint64_t>(v) - static_cast<uint64_t>(tableLo);
+            if (k < table.size() && table[k] != kNoBranch) return blocks[table[k]].run(c);
+            return elseBlock.run(c);
+        }
         for (const Entry& e : entries) {
             bool in = isUnsigned64 ? (static_cast<uint64_t>(v) >= static_cast<uint64_t>(e.lo) && static_cast<uint64_t>(v) <= static_cast<uint64_t>(e.hi))
                                    : (v >= e.lo && v <= e.hi);

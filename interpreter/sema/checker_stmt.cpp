@@ -255,8 +255,8 @@ exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
         return pool().make<exec::CondStmt>(value.node, set);
     }
     if (s.kind == ast::StmtKind::RefAssign || s.kind == ast::StmtKind::TryAssign) return checkRefAssign(s);
-    // A call inside that was aborted (watchdog / STOP) ends the statement's
-    // Block: it checks Ctx::aborting after every statement.
+    // A call inside that was aborted (watchdog / STOP) stops the activation
+    // at the next tick (decision 0267).
     return assignChecked(target, value, s.loc);
 }
 
@@ -363,6 +363,7 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
         n->blocks.push_back(checkBlock(br.body));
     }
     if (s.elseBlock) n->elseBlock = checkBlock(*s.elseBlock);
+    n->buildTable();
     return n;
 }
 
