@@ -1,13 +1,18 @@
 #!/usr/bin/env bash
 # Runs every benchmark workload on strun and on Lua 5.4 and prints, per
 # workload, the best wall-clock time of each side and the ratio strun/Lua.
-# Fails (exit 1) when a run fails or the two checksums differ.
+# When luajit is installed, also LuaJIT's interpreter (luajit -joff, on
+# NAME.luajit.lua when there is one: Lua 5.1 has no //), and when gcc is
+# installed and the workload has a C twin NAME.c, that twin at gcc -O2.
+# Fails (exit 1) when a run fails or a checksum differs from strun's.
 #
 # usage: benchmarks/run.sh [path-to-strun] [workload...]
 #   path-to-strun  default build/strun
 #   workload       names from benchmarks/workloads (default: all, in the order below)
 # environment: BENCH_REPEATS (default 3) runs per side, best one counts;
 #              LUA (default lua5.4) the Lua interpreter;
+#              LUAJIT (default luajit; empty: no LuaJIT column), CC (default
+#              gcc; empty: no C column);
 #              BENCH_INSTRUCTIONS=1 also counts the instructions each side
 #              executes (valgrind --tool=callgrind; slow, but exact where wall
 #              times on a shared machine are noisy).
@@ -19,8 +24,13 @@ strun=${1:-build/strun}
 shift $(( $# > 0 ? 1 : 0 ))
 repeats=${BENCH_REPEATS:-3}
 lua=${LUA:-lua5.4}
+luajit=${LUAJIT-luajit}
+cc=${CC-gcc}
+if [[ -n "$luajit" ]] && ! command -v "$luajit" >/dev/null 2>&1; then luajit=""; fi
+if [[ -n "$cc" ]] && ! command -v "$cc" >/dev/null 2>&1; then cc=""; fi
 
-default_workloads=(int_loops real_math sort sieve fb_calls strings state_machine func_calls conversions fb_methods collatz)
+default_workloads=(int_loops real_math sort sieve fb_calls strings state_machine func_calls conversions fb_methods collatz
+                   many_args fb_io nested_arith bubble_sort string_build case_machine)
 if (( $# > 0 )); then workloads=("$@"); else workloads=("${default_workloads[@]}"); fi
 
 if [[ ! -x "$strun" ]]; then
@@ -85,10 +95,11 @@ fi
 log_sum=0
 log_count=0
 
-echo "strun: $strun   lua: $($lua -v 2>&1 | head -n1 | cut -d" " -f1-2)   best of $repeats runs each"
-row_format="%-14s %9s %9s %13s  %s\n"
-printf "$row_format" "workload" "strun s" "lua s" "strun/lua" "checksum"
-printf "$row_format" "--------" "-------" "-----" "---------" "--------"
+echo "strun: $strun   lua: $($lua -v 2>&1 | head -n1 | cut -d" " -f1-2)   luajit -joff: ${luajit:-none}   C: ${cc:+$cc -O2}   best of $repeats runs each"
+row_format="%-14s %9s %9s %13s %9s %10s %9s %8s  %s\n"
+printf "$row_format" "workload" "strun s" "lua s" "strun/lua" "luajit s" "strun/jit" "C s" "strun/C" "checksum"
+printf "$row_format" "--------" "-------" "-----" "---------" "--------" "---------" "---" "-------" "--------"
+jit_log_sum=0 jit_log_count=0 c_log_sum=0 c_log_count=0
 
 failed=0
 for name in "${workloads[@]}"; do
@@ -105,7 +116,7 @@ for name in "${workloads[@]}"; do
         failed=1
         strun_col=$( (( strun_rc == 0 )) && seconds "$strun_ns" || echo "exit $strun_rc")
         lua_col=$( (( lua_rc == 0 )) && seconds "$lua_ns" || echo "exit $lua_rc")
-        printf "$row_format" "$name" "$strun_col" "$lua_col" "-" "FAILED"
+        printf "$row_format" "$name" "$strun_col" "$lua_col" "-" "" "" "" "" "FAILED"
         (( strun_rc != 0 )) && sed -n '1,5s/^/    strun: /p' "$scratch/strun.err"
         (( lua_rc != 0 )) && sed -n '1,5s/^/    lua: /p' "$scratch/lua.err"
         continue
@@ -118,9 +129,41 @@ for name in "${workloads[@]}"; do
         failed=1
         verdict="DIFFERS: strun ${values% *}, lua ${values#* }"
     fi
-    printf "$row_format" "$name" "$(seconds "$strun_ns")" "$(seconds "$lua_ns")" "$ratio" "$verdict"
     log_sum=$(awk -v a="$log_sum" -v r="$ratio" 'BEGIN { printf "%.6f", a + log(r) }')
     log_count=$(( log_count + 1 ))
+
+    # LuaJIT's interpreter and the C twin: their output must be strun's checksum too.
+    jit_col="-" jit_ratio="-" c_col="-" c_ratio="-"
+    if [[ -n "$luajit" ]]; then
+        jit_file="$workload_dir/$name.luajit.lua"
+        [[ -f "$jit_file" ]] || jit_file=$lua_file
+        best_time "$scratch/jit.out" "$scratch/jit.err" "$luajit" -joff "$jit_file"
+        if (( run_rc == 0 )) && "$lua" "$bench_dir/same_checksum.lua" "$scratch/strun.json" "$scratch/jit.out" >/dev/null; then
+            jit_col=$(seconds "$best_ns")
+            jit_ratio=$(awk -v s="$strun_ns" -v l="$best_ns" 'BEGIN { printf "%.2f", s / l }')
+            jit_log_sum=$(awk -v a="$jit_log_sum" -v r="$jit_ratio" 'BEGIN { printf "%.6f", a + log(r) }')
+            jit_log_count=$(( jit_log_count + 1 ))
+        else
+            failed=1 jit_col="FAILED"
+        fi
+    fi
+    if [[ -n "$cc" && -f "$workload_dir/$name.c" ]]; then
+        if "$cc" -O2 -o "$scratch/$name.native" "$workload_dir/$name.c" 2>"$scratch/cc.err"; then
+            best_time "$scratch/c.out" "$scratch/c.err" "$scratch/$name.native"
+            if (( run_rc == 0 )) && "$lua" "$bench_dir/same_checksum.lua" "$scratch/strun.json" "$scratch/c.out" >/dev/null; then
+                c_col=$(seconds "$best_ns")
+                c_ratio=$(awk -v s="$strun_ns" -v l="$best_ns" 'BEGIN { printf "%.1f", s / l }')
+                c_log_sum=$(awk -v a="$c_log_sum" -v s="$strun_ns" -v l="$best_ns" 'BEGIN { printf "%.6f", a + log(s / l) }')
+                c_log_count=$(( c_log_count + 1 ))
+            else
+                failed=1 c_col="FAILED"
+            fi
+        else
+            failed=1 c_col="FAILED"
+            sed -n '1,5s/^/    cc: /p' "$scratch/cc.err"
+        fi
+    fi
+    printf "$row_format" "$name" "$(seconds "$strun_ns")" "$(seconds "$lua_ns")" "$ratio" "$jit_col" "$jit_ratio" "$c_col" "$c_ratio" "$verdict"
     if [[ "$count_instructions" == 1 ]]; then
         strun_ir=$(instructions "$strun" run --virtual --stmt-cost 0ns --cycles 1 --task Main --dump "$st_file")
         lua_ir=$(instructions "$lua" "$lua_file")
@@ -128,10 +171,11 @@ for name in "${workloads[@]}"; do
     fi
 done
 if (( log_count > 0 )); then
-    printf "$row_format" "geomean" "" "" "$(awk -v a="$log_sum" -v n="$log_count" 'BEGIN { printf "%.2f", exp(a / n) }')" ""
+    geo() { (( $2 > 0 )) && awk -v a="$1" -v n="$2" 'BEGIN { printf "%.2f", exp(a / n) }' || echo "-"; }
+    printf "$row_format" "geomean" "" "" "$(geo "$log_sum" "$log_count")" "" "$(geo "$jit_log_sum" "$jit_log_count")" "" "$(geo "$c_log_sum" "$c_log_count")" ""
 fi
 
 if (( failed )); then
-    echo "run.sh: at least one workload failed or disagreed with Lua" >&2
+    echo "run.sh: at least one workload failed or disagreed with strun's checksum" >&2
     exit 1
 fi

@@ -1,10 +1,11 @@
 // The state shared between the interpreter and the task runtime while a
 // project runs. The interpreter touches it at every statement boundary
-// (Machine::tick), so the hot part is two integers and one comparison; all
+// (Machine::tick), so the hot part is one decrement and one branch; all
 // decisions (preemption, watchdog, fault handling, stop) happen behind
 // AttentionHandler::onAttention(), which the scheduler implements.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <new>
 #include <utility>
@@ -98,7 +99,7 @@ struct ProcessImage {
 class AttentionHandler {
 public:
     virtual ~AttentionHandler() = default;
-    // Called by the interpreter when Machine::now >= Machine::deadline at a
+    // Called by the interpreter when Machine::time() >= Machine::deadline at a
     // statement boundary. May run higher-priority tasks nested (preemption)
     // before returning. Returns true when the current activation must be
     // aborted (watchdog, STOP): the interpreter then unwinds to the task body.
@@ -142,14 +143,29 @@ public:
     virtual bool setCurrentTaskInterval(PlcTime) { return false; }
 };
 
+// How many statements may run between two looks at the deadline when the
+// countdown alone would allow more: a deadline lowered from another thread
+// (the real clock's timer, a Ctrl-C stop request) is seen within this many
+// statements (decision 0265).
+constexpr int64_t kTickPoll = 256;
+
 struct Machine {
-    // Virtual clock: advanced by stmtCost at every statement. Real clock:
-    // stmtCost is 0 and the scheduler refreshes `now` in onAttention.
-    PlcTime now = 0;
+    // PLC time as a countdown (decision 0265). Every statement boundary and
+    // loop back-edge ticks: one decrement of `left` and one branch. `left`
+    // counts the ticks that may still pass before PLC time can reach the
+    // deadline; when it runs out, countdownExpired() works out the time (each tick
+    // still costs stmtCost on the virtual clock), calls onAttention() if the
+    // deadline is reached, and grants the next countdown. PLC time itself is
+    // computed when read: time().
+    int64_t left = 0;
+    // Virtual clock: the cost of one statement. Real clock: 0, and the
+    // scheduler sets the time (setTime) from the clock in onAttention.
     PlcTime stmtCost = 0;
-    // When now >= deadline the interpreter calls handler->onAttention(). The
-    // scheduler lowers it (from another thread on the real clock) to ask for
-    // attention at the next statement boundary.
+    // When PLC time >= deadline at a tick the interpreter calls
+    // handler->onAttention(). On the interpreter's thread it changes only
+    // through setDeadline / requestAttention (which grant a new countdown);
+    // another thread only lowers it (requestAttentionFromOtherThread), seen
+    // within kTickPoll statements.
     std::atomic<PlcTime> deadline{kNever};
     AttentionHandler* handler = nullptr;
     ProcessImage image;
@@ -158,12 +174,65 @@ struct Machine {
 
     // At every statement boundary and loop back-edge. True: abort the activation.
     inline bool tick() {
-        now += stmtCost;
-        if (__builtin_expect(now >= deadline.load(std::memory_order_relaxed), 0)) return handler->onAttention();
+        if (__builtin_expect(--left < 0, 0)) return countdownExpired();
         return false;
     }
-    // Make the next tick call onAttention().
-    void requestAttention() { deadline.store(std::numeric_limits<PlcTime>::min(), std::memory_order_relaxed); }
+    // The current PLC time (virtual clock: base + stmtCost per tick since).
+    PlcTime time() const { return base_ + (granted_ - left) * stmtCost; }
+    void setTime(PlcTime t) {
+        base_ = t;
+        granted_ = left;
+        regrant();
+    }
+    void setStmtCost(PlcTime cost) {
+        base_ = time();
+        granted_ = left;
+        stmtCost = cost;
+        regrant();
+    }
+    // On the interpreter's (scheduler's) thread.
+    void setDeadline(PlcTime at) {
+        deadline.store(at, std::memory_order_relaxed);
+        regrant();
+    }
+    // Make the next tick call onAttention() (interpreter's thread).
+    void requestAttention() { setDeadline(std::numeric_limits<PlcTime>::min()); }
+    // From another thread or a signal handler: lowers the deadline only (lock
+    // free); the running code sees it within kTickPoll statements.
+    void requestAttentionFromOtherThread() { deadline.store(std::numeric_limits<PlcTime>::min(), std::memory_order_relaxed); }
+    // Make the next tick take the slow path without touching time or the
+    // deadline: the interpreter unwinding an aborted activation stops there.
+    void expireCountdown() {
+        base_ = time();
+        left = granted_ = 0;
+    }
+    // `left` went below 0: this tick is the (granted_ + 1)-th since base_.
+    // Calls onAttention() when the deadline is reached; true: abort.
+    [[gnu::noinline, gnu::cold]] bool countdownExpired() {
+        base_ = time();
+        left = granted_ = 0;
+        bool abort = false;
+        if (base_ >= deadline.load(std::memory_order_relaxed)) abort = handler->onAttention();
+        regrant();
+        return abort;
+    }
+
+private:
+    PlcTime base_ = 0;     // PLC time when `left` was `granted_`
+    int64_t granted_ = 0;
+
+    // Folds the ticks counted so far into base_ and grants the ticks until
+    // the first one whose time reaches the deadline (at most kTickPoll).
+    void regrant() {
+        const PlcTime t = time();
+        base_ = t;
+        const PlcTime d = deadline.load(std::memory_order_relaxed);
+        int64_t k;
+        if (t >= d) k = 0;  // the very next tick calls onAttention()
+        else if (stmtCost <= 0) k = kTickPoll;
+        else k = std::min<int64_t>((d - t - 1) / stmtCost, kTickPoll);  // ceil((d - t) / cost) - 1 ticks pass below d
+        left = granted_ = k;
+    }
 };
 
 }  // namespace strun::rt

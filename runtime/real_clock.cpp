@@ -77,7 +77,7 @@ void AttentionTimer::loop() {
         PlcTime now = monotonicNanos() - origin_;
         if (now >= at) {
             // Consume the moment so the thread does not poke again until re-armed.
-            if (wakeAt_.compare_exchange_strong(at, kNever)) machine_.requestAttention();
+            if (wakeAt_.compare_exchange_strong(at, kNever)) machine_.requestAttentionFromOtherThread();
             continue;
         }
         auto until = std::chrono::steady_clock::time_point(std::chrono::nanoseconds(origin_ + at));

@@ -4,7 +4,7 @@
 // interpreter thread is busy running a task.
 //
 // The handshake (docs/decisions/0012-real-clock-handshake.md):
-//  * the timer thread only ever LOWERS the deadline (Machine::requestAttention);
+//  * the timer thread only ever LOWERS the deadline (Machine::requestAttentionFromOtherThread);
 //  * the interpreter thread raises it only at the top of onAttention, with an
 //    atomic exchange, and only then reads the clock and handles everything
 //    due — so a poke that lands before the exchange is covered by that clock

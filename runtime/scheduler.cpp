@@ -124,7 +124,7 @@ Scheduler::~Scheduler() = default;
 void Scheduler::requestStop() {
     stopRequested_.store(true);
     // Lock-free atomics only: this runs inside a signal handler.
-    if (Machine* machine = runningMachine_.load()) machine->deadline.store(std::numeric_limits<PlcTime>::min());
+    if (Machine* machine = runningMachine_.load()) machine->requestAttentionFromOtherThread();
 }
 
 // ---------------------------------------------------------------- the run
@@ -136,17 +136,17 @@ PlcState Scheduler::run() {
     machine_.handler = options_.front ? options_.front : this;
     for (const ImageArea* area : {&machine_.image.inputs, &machine_.image.outputs, &machine_.image.memory})
         machine_.memory.add(area->data(), area->size());
-    machine_.now = 0;
-    machine_.deadline.store(kNever);
+    machine_.setTime(0);
+    machine_.setDeadline(kNever);
     // PLC time ends at kPlcTimeLimit (about 146 years) even without --for:
     // with --stmt-cost at most kMaxStmtCost, Machine::tick can then never
     // overflow the clock (docs/limits.md).
     forEnd_ = std::min(options_.duration.value_or(kNever), kPlcTimeLimit);
     if (options_.virtualClock) {
-        machine_.stmtCost = std::max<PlcTime>(options_.stmtCost, 1);
+        machine_.setStmtCost(std::max<PlcTime>(options_.stmtCost, 1));
         calendarBase_ = options_.startCalendarNanos;
     } else {
-        machine_.stmtCost = 0;
+        machine_.setStmtCost(0);
         // --realtime: lock memory and switch to SCHED_FIFO *before* PLC time
         // starts. mlockall faults in every mapped page (the reserved frame
         // stacks, the heap's top pad): about 10 ms that, counted as PLC
@@ -203,17 +203,17 @@ PlcState Scheduler::run() {
 
     if (options_.live) options_.live->runStarting(*this);
     mainLoop();
-    if (state_ == PlcState::Run && machine_.now >= kPlcTimeLimit && (!options_.duration || *options_.duration > kPlcTimeLimit))
+    if (state_ == PlcState::Run && machine_.time() >= kPlcTimeLimit && (!options_.duration || *options_.duration > kPlcTimeLimit))
         (options_.warnings ? *options_.warnings : std::cerr)
             << "strun: warning: PLC time reached its limit of " << formatDuration(kPlcTimeLimit) << "; the run ends\n";
 
     // A fault stop ends the run at the fault, not at the statement boundary where the task unwound.
-    endTime_ = state_ == PlcState::Run ? machine_.now : stopTime_;
-    if (options_.observer) options_.observer->runEnded(std::max(endTime_, machine_.now));
+    endTime_ = state_ == PlcState::Run ? machine_.time() : stopTime_;
+    if (options_.observer) options_.observer->runEnded(std::max(endTime_, machine_.time()));
     timer_.reset();
     runningMachine_.store(nullptr);
     stopRequested_.store(false);
-    machine_.deadline.store(kNever);
+    machine_.setDeadline(kNever);
     return state_;
 }
 
@@ -222,7 +222,7 @@ void Scheduler::mainLoop() {
         refreshNow();
         if (stopRequested_.load()) ending_ = true;
         if (ending_) return;
-        if (machine_.now >= forEnd_) return;
+        if (machine_.time() >= forEnd_) return;
         if (options_.live) [[unlikely]] {
             if (!liveHold()) return;
         }
@@ -247,7 +247,7 @@ void Scheduler::idle() {
         // an event or status trigger, so nothing can ever run again. End here
         // instead of sampling (or sleeping) forever (docs/limits.md).
         std::ostream& out = options_.warnings ? *options_.warnings : std::cerr;
-        out << "strun: warning: no task can ever run again; the run ends at " << formatDuration(machine_.now);
+        out << "strun: warning: no task can ever run again; the run ends at " << formatDuration(machine_.time());
         if (cyclesTask_) out << " (" << cyclesTask_->spec.name << " completed " << cyclesTask_->cycles << " of " << *options_.cycles << " cycles)";
         out << '\n';
         ending_ = true;
@@ -255,7 +255,7 @@ void Scheduler::idle() {
     }
     if (options_.virtualClock) {
         if (next != kNever) {
-            machine_.now = std::max(machine_.now, next);
+            machine_.setTime(std::max(machine_.time(), next));
             return;
         }
         // Nothing can ever happen again: wait (without spinning) to be stopped.
@@ -263,12 +263,12 @@ void Scheduler::idle() {
         return;
     }
     timer_->arm(kNever);
-    PlcTime wake = std::min(next, machine_.now + kMaxIdleSleep);
+    PlcTime wake = std::min(next, machine_.time() + kMaxIdleSleep);
     sleepUntilMonotonic(monotonicOrigin_ + wake);
 }
 
 void Scheduler::refreshNow() {
-    if (!options_.virtualClock) machine_.now = monotonicNanos() - monotonicOrigin_;
+    if (!options_.virtualClock) machine_.setTime(monotonicNanos() - monotonicOrigin_);
 }
 
 // ---------------------------------------------------------------- releases
@@ -279,7 +279,7 @@ void Scheduler::refreshNow() {
 // others begin when its first cycle ends (onMasterEnd).
 void Scheduler::startRegularTasks() {
     regularStarted_ = true;
-    PlcTime now = machine_.now;
+    PlcTime now = machine_.time();
     for (TaskRun& task : tasks_)
         if (!masterOnlyPhase_ || &task == master_) startTask(task, now);
     if (sampleOnTicks()) nextSample_ = (now / profile_.schedulerTick + 1) * profile_.schedulerTick;
@@ -294,7 +294,7 @@ void Scheduler::onMasterEnd() {
             if (task.spec.systemSlot >= 0) task.inhibited = !system_->taskActive(task.spec.systemSlot);
     if (!masterOnlyPhase_) return;
     masterOnlyPhase_ = false;
-    PlcTime now = machine_.now;
+    PlcTime now = machine_.time();
     for (TaskRun& task : tasks_)
         if (&task != master_) startTask(task, now);
     if (sampleOnTicks()) nextSample_ = (now / profile_.schedulerTick + 1) * profile_.schedulerTick;
@@ -332,13 +332,13 @@ PlcTime Scheduler::calendarToPlc(int64_t calendar) const {
     if (calendar == kNever) return kNever;
     // Checked: an AT of LDT#1700-01-01 is far before any base; one past the end never comes.
     PlcTime plc = 0;
-    if (__builtin_sub_overflow(calendar, calendarBase_, &plc)) return calendar < calendarBase_ ? machine_.now : kNever;
-    return std::max<PlcTime>(plc, machine_.now);
+    if (__builtin_sub_overflow(calendar, calendarBase_, &plc)) return calendar < calendarBase_ ? machine_.time() : kNever;
+    return std::max<PlcTime>(plc, machine_.time());
 }
 
 // Releases everything whose moment has come, in time order (ties: declaration order).
 void Scheduler::processDue() {
-    PlcTime now = machine_.now;
+    PlcTime now = machine_.time();
     if (earliestRelease_ <= now) {
         if (options_.stimulus) options_.stimulus->applyInputsDue(now, options_.trace);
         for (;;) {
@@ -410,7 +410,7 @@ bool Scheduler::release(TaskRun& task, PlcTime nominal, bool reportOverrun) {
 // tasks: a release whenever the BOOL is TRUE and the task is idle.
 void Scheduler::sampleTriggers() {
     if (!regularStarted_) return;
-    PlcTime now = machine_.now;
+    PlcTime now = machine_.time();
     for (TaskRun& task : tasks_) {
         if (task.spec.kind != TaskKind::Event && task.spec.kind != TaskKind::Status) continue;
         bool value = task.spec.trigger.byte && task.spec.trigger.read();
@@ -464,10 +464,10 @@ void Scheduler::runActivation(TaskRun& task) {
         // A task switch for the --vcd observer (and the live timeline).
         auto observe = [&](bool running) {
             if constexpr (Live) observeRunning(task, running);
-            else if (options_.observer) options_.observer->taskRunning(index(), running, machine_.now);
+            else if (options_.observer) options_.observer->taskRunning(index(), running, machine_.time());
         };
         refreshNow();
-        PlcTime start = machine_.now;
+        PlcTime start = machine_.time();
         task.phase = Phase::Active;
         task.startedAt = start;
         task.watchdogAt = task.spec.watchdog > 0 ? start + task.spec.watchdog : kNever;
@@ -496,10 +496,10 @@ void Scheduler::runActivation(TaskRun& task) {
 
         // An activation costs at least one statement, even an empty one, so a
         // freewheeling task can never spin at a standstill on the virtual clock.
-        if (options_.virtualClock && machine_.now == start) machine_.now += machine_.stmtCost;
+        if (options_.virtualClock && machine_.time() == start) machine_.setTime(start + machine_.stmtCost);
         refreshNow();
         if (options_.observer) {
-            options_.observer->activationEnded(index(), machine_.now);
+            options_.observer->activationEnded(index(), machine_.time());
             observe(false);
         } else if constexpr (Live) {
             observe(false);
@@ -530,7 +530,7 @@ bool Scheduler::liveHold() {
     }
     refreshNow();
     if (stopRequested_.load()) ending_ = true;
-    return !ending_ && machine_.now < forEnd_;
+    return !ending_ && machine_.time() < forEnd_;
 }
 
 void Scheduler::liveEvent(LiveEvent event, const TaskRun& task) {
@@ -542,12 +542,12 @@ void Scheduler::liveEvent(LiveEvent event, const TaskRun& task) {
     case LiveEvent::EndedCompleted:
     case LiveEvent::EndedAborted: options_.live->activationEnded(index, event == LiveEvent::EndedCompleted, stack_.empty()); break;
     case LiveEvent::Running:
-    case LiveEvent::Stopped: options_.live->taskRunning(index, event == LiveEvent::Running, machine_.now); break;
+    case LiveEvent::Stopped: options_.live->taskRunning(index, event == LiveEvent::Running, machine_.time()); break;
     }
 }
 
 void Scheduler::finishActivation(TaskRun& task, bool completed) {
-    PlcTime now = machine_.now;
+    PlcTime now = machine_.time();
     if (task.abortRequested) {
         task.abortRequested = false;
         if (!ending_) trace(&task, "abort");  // after a STOP the "stop" line says it all
@@ -630,13 +630,13 @@ void Scheduler::switchMasterMode(TaskRun& mast, PlcTime period) {
         mast.nextRelease = kNever;
         trace(&mast, "mode", "cyclic");
         // Idle until its next grid point: it runs again at once instead.
-        if (mast.phase == Phase::Idle && &mast != (stack_.empty() ? nullptr : stack_.back())) release(mast, machine_.now, false);
+        if (mast.phase == Phase::Idle && &mast != (stack_.empty() ? nullptr : stack_.back())) release(mast, machine_.time(), false);
         recomputeEarliestRelease();
     } else if (period > 0 && cyclicNow) {
         mast.spec.kind = TaskKind::Cyclic;
         mast.period = period;
         // The grid starts from the release of its current (or last) scan.
-        mast.nextRelease = std::max(mast.releasedAt + period, machine_.now);
+        mast.nextRelease = std::max(mast.releasedAt + period, machine_.time());
         trace(&mast, "mode", "periodic");
         recomputeEarliestRelease();
     }
@@ -694,7 +694,7 @@ bool Scheduler::onAttention() {
     bool preempted = false;
     for (;;) {
         if (stopRequested_.load()) ending_ = true;
-        if (machine_.now >= forEnd_) ending_ = true;
+        if (machine_.time() >= forEnd_) ending_ = true;
         if (ending_) {
             requestOwnAttention();  // every level below unwinds too
             return true;
@@ -731,7 +731,7 @@ bool Scheduler::onAttention() {
 // Execution time counts from the activation's start, preemptions included.
 void Scheduler::checkWatchdogs() {
     for (TaskRun* task : stack_)
-        if (machine_.now >= task->watchdogAt) tripWatchdog(*task);
+        if (machine_.time() >= task->watchdogAt) tripWatchdog(*task);
 }
 
 // The processor passes from the base level to `next` (nullptr: idle). A task
@@ -739,11 +739,11 @@ void Scheduler::checkWatchdogs() {
 void Scheduler::noteBusy(const TaskRun* next) {
     if (profile_.systemWatchdogBusy <= 0) return;
     if (!next || next->spec.priority > profile_.systemWatchdogMaxPriority) highBusySince_ = kNever;
-    else if (highBusySince_ == kNever) highBusySince_ = machine_.now;
+    else if (highBusySince_ == kNever) highBusySince_ = machine_.time();
 }
 
 void Scheduler::checkSystemWatchdog() {
-    if (highBusySince_ == kNever || ending_ || machine_.now - highBusySince_ <= profile_.systemWatchdogBusy) return;
+    if (highBusySince_ == kNever || ending_ || machine_.time() - highBusySince_ <= profile_.systemWatchdogBusy) return;
     const TaskRun* current = stack_.empty() ? nullptr : stack_.back();
     // Reported where the running task was, like a task watchdog.
     std::string pou;
@@ -787,13 +787,13 @@ void Scheduler::tripWatchdog(TaskRun& task) {
     record(DiagCode::Watchdog, &task, pou, line,
            std::string(timeoutTaskTripped ? "the execution-timeout task '" : "task '") + task.spec.name +
                "' reached its watchdog of " + formatDuration(task.spec.watchdog) + " (running for " +
-               formatDuration(machine_.now - task.startedAt) + ", preemptions included); " +
+               formatDuration(machine_.time() - task.startedAt) + ", preemptions included); " +
                (goesOn ? "the execution-timeout task interrupts it and it goes on" : "the activation is aborted") +
-               virtualCostNote(machine_.now - task.startedAt),
+               virtualCostNote(machine_.time() - task.startedAt),
            file, col);
     PlcState reaction = profile_.watchdogReaction == WatchdogReaction::Halt ? PlcState::Halt : PlcState::Stop;
     if (timeoutTaskTripped || !timeoutTask_) faultStop(&task, DiagCode::Watchdog, reaction);
-    else release(*timeoutTask_, machine_.now, false);
+    else release(*timeoutTask_, machine_.time(), false);
 }
 
 void Scheduler::faultStop(const TaskRun* task, DiagCode code, PlcState state) {
@@ -801,7 +801,7 @@ void Scheduler::faultStop(const TaskRun* task, DiagCode code, PlcState state) {
     if (!diagnostics_.entries().empty()) stopFaults_.push_back(diagnostics_.entries().back());
     if (state_ == PlcState::Run) {
         state_ = state;
-        stopTime_ = machine_.now;
+        stopTime_ = machine_.time();
     }
     ending_ = true;
     // STOP ends every activation in progress, also one whose fault came in
@@ -826,7 +826,7 @@ void Scheduler::onFault(DiagCode code, std::string_view pou, int line, std::stri
         // A program error inside the program-error task itself stops the PLC,
         // as a watchdog trip of the execution-timeout task does.
         if (errorTask_ && current != errorTask_) {
-            release(*errorTask_, machine_.now, false);
+            release(*errorTask_, machine_.time(), false);
             requestOwnAttention();  // it may preempt at the next statement boundary
             return;
         }
@@ -851,7 +851,7 @@ void Scheduler::onLog(std::string_view pou, int line, std::string message, int f
 
 void Scheduler::record(DiagCode code, const TaskRun* task, std::string_view pou, int line, std::string message, int file, int col) {
     if (file >= 0 && options_.originalPosition) std::tie(line, col) = options_.originalPosition(file, line, col);
-    diagnostics_.add({machine_.now, code, task ? task->spec.name : std::string(), std::string(pou), line, std::move(message), file, col});
+    diagnostics_.add({machine_.time(), code, task ? task->spec.name : std::string(), std::string(pou), line, std::move(message), file, col});
 }
 
 // ---------------------------------------------------------------- attention
@@ -864,7 +864,7 @@ void Scheduler::armNextAttention() {
     for (const TaskRun* task : stack_) at = std::min(at, task->watchdogAt);
     if (highBusySince_ != kNever) at = std::min(at, highBusySince_ + profile_.systemWatchdogBusy + 1);
     if (options_.virtualClock) {
-        machine_.deadline.store(at);
+        machine_.setDeadline(at);
         // requestStop() may have lowered the deadline just before the store above.
         if (stopRequested_.load() || ending_) machine_.requestAttention();
     } else {
@@ -886,17 +886,17 @@ void Scheduler::excludeFromWatchdogs(PlcTime stopped) {
     if (stopped <= 0) return;
     for (TaskRun* task : stack_)
         if (task->watchdogAt != kNever) task->watchdogAt += stopped;
-    if (highBusySince_ != kNever) highBusySince_ = std::min(highBusySince_ + stopped, machine_.now);
+    if (highBusySince_ != kNever) highBusySince_ = std::min(highBusySince_ + stopped, machine_.time());
     if (!stack_.empty()) armNextAttention();
 }
 
 PlcTime Scheduler::currentTime() {
     refreshNow();
-    return machine_.now;
+    return machine_.time();
 }
 
 int64_t Scheduler::calendarNanos() {
-    if (options_.virtualClock) return calendarBase_ + machine_.now;
+    if (options_.virtualClock) return calendarBase_ + machine_.time();
     return realtimeNanos();
 }
 
@@ -907,7 +907,7 @@ int64_t Scheduler::taskStartCalendarNanos() {
 }
 
 void Scheduler::observeRunning(const TaskRun& task, bool running) {
-    if (options_.observer) options_.observer->taskRunning(size_t(&task - tasks_.data()), running, machine_.now);
+    if (options_.observer) options_.observer->taskRunning(size_t(&task - tasks_.data()), running, machine_.time());
     if (options_.live) [[unlikely]] liveEvent(running ? LiveEvent::Running : LiveEvent::Stopped, task);
 }
 
@@ -932,7 +932,7 @@ bool Scheduler::taskInfo(int index, TaskInfo& out) const {
 void Scheduler::trace(const TaskRun* task, const char* event, const char* detail) {
     if (!options_.trace) return;
     traceLine_.clear();
-    appendDuration(traceLine_, machine_.now);
+    appendDuration(traceLine_, machine_.time());
     traceLine_ += ' ';
     traceLine_ += task ? task->spec.name : std::string("-");
     traceLine_ += ' ';

@@ -125,7 +125,7 @@ public:
     // The statistics of every task, in task order, into `out` (resized; no
     // allocation once it has the size). Scheduler thread, or after run().
     void copyTaskStats(std::vector<TaskStats>& out) const;
-    PlcTime now() const { return machine_.now; }
+    PlcTime now() const { return machine_.time(); }
     uint64_t cyclesOf(size_t task) const { return tasks_[task].cycles; }
     // Activations started, all tasks together (the benchmark's task switches).
     uint64_t activations() const { return activations_; }
@@ -157,7 +157,7 @@ public:
     // nothing to watch costs the run nothing. Any thread.
     void watchEveryStatement(bool on) {
         frontEveryStatement_.store(on);
-        if (on) machine_.requestAttention();
+        if (on) machine_.requestAttentionFromOtherThread();
     }
     // The PLC time at which the scheduler itself next needs onAttention()
     // (virtual clock; the real clock's timer lowers the machine's deadline

@@ -45,7 +45,7 @@ FrameEvaluator::FrameEvaluator(sema::Checker& checker, sema::ProgramModel& model
     : checker_(checker), model_(model), log_(log), faults_(std::make_unique<FaultCatcher>()),
       machine_(std::make_unique<rt::Machine>()), sink_(std::max<size_t>(exec::kFaultSinkSize, model.largestType + 64)) {
     machine_->handler = faults_.get();
-    machine_->stmtCost = 0;
+    machine_->setStmtCost(0);
 }
 
 FrameEvaluator::~FrameEvaluator() = default;
@@ -110,7 +110,7 @@ EvaluatedValue FrameEvaluator::evaluate(const CompiledExpression& e, uint8_t* se
     machine_->memory = model_.machine.memory;
     machine_->memory.add(scratch.data(), scratch.size());
     machine_->memory.add(sink_.data(), sink_.size());
-    machine_->deadline.store(rt::kNever);
+    machine_->setDeadline(rt::kNever);
     faults_->fault.clear();
     exec::Ctx c;
     c.self = self;

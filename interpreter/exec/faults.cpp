@@ -35,6 +35,7 @@ void reportDivByZero(Ctx& c, const Site& site) {
 void reportCallDepth(Ctx& c, const Site& site, const std::string& callee) {
     // Set first: a handler may let the activation go on (strun test: the refused call gives 0, decision 0253).
     c.aborting = true;
+    c.m->expireCountdown();  // the next tick unwinds (decision 0267)
     c.m->handler->onFault(rt::DiagCode::CallDepth, pouOf(at(c, site)), at(c, site).line,
                           fmt::format("call nesting deeper than {} (calling {}): the nesting limit of the PLCs strun emulates; "
                                       "turn the recursion into a loop (docs/limits.md)",

@@ -136,11 +136,11 @@ template <class T, BinOp OP, class L, class R>
 struct IfCompare final : Stmt {
     L l;
     R r;
-    Block* then;
+    Body then;
     Stmt* otherwise;  // may be null; see If1Stmt
     IfCompare(L a, R b, Block* t, Stmt* e) : l(a), r(b), then(t), otherwise(e) {}
     Flow exec(Ctx& c) override {
-        if (applyBin<T, OP>(l.get(c), r.get(c))) return then->exec(c);
+        if (applyBin<T, OP>(l.get(c), r.get(c))) return then.run(c);
         return otherwise ? otherwise->exec(c) : Flow::Next;
     }
 };
@@ -150,7 +150,7 @@ template <class T, BinOp OP, class L, class R>
 struct WhileCompare final : Stmt {
     L l;
     R r;
-    Block* body;
+    Body body;
     WhileCompare(L a, R b, Block* d) : l(a), r(b), body(d) {}
     Flow exec(Ctx& c) override {
         return runWhile(c, body, [this](Ctx& k) { return applyBin<T, OP>(l.get(k), r.get(k)) != 0; });
@@ -280,11 +280,11 @@ Stmt* Index1Var<T, B, IX>::makeStore(NodePool& pool, Expr* value, bool boolean) 
 // IfCompare), run directly as a part of the same statement (no tick).
 struct If1Stmt final : Stmt {
     Expr* cond;
-    Block* then;
+    Body then;
     Stmt* otherwise;  // may be null
     If1Stmt(Expr* k, Block* t, Stmt* e) : cond(k), then(t), otherwise(e) {}
     Flow exec(Ctx& c) override {
-        if (cond->i(c)) return then->exec(c);
+        if (cond->i(c)) return then.run(c);
         return otherwise ? otherwise->exec(c) : Flow::Next;
     }
 };

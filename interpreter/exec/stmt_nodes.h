@@ -4,13 +4,32 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 
 #include "interpreter/exec/operator_nodes.h"
 
 namespace strun::exec {
 
+// The tick's slow path (the countdown ran out, decision 0265). While an
+// activation is being aborted every tick stops it, without costing time:
+// aborting expires the countdown (Machine::expireCountdown), so a statement
+// that returned normally from an aborted call is followed by no other
+// (decision 0267); Block does not test Ctx::aborting per statement.
+[[gnu::noinline, gnu::cold]] inline bool tickExpired(Ctx& c) {
+    if (c.aborting) {
+        ++c.m->left;  // not a tick: the countdown stays expired
+        return true;
+    }
+    if (c.m->countdownExpired()) {
+        c.aborting = true;
+        c.m->expireCountdown();
+        return true;
+    }
+    return false;
+}
+
 inline bool tickAborts(Ctx& c) {
-    if (__builtin_expect(c.m->tick(), 0)) { c.aborting = true; return true; }
+    if (__builtin_expect(--c.m->left < 0, 0)) return tickExpired(c);
     return false;
 }
 
@@ -30,9 +49,43 @@ struct Block final : Stmt {
                 }
                 return f;
             }
-            if (__builtin_expect(c.aborting, 0)) return Flow::Abort;
         }
         return Flow::Next;
+    }
+};
+
+// One statement of a list, as Block::exec runs it: the tick before it, then
+// the statement.
+inline Flow runOne(Ctx& c, Stmt* s) {
+    c.stmt = s;
+    if (tickAborts(c)) return Flow::Abort;
+    return s->exec(c);
+}
+
+// The body of a loop, an IF branch or a CASE branch, held by its statement
+// (decision 0266): up to two statements inline, run without the Block's call
+// and vector walk; longer lists, and lists with labels (JMP targets), run
+// as their Block. Built from a finished Block (the Block must not change
+// afterwards). Every statement still ticks exactly as in Block::exec.
+struct Body {
+    Stmt* s0 = nullptr;
+    Stmt* s1 = nullptr;
+    Block* block = nullptr;  // set: run the Block itself
+    Body() = default;
+    Body(Block* b) {  // NOLINT: implicit, so that nodes built from a Block* keep their constructors
+        if (!b) return;
+        if (!b->labels.empty() || b->stmts.size() > 2) block = b;
+        else {
+            if (b->stmts.size() > 0) s0 = b->stmts[0];
+            if (b->stmts.size() > 1) s1 = b->stmts[1];
+        }
+    }
+    inline Flow run(Ctx& c) const {
+        if (block) return block->exec(c);
+        if (!s0) return Flow::Next;
+        Flow f = runOne(c, s0);
+        if (f != Flow::Next || !s1) return f;
+        return runOne(c, s1);
     }
 };
 
@@ -176,16 +229,47 @@ struct CaseStmt final : Stmt {
     Expr* selector;
     bool isUnsigned64 = false;
     std::vector<Entry> entries;  // in source order: the first match wins
-    std::vector<Block*> blocks;
-    Block* elseBlock = nullptr;
+    std::vector<Body> blocks;
+    Body elseBlock;
+    // Dense labels (decision 0268): the branch of every selector value in
+    // [tableLo, tableLo + table.size()), kNoBranch for ELSE; empty: scan.
+    static constexpr uint16_t kNoBranch = 0xFFFF;
+    int64_t tableLo = 0;
+    std::vector<uint16_t> table;
+    // Builds `table` when the labels span at most kMaxTable values.
+    void buildTable() {
+        static constexpr int64_t kMaxTable = 1024;
+        table.clear();
+        if (isUnsigned64 || entries.empty() || blocks.size() >= kNoBranch) return;
+        int64_t lo = std::numeric_limits<int64_t>::max(), hi = std::numeric_limits<int64_t>::min();
+        for (const Entry& e : entries) {
+            if (e.lo > e.hi) continue;
+            lo = std::min(lo, e.lo);
+            hi = std::max(hi, e.hi);
+        }
+        int64_t span = 0;
+        if (lo > hi || __builtin_sub_overflow(hi, lo, &span) || span >= kMaxTable) return;
+        table.assign(static_cast<size_t>(hi - lo + 1), kNoBranch);
+        tableLo = lo;
+        for (const Entry& e : entries)
+            for (int64_t v = e.lo; v <= e.hi && e.lo <= e.hi; ++v) {
+                uint16_t& slot = table[static_cast<size_t>(v - lo)];
+                if (slot == kNoBranch) slot = static_cast<uint16_t>(e.block);  // the first match wins
+            }
+    }
     Flow exec(Ctx& c) override {
         int64_t v = selector->i(c);
+        if (!table.empty()) {
+            uint64_t k = static_cast<uint64_t>(v) - static_cast<uint64_t>(tableLo);
+            if (k < table.size() && table[k] != kNoBranch) return blocks[table[k]].run(c);
+            return elseBlock.run(c);
+        }
         for (const Entry& e : entries) {
             bool in = isUnsigned64 ? (static_cast<uint64_t>(v) >= static_cast<uint64_t>(e.lo) && static_cast<uint64_t>(v) <= static_cast<uint64_t>(e.hi))
                                    : (v >= e.lo && v <= e.hi);
-            if (in) return blocks[e.block]->exec(c);
+            if (in) return blocks[e.block].run(c);
         }
-        return elseBlock ? elseBlock->exec(c) : Flow::Next;
+        return elseBlock.run(c);
     }
 };
 
@@ -196,16 +280,31 @@ template <class T>
 struct ForStmt final : Stmt {
     Expr* var;
     Expr *from, *to, *by;  // by may be null (step 1)
-    Block* body;
+    Body body;
     Flow exec(Ctx& c) override {
         T end = static_cast<T>(to->i(c));
-        T step = by ? static_cast<T>(by->i(c)) : T(1);
+        if (!by) {
+            // Step 1 (decision 0266): no test of the step's sign per iteration.
+            uint8_t* p = var->addr(c);
+            storeAs<T>(p, static_cast<T>(from->i(c)));
+            while (loadAs<T>(p) <= end) {
+                Flow f = body.run(c);
+                if (f != Flow::Next) {
+                    if (f == Flow::Exit) break;
+                    if (f != Flow::Continue) return f;
+                }
+                if (tickAborts(c)) return Flow::Abort;
+                storeAs<T>(p, static_cast<T>(static_cast<U<T>>(loadAs<T>(p)) + U<T>(1)));
+            }
+            return Flow::Next;
+        }
+        T step = static_cast<T>(by->i(c));
         uint8_t* p = var->addr(c);
         storeAs<T>(p, static_cast<T>(from->i(c)));
         for (;;) {
             T v = loadAs<T>(p);
             if (step >= T(0) ? !(v <= end) : !(v >= end)) break;
-            Flow f = body->exec(c);
+            Flow f = body.run(c);
             if (f != Flow::Next) {
                 if (f == Flow::Exit) break;
                 if (f != Flow::Continue) return f;
@@ -221,9 +320,9 @@ struct ForStmt final : Stmt {
 // The WHILE loop of WhileStmt and WhileCompare (fused_nodes.h): `holds(c)`
 // evaluates the condition.
 template <class Cond>
-inline Flow runWhile(Ctx& c, Block* body, Cond&& holds) {
+inline Flow runWhile(Ctx& c, const Body& body, Cond&& holds) {
     while (holds(c)) {
-        Flow f = body->exec(c);
+        Flow f = body.run(c);
         if (f != Flow::Next) {
             if (f == Flow::Exit) break;
             if (f != Flow::Continue) return f;
@@ -235,7 +334,7 @@ inline Flow runWhile(Ctx& c, Block* body, Cond&& holds) {
 
 struct WhileStmt final : Stmt {
     Expr* cond;
-    Block* body;
+    Body body;
     Flow exec(Ctx& c) override {
         return runWhile(c, body, [this](Ctx& k) { return cond->i(k) != 0; });
     }
@@ -243,10 +342,10 @@ struct WhileStmt final : Stmt {
 
 struct RepeatStmt final : Stmt {
     Expr* cond;
-    Block* body;
+    Body body;
     Flow exec(Ctx& c) override {
         for (;;) {
-            Flow f = body->exec(c);
+            Flow f = body.run(c);
             if (f != Flow::Next) {
                 if (f == Flow::Exit) break;
                 if (f != Flow::Continue) return f;

@@ -581,6 +581,12 @@ exec::Stmt* Checker::callFunctionBlock(Checked inst, const ast::Expr& e) {
     call->instance = inst.node;
     call->site = site(e.loc);
     std::set<VarSym*> connected;
+    // Inputs bound like a FUNCTION's arguments (exec::ArgBind, decision 0267):
+    // only when the instance is a plain variable (its address costs nothing
+    // and cannot fault, so taking it before the inputs changes nothing) and
+    // no input calls anything (no side effect can tell the order apart).
+    bool direct = !e.kids.empty() && e.kids[0]->kind == ast::ExprKind::Name && !inst.hasCall && inst.var && !inst.var->byRef &&
+                  inst.var->type == inst.type;  // not a VAR_IN_OUT or REFERENCE TO (a dereference may fault)
     for (const auto& b : bindings) {
         VarSym* p = b.param;
         connected.insert(p);
@@ -594,6 +600,7 @@ exec::Stmt* Checker::callFunctionBlock(Checked inst, const ast::Expr& e) {
         }
         Checked v = checkExpr(*b.arg->value);
         if (!v.ok) { ok = false; continue; }
+        if (p->byRef || p->type->kind == TK::Reference) direct = false;
         if (p->byRef) {
             const Field* f = inst.type->findField(upper(p->name));
             exec::Expr* slot = pool().make<exec::OffsetPlace>(inst.node, f ? f->offset : 0);
@@ -615,7 +622,19 @@ exec::Stmt* Checker::callFunctionBlock(Checked inst, const ast::Expr& e) {
         exec::Stmt* st = assignChecked(member, v, b.arg->loc);
         if (st) call->inputs.push_back(st);
         else ok = false;
+        // The direct form stores what the assignment stores: the value of the
+        // parameter's own type, or a literal (checked against the input's
+        // range by the assignment) converted to it.
+        const Field* field = inst.type->findField(upper(p->name));
+        const bool literal = v.isConst && (dynamic_cast<exec::ConstInt*>(v.node) || dynamic_cast<exec::ConstReal*>(v.node));
+        const bool asIs = sameType(v.type, p->type) || (literal && v.untypedInt && isInteger(p->type->kind)) ||
+                          (literal && (v.untypedInt || v.untypedReal) && isReal(p->type->kind));
+        exec::ArgBind bind;
+        if (direct && st && field && !v.hasCall && asIs && !isAggregate(p->type) && fuseArgBind(repOf(p->type), field->offset, v.node, bind))
+            call->binds.push_back(bind);
+        else direct = false;
     }
+    call->directInputs = direct && call->binds.size() == call->inputs.size();
     for (VarSym* p : params)
         if (p->byRef && !connected.count(p)) {
             // An unconnected VAR_IN_OUT of an FB keeps its previous binding (CODESYS); only the first call must bind it.

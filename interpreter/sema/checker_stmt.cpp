@@ -254,8 +254,8 @@ exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
         return pool().make<exec::CondStmt>(value.node, set);
     }
     if (s.kind == ast::StmtKind::RefAssign || s.kind == ast::StmtKind::TryAssign) return checkRefAssign(s);
-    // A call inside that was aborted (watchdog / STOP) ends the statement's
-    // Block: it checks Ctx::aborting after every statement.
+    // A call inside that was aborted (watchdog / STOP) stops the activation
+    // at the next tick (decision 0267).
     return assignChecked(target, value, s.loc);
 }
 
@@ -362,6 +362,7 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
         n->blocks.push_back(checkBlock(br.body));
     }
     if (s.elseBlock) n->elseBlock = checkBlock(*s.elseBlock);
+    n->buildTable();
     return n;
 }
 
@@ -506,6 +507,9 @@ void Checker::checkBody(PouInfo* pou) {
         block->stmts.insert(block->stmts.begin(), inits.begin(), inits.end());
         for (auto& label : block->labels) label.second += inits.size();
     }
+    // The body is final now: a short one runs inline in every call (decision 0266).
+    pou->code->inlineBody = exec::Body(pou->code->body);
+    pou->code->hasInlineBody = !pou->code->inlineBody.block;
     for (const auto& [loc, name] : pendingJumps_)
         if (!definedLabels_.count(upper(name))) error(diag::E0504, loc, fmt::format("JMP to undefined label '{}'", name));
     if (pou->kind == ast::PouKind::Function && pou->result && !assignedResult_ && !libraryFiles_.count(pou->ast->loc.file))

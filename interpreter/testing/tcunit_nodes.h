@@ -34,13 +34,13 @@ struct BeginTestNode final : Expr {
             if (hints.size() != reg->suites.size()) hints.assign(reg->suites.size(), -1);
             hint = &hints[static_cast<size_t>(reg->currentSuite)];
         }
-        return reg->beginTest(stringArg(name, nameType, c, scratch), ordered, c.m->now, hint);
+        return reg->beginTest(stringArg(name, nameType, c, scratch), ordered, c.m->time(), hint);
     }
 };
 
 struct FinishTestNode final : Expr {
     TestRegistry* reg = nullptr;
-    int64_t i(Ctx& c) override { return reg->finishCurrent(c.m->now); }
+    int64_t i(Ctx& c) override { return reg->finishCurrent(c.m->time()); }
 };
 
 struct FinishNamedTestNode final : Expr {
@@ -48,7 +48,7 @@ struct FinishNamedTestNode final : Expr {
     Expr* name = nullptr;
     const sema::Type* nameType = nullptr;
     std::string scratch;
-    int64_t i(Ctx& c) override { return reg->finishNamed(stringArg(name, nameType, c, scratch), c.m->now); }
+    int64_t i(Ctx& c) override { return reg->finishNamed(stringArg(name, nameType, c, scratch), c.m->time()); }
 };
 
 struct IsTestFinishedNode final : Expr {
@@ -78,7 +78,7 @@ struct AwaitAssertionsNode final : Expr {
     Expr* duration = nullptr;
     int64_t scale = 1;  // to nanoseconds
     int64_t i(Ctx& c) override {
-        reg->awaitAssertions(duration->i(c) * scale, c.m->now);
+        reg->awaitAssertions(duration->i(c) * scale, c.m->time());
         return 0;
     }
 };

@@ -197,16 +197,16 @@ void TestRegistry::runSuites(exec::Ctx& c, bool inSequence, rt::PlcTime pause) {
     for (size_t k = 0; k < suites.size(); ++k) {
         Suite& s = suites[k];
         if (s.finished()) continue;
-        if (inSequence && s.cycles == 0 && c.m->now < nextSuiteAt) break;  // the pause between two suites
+        if (inSequence && s.cycles == 0 && c.m->time() < nextSuiteAt) break;  // the pause between two suites
         currentSuite = static_cast<int>(k);
         currentTest = -1;
         ignoreCurrent = true;
         ++s.cycles;
         capture.inner = c.m->handler;
         capture.abortedByTest = false;
-        capture.budgetEnd = watchdog > 0 ? c.m->now + watchdog : rt::kNever;
+        capture.budgetEnd = watchdog > 0 ? c.m->time() + watchdog : rt::kNever;
         c.m->handler = &capture;
-        if (capture.budgetEnd < c.m->deadline.load(std::memory_order_relaxed)) c.m->deadline.store(capture.budgetEnd, std::memory_order_relaxed);
+        if (capture.budgetEnd < c.m->deadline.load(std::memory_order_relaxed)) c.m->setDeadline(capture.budgetEnd);
         uint8_t* f = exec::pushFrame(c, *s.body, site);
         if (f) {
             exec::runBody(c, *s.body, s.instance, f);
@@ -223,7 +223,7 @@ void TestRegistry::runSuites(exec::Ctx& c, bool inSequence, rt::PlcTime pause) {
         }
         if (inSequence && !s.finished()) break;
         if (inSequence) {
-            nextSuiteAt = c.m->now + pause;
+            nextSuiteAt = c.m->time() + pause;
             if (pause > 0) break;
         }
     }
@@ -324,7 +324,7 @@ void TestRegistry::addNotRun() {
 }
 
 bool FaultCapture::onAttention() {
-    if (machine && machine->now >= budgetEnd) {
+    if (machine && machine->time() >= budgetEnd) {
         TestRegistry& r = registry_;
         if (r.currentSuite >= 0 && r.currentTest >= 0) {
             Failure f;
@@ -338,14 +338,14 @@ bool FaultCapture::onAttention() {
             r.recordFailure(std::move(f));
             TestCase& t = r.suites[static_cast<size_t>(r.currentSuite)].tests[static_cast<size_t>(r.currentTest)];
             t.finished = true;
-            t.finishedAt = machine->now;  // its JUnit time: never left at 0 (a negative duration)
+            t.finishedAt = machine->time();  // its JUnit time: never left at 0 (a negative duration)
         }
         abortedByTest = true;
         budgetEnd = rt::kNever;
         return true;
     }
     bool abort = inner->onAttention();
-    if (budgetEnd < machine->deadline.load(std::memory_order_relaxed)) machine->deadline.store(budgetEnd, std::memory_order_relaxed);
+    if (budgetEnd < machine->deadline.load(std::memory_order_relaxed)) machine->setDeadline(budgetEnd);
     return abort;
 }
 
@@ -379,7 +379,7 @@ void FaultCapture::onFault(rt::DiagCode code, std::string_view pou, int line, st
     // short every cycle starved them).
     if (code == rt::DiagCode::CallDepth) {
         t.finished = true;
-        t.finishedAt = machine ? machine->now : t.startedAt;
+        t.finishedAt = machine ? machine->time() : t.startedAt;
         if (ctx) ctx->aborting = false;
         else abortedByTest = true;
     }

@@ -61,7 +61,7 @@ struct AdsLogNode final : exec::Expr {
         // ADSLOG <PLC time> <task> <severity>: <message>
         rt::AttentionHandler* h = c.m->handler;
         std::string line = "ADSLOG ";
-        rt::appendDuration(line, h ? h->currentTime() : c.m->now);
+        rt::appendDuration(line, h ? h->currentTime() : c.m->time());
         const std::string task = h ? h->currentTaskName() : std::string();
         line += ' ';
         line += task.empty() ? "-" : task;
