@@ -26,20 +26,21 @@ exec::Stmt* addConst(exec::NodePool& pool, uint32_t off, exec::Expr* value) {
     // variables, the fused form of the same.
     using C = std::conditional_t<(sizeof(T) < 4), int32_t, T>;  // arithmeticRep
     using V = exec::VarNode<T, B>;
+    constexpr exec::CtxBase base = exec::ctxBase<B>();
     auto same = [&](exec::Expr* e) {
         auto* v = dynamic_cast<V*>(e);
         return v && v->off == off;
     };
-    if (auto* n = dynamic_cast<exec::AddIK<C>*>(value); n && same(n->l)) return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(n->b));
+    if (auto* n = dynamic_cast<exec::AddIK<C>*>(value); n && same(n->l)) return pool.make<exec::AddConstLocal<T>>(base, off, static_cast<int64_t>(n->b));
     if (auto* n = dynamic_cast<exec::SubIK<C>*>(value); n && same(n->l))
-        return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(0 - static_cast<uint64_t>(static_cast<int64_t>(n->b))));
+        return pool.make<exec::AddConstLocal<T>>(base, off, static_cast<int64_t>(0 - static_cast<uint64_t>(static_cast<int64_t>(n->b))));
     if constexpr (std::is_same_v<C, T>) {
-        using OV = exec::OpVar<T, B>;
+        using OV = exec::OpVar<T>;
         using K = exec::OpConst<T>;
-        if (auto* n = dynamic_cast<exec::FusedBin<T, BinOp::Add, OV, K>*>(value); n && n->l.off == off)
-            return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(n->r.k));
-        if (auto* n = dynamic_cast<exec::FusedBin<T, BinOp::Sub, OV, K>*>(value); n && n->l.off == off)
-            return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(0 - static_cast<uint64_t>(static_cast<int64_t>(n->r.k))));
+        if (auto* n = dynamic_cast<exec::FusedBin<T, BinOp::Add, OV, K>*>(value); n && n->l.base == base && n->l.off == off)
+            return pool.make<exec::AddConstLocal<T>>(base, off, static_cast<int64_t>(n->r.k));
+        if (auto* n = dynamic_cast<exec::FusedBin<T, BinOp::Sub, OV, K>*>(value); n && n->l.base == base && n->l.off == off)
+            return pool.make<exec::AddConstLocal<T>>(base, off, static_cast<int64_t>(0 - static_cast<uint64_t>(static_cast<int64_t>(n->r.k))));
     }
     return nullptr;
 }
@@ -84,19 +85,15 @@ IndexLeaf indexLeafOf(exec::Expr* e) {
     IndexLeaf leaf;
     if (anyIndexVar(e, leaf)) return leaf;
     // v + k, v - k in DINT (INT variables are promoted to DINT).
+    using V = exec::OpVar<int32_t>;
     using K = exec::OpConst<int32_t>;
-    auto fusedAdd = [&](auto* n, bool negate) {
-        leaf.from = std::is_same_v<std::remove_pointer_t<decltype(n)>, exec::FusedBin<int32_t, BinOp::Add, exec::OpVar<int32_t, BaseKind::Self>, K>> ||
-                            std::is_same_v<std::remove_pointer_t<decltype(n)>, exec::FusedBin<int32_t, BinOp::Sub, exec::OpVar<int32_t, BaseKind::Self>, K>>
-                        ? exec::IndexFrom::Self32
-                        : exec::IndexFrom::Frame32;
-        leaf.off = n->l.off;
-        leaf.add = static_cast<int32_t>(negate ? 0u - static_cast<uint32_t>(n->r.k) : static_cast<uint32_t>(n->r.k));
+    auto fusedAdd = [&](const V& v, int32_t k, bool negate) {
+        leaf.from = v.base == &exec::Ctx::self ? exec::IndexFrom::Self32 : exec::IndexFrom::Frame32;
+        leaf.off = v.off;
+        leaf.add = static_cast<int32_t>(negate ? 0u - static_cast<uint32_t>(k) : static_cast<uint32_t>(k));
     };
-    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, exec::OpVar<int32_t, BaseKind::Self>, K>*>(e)) { fusedAdd(n, false); return leaf; }
-    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, exec::OpVar<int32_t, BaseKind::Self>, K>*>(e)) { fusedAdd(n, true); return leaf; }
-    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, exec::OpVar<int32_t, BaseKind::Frame>, K>*>(e)) { fusedAdd(n, false); return leaf; }
-    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, exec::OpVar<int32_t, BaseKind::Frame>, K>*>(e)) { fusedAdd(n, true); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, V, K>*>(e)) { fusedAdd(n->l, n->r.k, false); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, V, K>*>(e)) { fusedAdd(n->l, n->r.k, true); return leaf; }
     IndexLeaf inner;
     if (auto* n = dynamic_cast<exec::AddIK<int32_t>*>(e); n && anyIndexVar(n->l, inner)) {
         inner.add = n->b;
@@ -130,9 +127,9 @@ template <class T>
 exec::Stmt* assignConstTyped(exec::NodePool& pool, T k, exec::Expr* place, BaseKind base, uint32_t off) {
     if (place) return pool.make<exec::AssignConst<T>>(place, k);
     switch (base) {
-        case BaseKind::Frame: return pool.make<exec::AssignConstLocal<T, BaseKind::Frame>>(off, k);
-        case BaseKind::Pending: return pool.make<exec::AssignConstLocal<T, BaseKind::Pending>>(off, k);
-        default: return pool.make<exec::AssignConstLocal<T, BaseKind::Self>>(off, k);
+        case BaseKind::Frame: return pool.make<exec::AssignConstLocal<T>>(&exec::Ctx::frame, off, k);
+        case BaseKind::Pending: return pool.make<exec::AssignConstLocal<T>>(&exec::Ctx::pending, off, k);
+        default: return pool.make<exec::AssignConstLocal<T>>(&exec::Ctx::self, off, k);
     }
 }
 
@@ -224,6 +221,9 @@ exec::Stmt* fuseAddConstLocal(exec::NodePool& pool, Rep rep, bool frame, uint32_
 }
 
 exec::Expr* fuseRealToInt(exec::NodePool& pool, exec::Expr* value, int bits, bool isSigned, bool truncate) {
+    // REAL_TO_DINT(x * 10.0): the conversion computes the operator itself (decision 0262).
+    if (auto* op = dynamic_cast<exec::FusedArith*>(value); op && (bits == 8 || bits == 16 || bits == 32 || bits == 64))
+        if (exec::Expr* n = op->makeRealToInt(pool, exec::RealToIntForm{static_cast<uint8_t>(bits), isSigned, truncate})) return n;
     switch (bits) {
         case 8: return isSigned ? realToInt<int8_t>(pool, value, bits, isSigned, truncate) : realToInt<uint8_t>(pool, value, bits, isSigned, truncate);
         case 16: return isSigned ? realToInt<int16_t>(pool, value, bits, isSigned, truncate) : realToInt<uint16_t>(pool, value, bits, isSigned, truncate);
@@ -231,6 +231,22 @@ exec::Expr* fuseRealToInt(exec::NodePool& pool, exec::Expr* value, int bits, boo
         case 64: return isSigned ? realToInt<int64_t>(pool, value, bits, isSigned, truncate) : realToInt<uint64_t>(pool, value, bits, isSigned, truncate);
         default: return nullptr;
     }
+}
+
+exec::Stmt* fuseIf(exec::NodePool& pool, exec::Expr* cond, exec::Block* then, exec::Stmt* otherwise) {
+    if (auto* cmp = dynamic_cast<exec::FusedCompare*>(cond)) return cmp->makeIf(pool, then, otherwise);
+    // IF flag / IF flags[i] on a BOOL (stored as a byte; a condition is
+    // always BOOL) read inline.
+    if (Leaf<uint8_t> v = leafOf<uint8_t>(cond); v.isVar())
+        return pool.make<exec::IfBool<exec::OpVar<uint8_t>>>(v.var(), then, otherwise);
+    if (exec::OpElem<uint8_t> e; fusion::elemOf<uint8_t>(cond, e))
+        return pool.make<exec::IfBool<exec::OpElem<uint8_t>>>(e, then, otherwise);
+    return nullptr;
+}
+
+exec::Stmt* fuseWhile(exec::NodePool& pool, exec::Expr* cond, exec::Block* body) {
+    if (auto* cmp = dynamic_cast<exec::FusedCompare*>(cond)) return cmp->makeWhile(pool, body);
+    return nullptr;
 }
 
 }  // namespace strun::sema

@@ -40,12 +40,12 @@ END_PROGRAM
     REQUIRE(c->ok());
     auto body = bodyOf(*c, "Main");
     REQUIRE(body.size() == 3);
-    CHECK(is<exec::IfCompare<int32_t, exec::BinOp::Gt, exec::OpVar<int32_t, exec::BaseKind::Self>, exec::OpConst<int32_t>>>(body[0]));
-    CHECK(is<exec::WhileCompare<int32_t, exec::BinOp::Lt, exec::OpVar<int32_t, exec::BaseKind::Self>, exec::OpConst<int32_t>>>(body[1]));
+    CHECK(is<exec::IfCompare<int32_t, exec::BinOp::Gt, exec::OpVar<int32_t>, exec::OpConst<int32_t>>>(body[0]));
+    CHECK(is<exec::WhileCompare<int32_t, exec::BinOp::Lt, exec::OpVar<int32_t>, exec::OpConst<int32_t>>>(body[1]));
     // An INT in DINT arithmetic is no fused operand: a general link, whose ELSE is the fused ELSIF.
     auto* first = dynamic_cast<exec::If1Stmt*>(body[2]);
     REQUIRE(first);
-    CHECK(is<exec::IfCompare<int32_t, exec::BinOp::Eq, exec::OpVar<int32_t, exec::BaseKind::Self>, exec::OpConst<int32_t>>>(first->otherwise));
+    CHECK(is<exec::IfCompare<int32_t, exec::BinOp::Eq, exec::OpVar<int32_t>, exec::OpConst<int32_t>>>(first->otherwise));
 }
 
 TEST_CASE("calls bind scalar arguments directly and assign their result without a value node", "[fused]") {
@@ -110,11 +110,13 @@ END_PROGRAM
     REQUIRE(c->ok());
     auto body = bodyOf(*c, "Main");
     REQUIRE(body.size() == 4);
-    using Self = exec::OpVar<int32_t, exec::BaseKind::Self>;
-    CHECK(is<exec::AssignBinLocal<int32_t, exec::BinOp::Mul, Self, Self, false>>(body[0]));
+    using Var = exec::OpVar<int32_t>;
+    auto* mul = dynamic_cast<exec::AssignBinLocal<int32_t, exec::BinOp::Mul, Var, Var>*>(body[0]);
+    REQUIRE(mul);
+    CHECK(mul->base == &exec::Ctx::self);
     CHECK(is<exec::AssignIndex1<int32_t, exec::BaseKind::Self, exec::IndexFrom::Self32>>(body[1]));
     CHECK(is<exec::AssignConstIndex1<uint8_t, exec::BaseKind::Self, exec::IndexFrom::Self32>>(body[2]));
-    CHECK_FALSE(is<exec::AssignBinLocal<int32_t, exec::BinOp::Mul, Self, Self, false>>(body[3]));  // INT target: general form
+    CHECK_FALSE(is<exec::AssignBinLocal<int32_t, exec::BinOp::Mul, Var, Var>>(body[3]));  // INT target: general form
 }
 
 TEST_CASE("s := CONCAT(s, ...) appends in place only when the pieces cannot touch s", "[fused]") {
@@ -140,4 +142,50 @@ END_PROGRAM
     CHECK_FALSE(is<exec::AppendInPlace<char, exec::BaseKind::Self>>(body[1]));
     CHECK_FALSE(is<exec::AppendInPlace<char, exec::BaseKind::Self>>(body[2]));
     CHECK_FALSE(is<exec::AppendInPlace<char, exec::BaseKind::Self>>(body[3]));
+}
+
+TEST_CASE("nested arithmetic, MOD tests, element comparisons, BOOL elements and conversions over arithmetic are fused", "[fused]") {
+    // decision 0262: the shapes of issue 28 item 4, with the operand kinds as data.
+    auto c = compileSt(R"(
+FUNCTION F : DINT
+VAR_INPUT n : DINT; END_VAR
+VAR k : DINT; END_VAR
+k := 3 * n + 1;
+F := k;
+END_FUNCTION
+PROGRAM Main
+VAR x : LINT; a : ARRAY[1..4] OF DINT; j : DINT := 1; flags : ARRAY[0..3] OF BOOL; i : DINT; r : REAL; d : DINT; b : BOOL; s : INT; END_VAR
+x := 3 * x + 1;
+IF x MOD 2 = 0 THEN x := x / 2; END_IF;
+IF a[j] > a[j + 1] THEN j := 0; END_IF;
+IF flags[i] THEN i := 1; ELSIF b THEN i := 2; END_IF;
+d := REAL_TO_DINT(r * 10.0);
+WHILE a[i] < a[i + 1] DO i := i + 1; END_WHILE;
+s := 3 * s + 1;
+d := F(d);
+END_PROGRAM
+)");
+    REQUIRE(c->ok());
+    auto body = bodyOf(*c, "Main");
+    REQUIRE(body.size() == 8);
+    using Node64 = exec::OpNode<int64_t>;
+    using K64 = exec::OpConst<int64_t>;
+    CHECK(is<exec::AssignBinLocal<int64_t, exec::BinOp::Add, Node64, K64>>(body[0]));
+    CHECK(is<exec::IfCompare<int64_t, exec::BinOp::Eq, Node64, K64>>(body[1]));
+    CHECK(is<exec::IfCompare<int32_t, exec::BinOp::Gt, exec::OpElem<int32_t>, exec::OpElem<int32_t>>>(body[2]));
+    auto* flag = dynamic_cast<exec::IfBool<exec::OpElem<uint8_t>>*>(body[3]);
+    REQUIRE(flag);
+    CHECK(is<exec::IfBool<exec::OpVar<uint8_t>>>(flag->otherwise));
+    auto* conv = dynamic_cast<exec::AssignLocal<int32_t, false>*>(body[4]);
+    REQUIRE(conv);
+    CHECK(dynamic_cast<exec::RealBinToInt<float, exec::BinOp::Mul, exec::OpVar<float>, exec::OpConst<float>>*>(conv->value));
+    CHECK(is<exec::WhileCompare<int32_t, exec::BinOp::Lt, exec::OpElem<int32_t>, exec::OpElem<int32_t>>>(body[5]));
+    // An INT target is no fused destination; its DINT arithmetic stays general.
+    CHECK_FALSE(is<exec::AssignBinLocal<int32_t, exec::BinOp::Add, exec::OpNode<int32_t>, exec::OpConst<int32_t>>>(body[6]));
+    // In a function the same shapes read the frame.
+    auto fbody = bodyOf(*c, "F");
+    REQUIRE(fbody.size() == 2);
+    auto* k = dynamic_cast<exec::AssignBinLocal<int32_t, exec::BinOp::Add, exec::OpNode<int32_t>, exec::OpConst<int32_t>>*>(fbody[0]);
+    REQUIRE(k);
+    CHECK(k->base == &exec::Ctx::frame);
 }
