@@ -26,21 +26,20 @@ exec::Stmt* addConst(exec::NodePool& pool, uint32_t off, exec::Expr* value) {
     // variables, the fused form of the same.
     using C = std::conditional_t<(sizeof(T) < 4), int32_t, T>;  // arithmeticRep
     using V = exec::VarNode<T, B>;
-    constexpr exec::CtxBase base = exec::ctxBase<B>();
     auto same = [&](exec::Expr* e) {
         auto* v = dynamic_cast<V*>(e);
         return v && v->off == off;
     };
-    if (auto* n = dynamic_cast<exec::AddIK<C>*>(value); n && same(n->l)) return pool.make<exec::AddConstLocal<T>>(base, off, static_cast<int64_t>(n->b));
+    if (auto* n = dynamic_cast<exec::AddIK<C>*>(value); n && same(n->l)) return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(n->b));
     if (auto* n = dynamic_cast<exec::SubIK<C>*>(value); n && same(n->l))
-        return pool.make<exec::AddConstLocal<T>>(base, off, static_cast<int64_t>(0 - static_cast<uint64_t>(static_cast<int64_t>(n->b))));
+        return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(0 - static_cast<uint64_t>(static_cast<int64_t>(n->b))));
     if constexpr (std::is_same_v<C, T>) {
-        using OV = exec::OpVar<T>;
+        using OV = exec::OpVar<T, B>;
         using K = exec::OpConst<T>;
-        if (auto* n = dynamic_cast<exec::FusedBin<T, BinOp::Add, OV, K>*>(value); n && n->l.base == base && n->l.off == off)
-            return pool.make<exec::AddConstLocal<T>>(base, off, static_cast<int64_t>(n->r.k));
-        if (auto* n = dynamic_cast<exec::FusedBin<T, BinOp::Sub, OV, K>*>(value); n && n->l.base == base && n->l.off == off)
-            return pool.make<exec::AddConstLocal<T>>(base, off, static_cast<int64_t>(0 - static_cast<uint64_t>(static_cast<int64_t>(n->r.k))));
+        if (auto* n = dynamic_cast<exec::FusedBin<T, BinOp::Add, OV, K>*>(value); n && n->l.off == off)
+            return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(n->r.k));
+        if (auto* n = dynamic_cast<exec::FusedBin<T, BinOp::Sub, OV, K>*>(value); n && n->l.off == off)
+            return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(0 - static_cast<uint64_t>(static_cast<int64_t>(n->r.k))));
     }
     return nullptr;
 }
@@ -85,15 +84,18 @@ IndexLeaf indexLeafOf(exec::Expr* e) {
     IndexLeaf leaf;
     if (anyIndexVar(e, leaf)) return leaf;
     // v + k, v - k in DINT (INT variables are promoted to DINT).
-    using V = exec::OpVar<int32_t>;
+    using VS = exec::OpVar<int32_t, BaseKind::Self>;
+    using VF = exec::OpVar<int32_t, BaseKind::Frame>;
     using K = exec::OpConst<int32_t>;
-    auto fusedAdd = [&](const V& v, int32_t k, bool negate) {
-        leaf.from = v.base == &exec::Ctx::self ? exec::IndexFrom::Self32 : exec::IndexFrom::Frame32;
-        leaf.off = v.off;
+    auto fusedAdd = [&](exec::IndexFrom from, uint32_t off, int32_t k, bool negate) {
+        leaf.from = from;
+        leaf.off = off;
         leaf.add = static_cast<int32_t>(negate ? 0u - static_cast<uint32_t>(k) : static_cast<uint32_t>(k));
     };
-    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, V, K>*>(e)) { fusedAdd(n->l, n->r.k, false); return leaf; }
-    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, V, K>*>(e)) { fusedAdd(n->l, n->r.k, true); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, VS, K>*>(e)) { fusedAdd(exec::IndexFrom::Self32, n->l.off, n->r.k, false); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, VS, K>*>(e)) { fusedAdd(exec::IndexFrom::Self32, n->l.off, n->r.k, true); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, VF, K>*>(e)) { fusedAdd(exec::IndexFrom::Frame32, n->l.off, n->r.k, false); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, VF, K>*>(e)) { fusedAdd(exec::IndexFrom::Frame32, n->l.off, n->r.k, true); return leaf; }
     IndexLeaf inner;
     if (auto* n = dynamic_cast<exec::AddIK<int32_t>*>(e); n && anyIndexVar(n->l, inner)) {
         inner.add = n->b;
@@ -127,9 +129,9 @@ template <class T>
 exec::Stmt* assignConstTyped(exec::NodePool& pool, T k, exec::Expr* place, BaseKind base, uint32_t off) {
     if (place) return pool.make<exec::AssignConst<T>>(place, k);
     switch (base) {
-        case BaseKind::Frame: return pool.make<exec::AssignConstLocal<T>>(&exec::Ctx::frame, off, k);
-        case BaseKind::Pending: return pool.make<exec::AssignConstLocal<T>>(&exec::Ctx::pending, off, k);
-        default: return pool.make<exec::AssignConstLocal<T>>(&exec::Ctx::self, off, k);
+        case BaseKind::Frame: return pool.make<exec::AssignConstLocal<T, BaseKind::Frame>>(off, k);
+        case BaseKind::Pending: return pool.make<exec::AssignConstLocal<T, BaseKind::Pending>>(off, k);
+        default: return pool.make<exec::AssignConstLocal<T, BaseKind::Self>>(off, k);
     }
 }
 
@@ -208,10 +210,10 @@ exec::Expr* fuseIndex1(exec::NodePool& pool, Rep rep, BaseKind base, const exec:
 
 exec::Expr* fuseBinary(exec::NodePool& pool, BinOp op, Rep rep, exec::Expr* a, exec::Expr* b, int64_t kInt, double kReal) {
     switch (rep) {
-        case Rep::I32:
-        case Rep::I64: return fusion::fuseBinaryInteger(pool, op, rep == Rep::I64, a, b, kInt);
-        case Rep::F32:
-        case Rep::F64: return fusion::fuseBinaryReal(pool, op, rep == Rep::F64, a, b, kReal);
+        case Rep::I32: return fusion::fuseBinaryDint(pool, op, a, b, kInt);
+        case Rep::I64: return fusion::fuseBinaryLint(pool, op, a, b, kInt);
+        case Rep::F32: return fusion::fuseBinaryReal(pool, op, a, b, kReal);
+        case Rep::F64: return fusion::fuseBinaryLreal(pool, op, a, b, kReal);
         default: return nullptr;
     }
 }
@@ -238,7 +240,7 @@ exec::Stmt* fuseIf(exec::NodePool& pool, exec::Expr* cond, exec::Block* then, ex
     // IF flag / IF flags[i] on a BOOL (stored as a byte; a condition is
     // always BOOL) read inline.
     if (Leaf<uint8_t> v = leafOf<uint8_t>(cond); v.isVar())
-        return pool.make<exec::IfBool<exec::OpVar<uint8_t>>>(v.var(), then, otherwise);
+        return fusion::withVar(v, [&](auto var) -> exec::Stmt* { return pool.make<exec::IfBool<decltype(var)>>(var, then, otherwise); });
     if (exec::OpElem<uint8_t> e; fusion::elemOf<uint8_t>(cond, e))
         return pool.make<exec::IfBool<exec::OpElem<uint8_t>>>(e, then, otherwise);
     return nullptr;

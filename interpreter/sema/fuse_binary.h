@@ -1,8 +1,7 @@
 // Builds FusedBin nodes (decisions 0151, 0262). The templates instantiate every
 // operator for every operand shape, with the IF, WHILE, assignment and
-// conversion forms each of them can become, so the work is split by computation type over
-// fuse_binary_integer.cpp and fuse_binary_real.cpp (one compiler process
-// each, about half the memory of one).
+// conversion forms each of them can become; the work is split by computation
+// type over four files.
 #pragma once
 
 #include <optional>
@@ -14,10 +13,13 @@ namespace strun::sema::fusion {
 
 using exec::BinOp;
 
-// DINT (wide = false) or LINT computations; kInt: the right constant when b is null.
-exec::Expr* fuseBinaryInteger(exec::NodePool& pool, BinOp op, bool wide, exec::Expr* a, exec::Expr* b, int64_t kInt);
-// REAL (wide = false) or LREAL computations.
-exec::Expr* fuseBinaryReal(exec::NodePool& pool, BinOp op, bool wide, exec::Expr* a, exec::Expr* b, double kReal);
+// One file per computation type (fuse_binary_dint.cpp, _lint, _real,
+// _lreal), so that the two cores of a build share the work; k: the right
+// constant when b is null.
+exec::Expr* fuseBinaryDint(exec::NodePool& pool, BinOp op, exec::Expr* a, exec::Expr* b, int64_t k);
+exec::Expr* fuseBinaryLint(exec::NodePool& pool, BinOp op, exec::Expr* a, exec::Expr* b, int64_t k);
+exec::Expr* fuseBinaryReal(exec::NodePool& pool, BinOp op, exec::Expr* a, exec::Expr* b, double k);
+exec::Expr* fuseBinaryLreal(exec::NodePool& pool, BinOp op, exec::Expr* a, exec::Expr* b, double k);
 
 template <class T, BinOp OP, class L, class R>
 exec::Expr* make(exec::NodePool& pool, L l, R r) {
@@ -50,18 +52,19 @@ exec::Expr* fuseTyped(exec::NodePool& pool, exec::Expr* a, exec::Expr* b, T k) {
     Leaf<T> rb = b ? leafOf<T>(b) : Leaf<T>{LeafKind::Const, 0, k};
     constexpr bool divides = OP == BinOp::Div || OP == BinOp::Mod;
     if (divides && !std::is_floating_point_v<T> && rb.kind != LeafKind::Const) return nullptr;
-    if (la.isVar()) {
-        if (rb.isVar()) return make<T, OP>(pool, la.var(), rb.var());
-        if (rb.kind == LeafKind::Const) return make<T, OP>(pool, la.var(), exec::OpConst<T>{rb.k});
-        return make<T, OP>(pool, la.var(), exec::OpNode<T>{b});
-    }
+    if (la.isVar())
+        return withVar(la, [&](auto lv) -> exec::Expr* {
+            if (rb.isVar()) return withVar(rb, [&](auto rv) { return make<T, OP>(pool, lv, rv); });
+            if (rb.kind == LeafKind::Const) return make<T, OP>(pool, lv, exec::OpConst<T>{rb.k});
+            return make<T, OP>(pool, lv, exec::OpNode<T>{b});
+        });
     // k OP x with a commutative OP (3 * x, 0 = x): x OP k, the constant inline.
     constexpr bool commutes = OP == BinOp::Add || OP == BinOp::Mul || OP == BinOp::And || OP == BinOp::Or || OP == BinOp::Xor ||
                               OP == BinOp::Eq || OP == BinOp::Ne;
     if constexpr (commutes) {
         if (b && (rb.isVar() || computedOperand(b)))
             if (std::optional<T> ka = constOf<T>(a)) {
-                if (rb.isVar()) return make<T, OP>(pool, rb.var(), exec::OpConst<T>{*ka});
+                if (rb.isVar()) return withVar(rb, [&](auto rv) { return make<T, OP>(pool, rv, exec::OpConst<T>{*ka}); });
                 return make<T, OP>(pool, exec::OpNode<T>{b}, exec::OpConst<T>{*ka});
             }
     }
@@ -70,7 +73,7 @@ exec::Expr* fuseTyped(exec::NodePool& pool, exec::Expr* a, exec::Expr* b, T k) {
         if (b && elemOf<T>(a, ea) && elemOf<T>(b, eb)) return make<T, OP>(pool, ea, eb);
     }
     exec::OpNode<T> l{a};
-    if (rb.isVar()) return make<T, OP>(pool, l, rb.var());
+    if (rb.isVar()) return withVar(rb, [&](auto rv) { return make<T, OP>(pool, l, rv); });
     if (rb.kind == LeafKind::Const && computedOperand(a)) return make<T, OP>(pool, l, exec::OpConst<T>{rb.k});
     return nullptr;
 }

@@ -17,8 +17,14 @@ struct Leaf {
     uint32_t off = 0;
     T k{};
     bool isVar() const { return kind == LeafKind::Self || kind == LeafKind::Frame; }
-    exec::OpVar<T> var() const { return {kind == LeafKind::Self ? &exec::Ctx::self : &exec::Ctx::frame, off}; }
 };
+
+// f(OpVar<T, Self or Frame>) for a variable leaf.
+template <class T, class F>
+auto withVar(const Leaf<T>& v, F&& f) {
+    if (v.kind == LeafKind::Self) return f(exec::OpVar<T, BaseKind::Self>{v.off});
+    return f(exec::OpVar<T, BaseKind::Frame>{v.off});
+}
 
 // A variable node of storage type exactly T in the instance or frame: the
 // fused node loads it as the variable node would.
