@@ -127,7 +127,8 @@ struct RealToIntForm {
     uint8_t bits;
     bool isSigned;
     bool truncate;
-    int64_t apply(double v) const {
+    // Always inline: GCC kept it out of line, a call per conversion.
+    __attribute__((always_inline)) int64_t apply(double v) const {
         constexpr double kTwoPow52 = 4503599627370496.0;
         if (__builtin_expect(v > -kTwoPow52 && v < kTwoPow52, 1)) {
             double whole = v;  // the cast below truncates toward zero
