@@ -12,7 +12,7 @@ DEBIAN_PACKAGES += neovim emacs-nox elpa-eglot
 EXAMPLE ?= programs/bottle_counter.st
 RUN_ARGS ?= --virtual --cycles 2000 --dump
 
-.PHONY: deps build build-installed run test bench package install clean check-deep fuzz fuzz-smoke
+.PHONY: deps build build-strun build-installed run test bench package install clean check-deep fuzz fuzz-smoke
 
 deps:
 	@missing=""; for p in $(DEBIAN_PACKAGES); do \
@@ -28,13 +28,19 @@ build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 	cmake --build $(BUILD) -j$(JOBS)
 
-run: build
+# Only the executable (not the unit tests and tools that `build` makes): what
+# `run` needs, and the quickest way to a working strun from a fresh clone.
+build-strun: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake --build $(BUILD) -j$(JOBS) --target strun
+
+run: build-strun
 	$(BUILD)/strun run $(RUN_ARGS) $(EXAMPLE)
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 
-bench: build
+bench: build-strun
 	benchmarks/run.sh $(BUILD)/strun
 	benchmarks/vcd/run_vcd_bench.sh $(BUILD)/strun
 	benchmarks/startup.sh $(BUILD)/strun
@@ -49,10 +55,11 @@ build-installed: deps
 package: build-installed
 	cd $(BUILD) && cpack -G DEB
 
-# Installs strun, its manual page and its documentation under PREFIX (default /usr/local).
+# Installs strun (stripped of its symbols), its manual page and its
+# documentation under PREFIX (default /usr/local).
 PREFIX ?= /usr/local
 install: build-installed
-	cmake --install $(BUILD) --prefix $(PREFIX)
+	cmake --install $(BUILD) --prefix $(PREFIX) --strip
 
 # ASan + UBSan build of everything, then the whole ctest suite under them
 # (docs/fuzzing.md). Too slow for CI on 2 cores: run it before a release.

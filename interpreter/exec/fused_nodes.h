@@ -15,6 +15,16 @@ namespace strun::exec {
 
 // ---- operands read inside a fused node, as the computation type T
 
+// The context pointer an element operand is based on (the instance or the
+// frame), as data: a pointer to the Ctx member (decision 0262).
+using CtxBase = uint8_t* Ctx::*;
+template <BaseKind B>
+constexpr CtxBase ctxBase() {
+    if constexpr (B == BaseKind::Self) return &Ctx::self;
+    else if constexpr (B == BaseKind::Frame) return &Ctx::frame;
+    else return &Ctx::pending;
+}
+
 // Any expression: one virtual call, as the unfused node does.
 template <class T>
 struct OpNode {
@@ -24,7 +34,10 @@ struct OpNode {
         else return static_cast<T>(e->i(c));
     }
 };
-// A variable of storage type T in the current instance (B = Self) or frame (B = Frame).
+// A variable of storage type T in the current instance (B = Self) or frame
+// (B = Frame). The base stays a template parameter here: as data (a Ctx
+// member pointer) it cost one load more per operand, up to 7 % more
+// instructions in arithmetic loops (decision 0262).
 template <class T, BaseKind B>
 struct OpVar {
     uint32_t off;
@@ -34,6 +47,28 @@ template <class T>
 struct OpConst {
     T k;
     T get(Ctx&) const { return k; }
+};
+// a[i + k]: an element of storage type T of a one-dimensional array variable
+// of the instance or frame, the subscript a DINT variable of the instance or
+// frame plus a constant, computed in DINT with wrap-around and bounds-checked
+// exactly as Index1Var does (value_nodes.h): out of range reports
+// ARRAY_BOUNDS and reads the zeroed fault sink.
+template <class T>
+struct OpElem {
+    CtxBase base;
+    uint32_t off;
+    CtxBase indexBase;
+    uint32_t indexOff;
+    int32_t indexAdd;
+    int64_t lo, count;
+    uint64_t stride;
+    const Site* site;  // the Index1Var's, for the fault report
+    T get(Ctx& c) const {
+        int64_t i = static_cast<int32_t>(static_cast<uint32_t>(loadAs<int32_t>(c.*indexBase + indexOff)) + static_cast<uint32_t>(indexAdd));
+        int64_t k = static_cast<int64_t>(static_cast<uint64_t>(i) - static_cast<uint64_t>(lo));
+        if (__builtin_expect(static_cast<uint64_t>(k) >= static_cast<uint64_t>(count), 0)) return loadAs<T>(indexFault(c, *site, i, lo, count));
+        return loadAs<T>(c.*base + off + static_cast<uint64_t>(k) * stride);
+    }
 };
 
 // ---- binary operators over fused operands
@@ -74,6 +109,42 @@ inline auto applyBin(T a, T b) {
     }
 }
 
+// l OP r with the left operand read first, as the unfused nodes do (a fault
+// or a call in either operand happens in source order).
+template <class T, BinOp OP, class L, class R>
+inline auto evalBin(Ctx& c, const L& l, const R& r) {
+    T a = l.get(c);
+    T b = r.get(c);
+    return applyBin<T, OP>(a, b);
+}
+
+// REAL/LREAL -> integer of `bits` bits (signed or not), rounded half to even
+// or truncated: inline below 2^52 in magnitude, where adding and removing
+// 2^52 rounds exactly to the nearest even integer in the default rounding
+// mode; anything else (huge, infinite, NaN) takes the generic routine. The
+// result wraps to the width as static_cast<T> would.
+struct RealToIntForm {
+    uint8_t bits;
+    bool isSigned;
+    bool truncate;
+    // Always inline: GCC kept it out of line, a call per conversion.
+    __attribute__((always_inline)) int64_t apply(double v) const {
+        constexpr double kTwoPow52 = 4503599627370496.0;
+        if (__builtin_expect(v > -kTwoPow52 && v < kTwoPow52, 1)) {
+            double whole = v;  // the cast below truncates toward zero
+            if (!truncate) {
+                // Without -ffast-math the compiler keeps (v + 2^52) - 2^52 as written.
+                double shifted = v >= 0 ? v + kTwoPow52 : v - kTwoPow52;
+                whole = v >= 0 ? shifted - kTwoPow52 : shifted + kTwoPow52;
+            }
+            const unsigned shift = 64u - bits;
+            uint64_t w = static_cast<uint64_t>(static_cast<int64_t>(whole)) << shift;
+            return isSigned ? static_cast<int64_t>(w) >> shift : static_cast<int64_t>(w >> shift);
+        }
+        return truncate ? realToIntTruncated(v, bits, isSigned) : realToIntRounded(v, bits, isSigned);
+    }
+};
+
 // A fused comparison can become the condition of the IF or WHILE that tests
 // it, so that the branch reads its operands itself (decision 0154).
 struct FusedCompare : Expr {
@@ -84,8 +155,11 @@ struct FusedCompare : Expr {
 // A fused arithmetic node can become the assignment that stores its result
 // into a variable of the instance or frame of exactly its computation type
 // (`storage`), computing it inline (decision 0154); null for other targets.
+// A REAL/LREAL one can also become the conversion of its result to an
+// integer (REAL_TO_DINT(x * 10.0), decision 0262); null where it cannot.
 struct FusedArith : Expr {
     virtual Stmt* makeAssignLocal(NodePool& pool, bool frame, uint32_t off, const std::type_info& storage) = 0;
+    virtual Expr* makeRealToInt(NodePool& pool, RealToIntForm form) = 0;
 };
 
 template <class T, BinOp OP, class L, class R>
@@ -94,16 +168,17 @@ struct FusedBin final : std::conditional_t<isCompare(OP), FusedCompare, FusedAri
     R r;
     FusedBin(L a, R b) : l(a), r(b) {}
     int64_t i(Ctx& c) override {
-        if constexpr (isCompare(OP) || !std::is_floating_point_v<T>) return applyBin<T, OP>(l.get(c), r.get(c));
+        if constexpr (isCompare(OP) || !std::is_floating_point_v<T>) return evalBin<T, OP>(c, l, r);
         else return 0;
     }
     double f(Ctx& c) override {
-        if constexpr (std::is_floating_point_v<T> && !isCompare(OP)) return applyBin<T, OP>(l.get(c), r.get(c));
+        if constexpr (std::is_floating_point_v<T> && !isCompare(OP)) return evalBin<T, OP>(c, l, r);
         else return 0;
     }
     Stmt* makeIf(NodePool& pool, Block* then, Stmt* otherwise);
     Stmt* makeWhile(NodePool& pool, Block* body);
     Stmt* makeAssignLocal(NodePool& pool, bool frame, uint32_t off, const std::type_info& storage);
+    Expr* makeRealToInt(NodePool& pool, RealToIntForm form);
 };
 
 // x := l OP r with x of type T in the instance (FRAME = false) or frame: as
@@ -113,10 +188,10 @@ struct AssignBinLocal final : Stmt {
     uint32_t off;
     L l;
     R r;
-    AssignBinLocal(uint32_t o, L a, R b) : off(o), l(a), r(b) {}
+    AssignBinLocal(uint32_t o, L x, R y) : off(o), l(x), r(y) {}
     Flow exec(Ctx& c) override {
-        uint8_t* p = (FRAME ? c.frame : c.self) + off;
-        storeAs<T>(p, static_cast<T>(applyBin<T, OP>(l.get(c), r.get(c))));
+        T v = static_cast<T>(evalBin<T, OP>(c, l, r));
+        storeAs<T>((FRAME ? c.frame : c.self) + off, v);
         return Flow::Next;
     }
 };
@@ -131,6 +206,22 @@ Stmt* FusedBin<T, OP, L, R>::makeAssignLocal(NodePool& pool, bool frame, uint32_
     }
 }
 
+// INT_TYPE(l OP r) for REAL/LREAL l OP r (ConvRealIntT over the FusedBin).
+template <class T, BinOp OP, class L, class R>
+struct RealBinToInt final : Expr {
+    L l;
+    R r;
+    RealToIntForm form;
+    RealBinToInt(L x, R y, RealToIntForm f) : l(x), r(y), form(f) {}
+    int64_t i(Ctx& c) override { return form.apply(evalBin<T, OP>(c, l, r)); }
+};
+
+template <class T, BinOp OP, class L, class R>
+Expr* FusedBin<T, OP, L, R>::makeRealToInt(NodePool& pool, RealToIntForm form) {
+    if constexpr (isCompare(OP) || !std::is_floating_point_v<T> || std::is_same_v<L, OpNode<T>> || std::is_same_v<R, OpNode<T>>) return nullptr;
+    else return pool.make<RealBinToInt<T, OP, L, R>>(l, r, form);
+}
+
 // IF l OP r THEN ... [ELSE ...] END_IF with the comparison inline.
 template <class T, BinOp OP, class L, class R>
 struct IfCompare final : Stmt {
@@ -140,7 +231,7 @@ struct IfCompare final : Stmt {
     Stmt* otherwise;  // may be null; see If1Stmt
     IfCompare(L a, R b, Block* t, Stmt* e) : l(a), r(b), then(t), otherwise(e) {}
     Flow exec(Ctx& c) override {
-        if (applyBin<T, OP>(l.get(c), r.get(c))) return then.run(c);
+        if (evalBin<T, OP>(c, l, r)) return then.run(c);
         return otherwise ? otherwise->exec(c) : Flow::Next;
     }
 };
@@ -153,7 +244,7 @@ struct WhileCompare final : Stmt {
     Body body;
     WhileCompare(L a, R b, Block* d) : l(a), r(b), body(d) {}
     Flow exec(Ctx& c) override {
-        return runWhile(c, body, [this](Ctx& k) { return applyBin<T, OP>(l.get(k), r.get(k)) != 0; });
+        return runWhile(c, body, [this](Ctx& k) { return evalBin<T, OP>(k, l, r) != 0; });
     }
 };
 
@@ -167,6 +258,21 @@ Stmt* FusedBin<T, OP, L, R>::makeWhile(NodePool& pool, Block* body) {
     if constexpr (isCompare(OP)) return pool.make<WhileCompare<T, OP, L, R>>(l, r, body);
     else return nullptr;
 }
+
+// IF b THEN ... for a BOOL variable or a BOOL array element (`IF flags[i]`)
+// read inline (O is OpVar<uint8_t, B> or OpElem<uint8_t>): true when its byte is
+// not 0, as If1Stmt over the variable node tests it.
+template <class O>
+struct IfBool final : Stmt {
+    O cond;
+    Block* then;
+    Stmt* otherwise;  // may be null; see If1Stmt
+    IfBool(O k, Block* t, Stmt* e) : cond(k), then(t), otherwise(e) {}
+    Flow exec(Ctx& c) override {
+        if (cond.get(c)) return then->exec(c);
+        return otherwise ? otherwise->exec(c) : Flow::Next;
+    }
+};
 
 // ---- statements
 
@@ -290,9 +396,9 @@ struct If1Stmt final : Stmt {
 };
 
 // ---- REAL/LREAL -> integer T: the IEC rounding (half to even) or truncation
-// inline for every value below 2^52 in magnitude, where adding and removing
-// 2^52 rounds exactly to the nearest even integer in the default rounding
-// mode; anything else (huge, infinite, NaN) takes the generic routine.
+// inline for every value below 2^52 in magnitude, as RealToIntForm, with the
+// width and the rounding fixed in the type (the plain conversion is common
+// enough to keep its few instructions fewer).
 template <class T, bool TRUNCATE>
 struct ConvRealIntT final : Expr {
     Expr* a;

@@ -221,7 +221,10 @@ template <class T, CmpOp OP>
 struct CmpI final : Expr {
     Expr *l, *r;
     CmpI(Expr* a, Expr* b) : l(a), r(b) {}
-    int64_t i(Ctx& c) override { return compare<T, OP>(static_cast<T>(l->i(c)), static_cast<T>(r->i(c))); }
+    int64_t i(Ctx& c) override {
+        T a = static_cast<T>(l->i(c));  // left first (decision 0262)
+        return compare<T, OP>(a, static_cast<T>(r->i(c)));
+    }
 };
 
 template <class T, CmpOp OP>
@@ -236,7 +239,10 @@ template <class T, CmpOp OP>
 struct CmpF final : Expr {
     Expr *l, *r;
     CmpF(Expr* a, Expr* b) : l(a), r(b) {}
-    int64_t i(Ctx& c) override { return compare<T, OP>(static_cast<T>(l->f(c)), static_cast<T>(r->f(c))); }
+    int64_t i(Ctx& c) override {
+        T a = static_cast<T>(l->f(c));  // left first (decision 0262)
+        return compare<T, OP>(a, static_cast<T>(r->f(c)));
+    }
 };
 
 // STRING / WSTRING comparison: lexicographic on code units.
@@ -262,7 +268,10 @@ struct CmpBytes final : Expr {
     Expr *l, *r;
     uint32_t size;
     CmpBytes(Expr* a, Expr* b, uint32_t n) : l(a), r(b), size(n) {}
-    int64_t i(Ctx& c) override { return (std::memcmp(l->addr(c), r->addr(c), size) == 0) == EQ; }
+    int64_t i(Ctx& c) override {
+        const uint8_t* a = l->addr(c);  // left first (decision 0262)
+        return (std::memcmp(a, r->addr(c), size) == 0) == EQ;
+    }
 };
 
 // ---- conversions

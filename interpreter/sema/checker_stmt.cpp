@@ -430,7 +430,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
             if (conds.empty()) return chain;
             // IF/ELSIF/ELSE as a chain of one-condition links, built from the end.
             for (size_t k = conds.size(); k-- > 0;) {
-                if (auto* cmp = dynamic_cast<exec::FusedCompare*>(conds[k])) chain = cmp->makeIf(pool(), blocks[k], chain);
+                if (exec::Stmt* fused = fuseIf(pool(), conds[k], blocks[k], chain)) chain = fused;
                 else chain = pool().make<exec::If1Stmt>(conds[k], blocks[k], chain);
             }
             return chain;
@@ -443,7 +443,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
             exec::Block* b = checkBlock(s.body);
             --loopDepth_;
             if (!c.ok) return nullptr;
-            if (auto* cmp = dynamic_cast<exec::FusedCompare*>(c.node)) return cmp->makeWhile(pool(), b);
+            if (exec::Stmt* fused = fuseWhile(pool(), c.node, b)) return fused;
             auto* n = pool().make<exec::WhileStmt>();
             n->cond = c.node;
             n->body = b;

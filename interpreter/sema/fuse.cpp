@@ -84,19 +84,18 @@ IndexLeaf indexLeafOf(exec::Expr* e) {
     IndexLeaf leaf;
     if (anyIndexVar(e, leaf)) return leaf;
     // v + k, v - k in DINT (INT variables are promoted to DINT).
+    using VS = exec::OpVar<int32_t, BaseKind::Self>;
+    using VF = exec::OpVar<int32_t, BaseKind::Frame>;
     using K = exec::OpConst<int32_t>;
-    auto fusedAdd = [&](auto* n, bool negate) {
-        leaf.from = std::is_same_v<std::remove_pointer_t<decltype(n)>, exec::FusedBin<int32_t, BinOp::Add, exec::OpVar<int32_t, BaseKind::Self>, K>> ||
-                            std::is_same_v<std::remove_pointer_t<decltype(n)>, exec::FusedBin<int32_t, BinOp::Sub, exec::OpVar<int32_t, BaseKind::Self>, K>>
-                        ? exec::IndexFrom::Self32
-                        : exec::IndexFrom::Frame32;
-        leaf.off = n->l.off;
-        leaf.add = static_cast<int32_t>(negate ? 0u - static_cast<uint32_t>(n->r.k) : static_cast<uint32_t>(n->r.k));
+    auto fusedAdd = [&](exec::IndexFrom from, uint32_t off, int32_t k, bool negate) {
+        leaf.from = from;
+        leaf.off = off;
+        leaf.add = static_cast<int32_t>(negate ? 0u - static_cast<uint32_t>(k) : static_cast<uint32_t>(k));
     };
-    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, exec::OpVar<int32_t, BaseKind::Self>, K>*>(e)) { fusedAdd(n, false); return leaf; }
-    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, exec::OpVar<int32_t, BaseKind::Self>, K>*>(e)) { fusedAdd(n, true); return leaf; }
-    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, exec::OpVar<int32_t, BaseKind::Frame>, K>*>(e)) { fusedAdd(n, false); return leaf; }
-    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, exec::OpVar<int32_t, BaseKind::Frame>, K>*>(e)) { fusedAdd(n, true); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, VS, K>*>(e)) { fusedAdd(exec::IndexFrom::Self32, n->l.off, n->r.k, false); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, VS, K>*>(e)) { fusedAdd(exec::IndexFrom::Self32, n->l.off, n->r.k, true); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, VF, K>*>(e)) { fusedAdd(exec::IndexFrom::Frame32, n->l.off, n->r.k, false); return leaf; }
+    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, VF, K>*>(e)) { fusedAdd(exec::IndexFrom::Frame32, n->l.off, n->r.k, true); return leaf; }
     IndexLeaf inner;
     if (auto* n = dynamic_cast<exec::AddIK<int32_t>*>(e); n && anyIndexVar(n->l, inner)) {
         inner.add = n->b;
@@ -211,10 +210,10 @@ exec::Expr* fuseIndex1(exec::NodePool& pool, Rep rep, BaseKind base, const exec:
 
 exec::Expr* fuseBinary(exec::NodePool& pool, BinOp op, Rep rep, exec::Expr* a, exec::Expr* b, int64_t kInt, double kReal) {
     switch (rep) {
-        case Rep::I32:
-        case Rep::I64: return fusion::fuseBinaryInteger(pool, op, rep == Rep::I64, a, b, kInt);
-        case Rep::F32:
-        case Rep::F64: return fusion::fuseBinaryReal(pool, op, rep == Rep::F64, a, b, kReal);
+        case Rep::I32: return fusion::fuseBinaryDint(pool, op, a, b, kInt);
+        case Rep::I64: return fusion::fuseBinaryLint(pool, op, a, b, kInt);
+        case Rep::F32: return fusion::fuseBinaryReal(pool, op, a, b, kReal);
+        case Rep::F64: return fusion::fuseBinaryLreal(pool, op, a, b, kReal);
         default: return nullptr;
     }
 }
@@ -224,6 +223,9 @@ exec::Stmt* fuseAddConstLocal(exec::NodePool& pool, Rep rep, bool frame, uint32_
 }
 
 exec::Expr* fuseRealToInt(exec::NodePool& pool, exec::Expr* value, int bits, bool isSigned, bool truncate) {
+    // REAL_TO_DINT(x * 10.0): the conversion computes the operator itself (decision 0262).
+    if (auto* op = dynamic_cast<exec::FusedArith*>(value); op && (bits == 8 || bits == 16 || bits == 32 || bits == 64))
+        if (exec::Expr* n = op->makeRealToInt(pool, exec::RealToIntForm{static_cast<uint8_t>(bits), isSigned, truncate})) return n;
     switch (bits) {
         case 8: return isSigned ? realToInt<int8_t>(pool, value, bits, isSigned, truncate) : realToInt<uint8_t>(pool, value, bits, isSigned, truncate);
         case 16: return isSigned ? realToInt<int16_t>(pool, value, bits, isSigned, truncate) : realToInt<uint16_t>(pool, value, bits, isSigned, truncate);
@@ -231,6 +233,22 @@ exec::Expr* fuseRealToInt(exec::NodePool& pool, exec::Expr* value, int bits, boo
         case 64: return isSigned ? realToInt<int64_t>(pool, value, bits, isSigned, truncate) : realToInt<uint64_t>(pool, value, bits, isSigned, truncate);
         default: return nullptr;
     }
+}
+
+exec::Stmt* fuseIf(exec::NodePool& pool, exec::Expr* cond, exec::Block* then, exec::Stmt* otherwise) {
+    if (auto* cmp = dynamic_cast<exec::FusedCompare*>(cond)) return cmp->makeIf(pool, then, otherwise);
+    // IF flag / IF flags[i] on a BOOL (stored as a byte; a condition is
+    // always BOOL) read inline.
+    if (Leaf<uint8_t> v = leafOf<uint8_t>(cond); v.isVar())
+        return fusion::withVar(v, [&](auto var) -> exec::Stmt* { return pool.make<exec::IfBool<decltype(var)>>(var, then, otherwise); });
+    if (exec::OpElem<uint8_t> e; fusion::elemOf<uint8_t>(cond, e))
+        return pool.make<exec::IfBool<exec::OpElem<uint8_t>>>(e, then, otherwise);
+    return nullptr;
+}
+
+exec::Stmt* fuseWhile(exec::NodePool& pool, exec::Expr* cond, exec::Block* body) {
+    if (auto* cmp = dynamic_cast<exec::FusedCompare*>(cond)) return cmp->makeWhile(pool, body);
+    return nullptr;
 }
 
 }  // namespace strun::sema

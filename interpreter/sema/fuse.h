@@ -48,4 +48,12 @@ bool fuseArgBind(Rep rep, uint32_t dst, exec::Expr* value, exec::ArgBind& out);
 // REAL/LREAL -> integer with the typed fast path; nullptr for widths it does not cover.
 exec::Expr* fuseRealToInt(exec::NodePool& pool, exec::Expr* value, int bits, bool isSigned, bool truncate);
 
+// IF cond THEN then ELSE otherwise (otherwise may be null, or the next
+// ELSIF link) with the condition read by the IF itself: a fused comparison,
+// a BOOL variable or a BOOL array element (decisions 0154, 0262); nullptr
+// when the condition needs its node (the caller builds If1Stmt).
+exec::Stmt* fuseIf(exec::NodePool& pool, exec::Expr* cond, exec::Block* then, exec::Stmt* otherwise);
+// WHILE cond DO body with a fused comparison read by the loop; nullptr otherwise.
+exec::Stmt* fuseWhile(exec::NodePool& pool, exec::Expr* cond, exec::Block* body);
+
 }  // namespace strun::sema

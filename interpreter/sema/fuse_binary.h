@@ -1,8 +1,7 @@
-// Builds FusedBin nodes (decision 0151). The templates instantiate every
-// operator for every operand shape, with the IF, WHILE and assignment forms
-// each of them can become, so the work is split by computation type over
-// fuse_binary_integer.cpp and fuse_binary_real.cpp (one compiler process
-// each, about half the memory of one).
+// Builds FusedBin nodes (decisions 0151, 0262). The templates instantiate every
+// operator for every operand shape, with the IF, WHILE, assignment and
+// conversion forms each of them can become; the work is split by computation
+// type over four files.
 #pragma once
 
 #include <optional>
@@ -14,62 +13,69 @@ namespace strun::sema::fusion {
 
 using exec::BinOp;
 
-// DINT (wide = false) or LINT computations; kInt: the right constant when b is null.
-exec::Expr* fuseBinaryInteger(exec::NodePool& pool, BinOp op, bool wide, exec::Expr* a, exec::Expr* b, int64_t kInt);
-// REAL (wide = false) or LREAL computations.
-exec::Expr* fuseBinaryReal(exec::NodePool& pool, BinOp op, bool wide, exec::Expr* a, exec::Expr* b, double kReal);
+// One file per computation type (fuse_binary_dint.cpp, _lint, _real,
+// _lreal), so that the two cores of a build share the work; k: the right
+// constant when b is null.
+exec::Expr* fuseBinaryDint(exec::NodePool& pool, BinOp op, exec::Expr* a, exec::Expr* b, int64_t k);
+exec::Expr* fuseBinaryLint(exec::NodePool& pool, BinOp op, exec::Expr* a, exec::Expr* b, int64_t k);
+exec::Expr* fuseBinaryReal(exec::NodePool& pool, BinOp op, exec::Expr* a, exec::Expr* b, double k);
+exec::Expr* fuseBinaryLreal(exec::NodePool& pool, BinOp op, exec::Expr* a, exec::Expr* b, double k);
 
 template <class T, BinOp OP, class L, class R>
 exec::Expr* make(exec::NodePool& pool, L l, R r) {
     return pool.make<exec::FusedBin<T, OP, L, R>>(l, r);
 }
 
-// The right operand of every shape, for a left operand that is a leaf.
-template <class T, BinOp OP, class L>
-exec::Expr* withRight(exec::NodePool& pool, L l, const Leaf<T>& rb, exec::Expr* b) {
-    switch (rb.kind) {
-        case LeafKind::Self: return make<T, OP>(pool, l, exec::OpVar<T, BaseKind::Self>{rb.off});
-        case LeafKind::Frame: return make<T, OP>(pool, l, exec::OpVar<T, BaseKind::Frame>{rb.off});
-        case LeafKind::Const: return make<T, OP>(pool, l, exec::OpConst<T>{rb.k});
-        default: return make<T, OP>(pool, l, exec::OpNode<T>{b});
-    }
+// A computed operand worth reading through one virtual call inside a fused
+// node with a constant (3 * x + 1, x MOD 2 = 0, a[i] > 0): a fused operator
+// or an array element. Plain variables of other widths keep the general
+// nodes (AddIK, CmpIK), which the statement builders recognise.
+inline bool computedOperand(exec::Expr* e) {
+    return dynamic_cast<exec::FusedArith*>(e) || dynamic_cast<exec::Index1Target*>(e);
 }
 
+// The constant value of `e` as T, when it is a constant node.
+template <class T>
+std::optional<T> constOf(exec::Expr* e) {
+    exec::Ctx none;  // constants read nothing from the context
+    if (auto* ci = dynamic_cast<exec::ConstInt*>(e)) return std::is_floating_point_v<T> ? static_cast<T>(ci->f(none)) : static_cast<T>(ci->i(none));
+    if (auto* cr = dynamic_cast<exec::ConstReal*>(e); cr && std::is_floating_point_v<T>) return static_cast<T>(cr->f(none));
+    return std::nullopt;
+}
+
+// The operand shapes (decision 0262): a variable with a variable, a
+// constant or any node; any node with a variable; a computed node with a
+// constant; for comparisons, two array elements (a[j] > a[j + 1]).
 template <class T, BinOp OP>
 exec::Expr* fuseTyped(exec::NodePool& pool, exec::Expr* a, exec::Expr* b, T k) {
     Leaf<T> la = leafOf<T>(a);
     Leaf<T> rb = b ? leafOf<T>(b) : Leaf<T>{LeafKind::Const, 0, k};
     constexpr bool divides = OP == BinOp::Div || OP == BinOp::Mod;
     if (divides && !std::is_floating_point_v<T> && rb.kind != LeafKind::Const) return nullptr;
-    switch (la.kind) {
-        case LeafKind::Self: return withRight<T, OP>(pool, exec::OpVar<T, BaseKind::Self>{la.off}, rb, b);
-        case LeafKind::Frame: return withRight<T, OP>(pool, exec::OpVar<T, BaseKind::Frame>{la.off}, rb, b);
-        default: break;
-    }
+    if (la.isVar())
+        return withVar(la, [&](auto lv) -> exec::Expr* {
+            if (rb.isVar()) return withVar(rb, [&](auto rv) { return make<T, OP>(pool, lv, rv); });
+            if (rb.kind == LeafKind::Const) return make<T, OP>(pool, lv, exec::OpConst<T>{rb.k});
+            return make<T, OP>(pool, lv, exec::OpNode<T>{b});
+        });
     // k OP x with a commutative OP (3 * x, 0 = x): x OP k, the constant inline.
     constexpr bool commutes = OP == BinOp::Add || OP == BinOp::Mul || OP == BinOp::And || OP == BinOp::Or || OP == BinOp::Xor ||
                               OP == BinOp::Eq || OP == BinOp::Ne;
     if constexpr (commutes) {
-        if (rb.kind == LeafKind::Self || rb.kind == LeafKind::Frame) {
-            exec::Ctx none;  // constants read nothing from the context
-            std::optional<T> ka;
-            if (auto* ci = dynamic_cast<exec::ConstInt*>(a)) ka = std::is_floating_point_v<T> ? static_cast<T>(ci->f(none)) : static_cast<T>(ci->i(none));
-            else if (auto* cr = dynamic_cast<exec::ConstReal*>(a); cr && std::is_floating_point_v<T>) ka = static_cast<T>(cr->f(none));
-            if (ka) {
-                exec::OpConst<T> kk{*ka};
-                if (rb.kind == LeafKind::Self) return make<T, OP>(pool, exec::OpVar<T, BaseKind::Self>{rb.off}, kk);
-                return make<T, OP>(pool, exec::OpVar<T, BaseKind::Frame>{rb.off}, kk);
+        if (b && (rb.isVar() || computedOperand(b)))
+            if (std::optional<T> ka = constOf<T>(a)) {
+                if (rb.isVar()) return withVar(rb, [&](auto rv) { return make<T, OP>(pool, rv, exec::OpConst<T>{*ka}); });
+                return make<T, OP>(pool, exec::OpNode<T>{b}, exec::OpConst<T>{*ka});
             }
-        }
     }
-    // A general left operand: worth fusing only when the right one is a variable
-    // (node op constant already has its own nodes).
+    if constexpr (isCompare(OP)) {
+        exec::OpElem<T> ea, eb;
+        if (b && elemOf<T>(a, ea) && elemOf<T>(b, eb)) return make<T, OP>(pool, ea, eb);
+    }
     exec::OpNode<T> l{a};
-    switch (rb.kind) {
-        case LeafKind::Self: return make<T, OP>(pool, l, exec::OpVar<T, BaseKind::Self>{rb.off});
-        case LeafKind::Frame: return make<T, OP>(pool, l, exec::OpVar<T, BaseKind::Frame>{rb.off});
-        default: return nullptr;
-    }
+    if (rb.isVar()) return withVar(rb, [&](auto rv) { return make<T, OP>(pool, l, rv); });
+    if (rb.kind == LeafKind::Const && computedOperand(a)) return make<T, OP>(pool, l, exec::OpConst<T>{rb.k});
+    return nullptr;
 }
 
 template <class T>

@@ -1,11 +1,10 @@
-// FusedBin nodes computing in REAL or LREAL (see fuse_binary.h).
+// FusedBin nodes computing in REAL (see fuse_binary.h).
 #include "interpreter/sema/fuse_binary.h"
 
 namespace strun::sema::fusion {
 
-exec::Expr* fuseBinaryReal(exec::NodePool& pool, BinOp op, bool wide, exec::Expr* a, exec::Expr* b, double kReal) {
-    if (wide) return fuseOp<double>(pool, op, a, b, kReal);
-    return fuseOp<float>(pool, op, a, b, static_cast<float>(kReal));
+exec::Expr* fuseBinaryReal(exec::NodePool& pool, BinOp op, exec::Expr* a, exec::Expr* b, double k) {
+    return fuseOp<float>(pool, op, a, b, static_cast<float>(k));
 }
 
 }  // namespace strun::sema::fusion

@@ -141,3 +141,47 @@ END_PROGRAM
     CHECK_FALSE(is<exec::AppendInPlace<char, exec::BaseKind::Self>>(body[2]));
     CHECK_FALSE(is<exec::AppendInPlace<char, exec::BaseKind::Self>>(body[3]));
 }
+
+TEST_CASE("nested arithmetic, MOD tests, element comparisons, BOOL elements and conversions over arithmetic are fused", "[fused]") {
+    // decision 0262: the shapes of issue 28 item 4, with the operand kinds as data.
+    auto c = compileSt(R"(
+FUNCTION F : DINT
+VAR_INPUT n : DINT; END_VAR
+VAR k : DINT; END_VAR
+k := 3 * n + 1;
+F := k;
+END_FUNCTION
+PROGRAM Main
+VAR x : LINT; a : ARRAY[1..4] OF DINT; j : DINT := 1; flags : ARRAY[0..3] OF BOOL; i : DINT; r : REAL; d : DINT; b : BOOL; s : INT; END_VAR
+x := 3 * x + 1;
+IF x MOD 2 = 0 THEN x := x / 2; END_IF;
+IF a[j] > a[j + 1] THEN j := 0; END_IF;
+IF flags[i] THEN i := 1; ELSIF b THEN i := 2; END_IF;
+d := REAL_TO_DINT(r * 10.0);
+WHILE a[i] < a[i + 1] DO i := i + 1; END_WHILE;
+s := 3 * s + 1;
+d := F(d);
+END_PROGRAM
+)");
+    REQUIRE(c->ok());
+    auto body = bodyOf(*c, "Main");
+    REQUIRE(body.size() == 8);
+    using Node64 = exec::OpNode<int64_t>;
+    using K64 = exec::OpConst<int64_t>;
+    CHECK(is<exec::AssignBinLocal<int64_t, exec::BinOp::Add, Node64, K64, false>>(body[0]));
+    CHECK(is<exec::IfCompare<int64_t, exec::BinOp::Eq, Node64, K64>>(body[1]));
+    CHECK(is<exec::IfCompare<int32_t, exec::BinOp::Gt, exec::OpElem<int32_t>, exec::OpElem<int32_t>>>(body[2]));
+    auto* flag = dynamic_cast<exec::IfBool<exec::OpElem<uint8_t>>*>(body[3]);
+    REQUIRE(flag);
+    CHECK(is<exec::IfBool<exec::OpVar<uint8_t, exec::BaseKind::Self>>>(flag->otherwise));
+    auto* conv = dynamic_cast<exec::AssignLocal<int32_t, false>*>(body[4]);
+    REQUIRE(conv);
+    CHECK(dynamic_cast<exec::RealBinToInt<float, exec::BinOp::Mul, exec::OpVar<float, exec::BaseKind::Self>, exec::OpConst<float>>*>(conv->value));
+    CHECK(is<exec::WhileCompare<int32_t, exec::BinOp::Lt, exec::OpElem<int32_t>, exec::OpElem<int32_t>>>(body[5]));
+    // An INT target is no fused destination; its DINT arithmetic stays general.
+    CHECK_FALSE(is<exec::AssignBinLocal<int32_t, exec::BinOp::Add, exec::OpNode<int32_t>, exec::OpConst<int32_t>, false>>(body[6]));
+    // In a function the same shapes read the frame.
+    auto fbody = bodyOf(*c, "F");
+    REQUIRE(fbody.size() == 2);
+    CHECK(is<exec::AssignBinLocal<int32_t, exec::BinOp::Add, exec::OpNode<int32_t>, exec::OpConst<int32_t>, true>>(fbody[0]));
+}
