@@ -162,7 +162,7 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
             // is signed (negative durations, the --dump format), so a literal above
             // T#24d20h31m23s647ms is taken as that, with a warning (decision 0277).
             if (ms > std::numeric_limits<int32_t>::max() && ms <= int64_t{std::numeric_limits<uint32_t>::max()}) {
-                warning(e.loc, fmt::format("'{}' is beyond the largest TIME (2^31-1 ms); it is taken as T#24d20h31m23s647ms",
+                warning(diag::W0041, e.loc, fmt::format("'{}' is beyond the largest TIME (2^31-1 ms); it is taken as T#24d20h31m23s647ms",
                                            e.text.substr(0, 60)));
                 ms = std::numeric_limits<int32_t>::max();
             }
@@ -379,7 +379,7 @@ Checked Checker::checkName(const ast::Expr& e) {
         // A base class's `VAR PRIVATE` member, named in a derived class (decision 0278).
         if (v->access == ast::Access::Private && v->section == ast::VarSection::Var && v->owner &&
             v->owner != (pou_ && pou_->owner ? pou_->owner : pou_) && v->owner != pou_) {
-            error(e.loc, fmt::format("'{}' is PRIVATE in '{}'", v->name, v->owner->name));
+            error(diag::E0109, e.loc, fmt::format("'{}' is PRIVATE in '{}'", v->name, v->owner->name));
             return bad(e.loc);
         }
         if (v->section == ast::VarSection::Global && v->sharedName) {
@@ -599,7 +599,7 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
             const PouInfo* here = pou_ && pou_->owner ? pou_->owner : pou_;
             const bool visible = access == ast::Access::Private ? here == mv->owner : insideOwnInstance(mv->owner);
             if (!visible) {
-                error(loc, fmt::format("'{}' is {} in '{}'", mv->name, access == ast::Access::Private ? "PRIVATE" : "PROTECTED",
+                error(diag::E0109, loc, fmt::format("'{}' is {} in '{}'", mv->name, access == ast::Access::Private ? "PRIVATE" : "PROTECTED",
                                        mv->owner ? mv->owner->name : t->name));
                 return bad(loc);
             }

@@ -70,7 +70,7 @@ bool Checker::deferInitial(const ast::Expr& value) {
     for (const RuntimeInit& r : *runtimeInits_) mine += r.var == runtimeInitVar_;
     if (mine >= kMaxRuntimeInitsPerVar) {
         if (mine == kMaxRuntimeInitsPerVar)
-            error(value.loc, fmt::format("more than {} parts of '{}' are initialised at run time", kMaxRuntimeInitsPerVar,
+            error(diag::E0007, value.loc, fmt::format("more than {} parts of '{}' are initialised at run time", kMaxRuntimeInitsPerVar,
                                          runtimeInitVar_->name));
         runtimeInits_->push_back({runtimeInitVar_, nullptr, nullptr});  // counts, never runs
         return true;
