@@ -21,6 +21,7 @@
 
 #include "interpreter/builtins/libraries/json_documents.h"
 #include "interpreter/builtins/libraries/library_natives.h"
+#include "interpreter/builtins/libraries/plc_memory_text.h"
 #include "interpreter/exec/value_nodes.h"
 #include "stdlib/text_encoding.h"
 
@@ -205,16 +206,6 @@ void fromJson(const Type* t, uint8_t* p, const Json& j) {
     }
 }
 
-uint8_t* address(int64_t v) { return reinterpret_cast<uint8_t*>(static_cast<intptr_t>(v)); }
-
-bool readText(Ctx& c, int64_t a, std::string_view& out) {
-    const uint8_t* p = address(a);
-    if (!p || !c.m->memory.contains(p, 1)) return false;
-    const size_t n = std::strlen(reinterpret_cast<const char*>(p));
-    if (!c.m->memory.contains(p, n + 1)) return false;
-    out = std::string_view(reinterpret_cast<const char*>(p), n);
-    return true;
-}
 
 struct JsonSymbolNode final : exec::Expr {
     const TypeNames* names;
@@ -225,17 +216,17 @@ struct JsonSymbolNode final : exec::Expr {
     int64_t i(Ctx& c) override {
         const int code = static_cast<int>(op->i(c));
         std::string_view typeName;
-        if (!readText(c, type->i(c), typeName)) return -kSymbolNotFound;
+        if (!readPlcText(c, type->i(c), typeName)) return -kSymbolNotFound;
         auto found = names->find(sema::upper(std::string(typeName)));
         if (found == names->end() || !found->second) return -kSymbolNotFound;
         const Type* t = found->second;
         const int64_t size = nData->i(c);
-        uint8_t* data = address(pData->i(c));
+        uint8_t* data = plcAddress(pData->i(c));
         if (size != static_cast<int64_t>(t->size) || !data || !c.m->memory.contains(data, t->size)) return -kInvalidSize;
         if (code == 1 || code == 3) {
             const std::string text = json::print(toJson(t, data));
             if (code == 3) return static_cast<int64_t>(text.size());
-            uint8_t* out = address(pJson->i(c));
+            uint8_t* out = plcAddress(pJson->i(c));
             const int64_t room = nJson->i(c);
             if (!out || room <= 0 || !c.m->memory.contains(out, static_cast<size_t>(room))) return -kInvalidSize;
             if (text.size() + 1 > static_cast<uint64_t>(room)) {
@@ -248,7 +239,7 @@ struct JsonSymbolNode final : exec::Expr {
         }
         if (code == 2) {
             std::string_view text;
-            if (!readText(c, pJson->i(c), text) || !json::nestingWithin(text)) return -kInvalidData;
+            if (!readPlcText(c, pJson->i(c), text) || !json::nestingWithin(text)) return -kInvalidData;
             Json parsed = Json::parse(text, nullptr, false);
             if (parsed.is_discarded()) return -kInvalidData;
             fromJson(t, data, parsed);

@@ -13,6 +13,7 @@
 
 #include "interpreter/builtins/libraries/json_documents.h"
 #include "interpreter/builtins/libraries/library_natives.h"
+#include "interpreter/builtins/libraries/plc_memory_text.h"
 #include "interpreter/exec/value_nodes.h"
 
 namespace strun::stdlib::bind {
@@ -38,24 +39,12 @@ enum Op : int {
 // IsX tests (the `n` of kIs).
 enum Test : int { kIsArray = 1, kIsBool, kIsDouble, kIsFalse, kIsInt, kIsInt64, kIsNull, kIsNumber, kIsObject, kIsString, kIsTrue, kIsUint, kIsUint64 };
 
-uint8_t* address(int64_t v) { return reinterpret_cast<uint8_t*>(static_cast<intptr_t>(v)); }
-
-// A NUL-terminated string at `a` inside the project's memory.
-bool readText(Ctx& c, int64_t a, std::string_view& out) {
-    const uint8_t* p = address(a);
-    if (!p || !c.m->memory.contains(p, 1)) return false;
-    const size_t n = std::strlen(reinterpret_cast<const char*>(p));
-    if (!c.m->memory.contains(p, n + 1)) return false;
-    out = std::string_view(reinterpret_cast<const char*>(p), n);
-    return true;
-}
-
 // Copies `text` and its NUL to the buffer [a, a + size): its length with the
 // NUL, or 0 (and an empty buffer) when it does not fit (TwinCAT's Copy* methods).
 // A negative size -N: a buffer of N bytes, the text cut to fit (the Get*
 // methods returning STRING(255)).
 int64_t copyOut(Ctx& c, int64_t a, int64_t size, std::string_view text) {
-    uint8_t* p = address(a);
+    uint8_t* p = plcAddress(a);
     const bool cut = size < 0;
     if (cut) size = -size;
     if (!p || size <= 0 || !c.m->memory.contains(p, static_cast<size_t>(size))) return 0;
@@ -138,7 +127,7 @@ struct JsonOpNode final : exec::Expr {
         std::string_view text;
         switch (code) {
             case kParse: {
-                if (!readText(c, p->i(c), text) || !json::nestingWithin(text)) { doc.reset(Json::object()); return 0; }
+                if (!readPlcText(c, p->i(c), text) || !json::nestingWithin(text)) { doc.reset(Json::object()); return 0; }
                 Json parsed = Json::parse(text, nullptr, false);
                 if (parsed.is_discarded()) { doc.reset(Json::object()); return 0; }
                 doc.reset(std::move(parsed));
@@ -192,7 +181,7 @@ struct JsonOpNode final : exec::Expr {
         const Json::json_pointer* path = doc.pathOf(handle);
         auto member = [&](Json value) -> int64_t {
             // AddXMember: adds (or replaces) `name` in the object v; the new member's handle.
-            if (!j->is_object() || !readText(c, p->i(c), text)) return 0;
+            if (!j->is_object() || !readPlcText(c, p->i(c), text)) return 0;
             std::string name(text);
             (*j)[name] = std::move(value);
             return static_cast<int64_t>(doc.handleOf(*path / name));
@@ -207,7 +196,7 @@ struct JsonOpNode final : exec::Expr {
             return static_cast<int64_t>(handle);
         };
         auto stringArg = [&](Expr* e, std::string& out) {
-            if (!readText(c, e->i(c), text)) return false;
+            if (!readPlcText(c, e->i(c), text)) return false;
             out.assign(text);
             return true;
         };
@@ -216,14 +205,14 @@ struct JsonOpNode final : exec::Expr {
         switch (code) {
             case kFindMember:
             case kHasMember: {
-                if (!j->is_object() || !readText(c, p->i(c), text)) return 0;
+                if (!j->is_object() || !readPlcText(c, p->i(c), text)) return 0;
                 auto it = j->find(std::string(text));
                 if (it == j->end()) return 0;
                 return code == kHasMember ? 1 : static_cast<int64_t>(doc.handleOf(*path / std::string(text)));
             }
             case kFindMemberPath: {
                 // "a/b/c": members below v (TwinCAT's FindMemberPath).
-                if (!readText(c, p->i(c), text)) return 0;
+                if (!readPlcText(c, p->i(c), text)) return 0;
                 Json::json_pointer at = *path;
                 Json* cur = j;
                 size_t start = 0;
@@ -280,7 +269,7 @@ struct JsonOpNode final : exec::Expr {
             case kSetObject: return set(Json::object());
             case kSetArray: return set(Json::array());
             case kRemoveMember: {
-                if (!j->is_object() || !readText(c, p->i(c), text)) return 0;
+                if (!j->is_object() || !readPlcText(c, p->i(c), text)) return 0;
                 return j->erase(std::string(text)) ? 1 : 0;
             }
             case kClearArray:
@@ -296,7 +285,7 @@ struct JsonOpNode final : exec::Expr {
         std::vector<json::SaxEvent>& events = json::saxEventsFor(docKey);
         if (code == kSaxLoad) {
             std::string_view text;
-            if (!readText(c, p->i(c), text) || !json::saxEvents(text, events)) return -1;
+            if (!readPlcText(c, p->i(c), text) || !json::saxEvents(text, events)) return -1;
             return static_cast<int64_t>(events.size());
         }
         const int64_t index = n->i(c);
