@@ -55,7 +55,9 @@ public:
     }
 
 private:
-    void report(const TaskSpec& task, std::string message) { violations_.push_back({task.loc, std::move(message)}); }
+    void report(const TaskSpec& task, std::string message, bool unavailableOnTarget = false) {
+        violations_.push_back({task.loc, std::move(message), unavailableOnTarget});
+    }
 
     void checkName(size_t index) {
         const TaskSpec& task = tasks_[index];
@@ -77,7 +79,7 @@ private:
         const KindLimits& limits = profile_.limits(task.kind);
         if (limits.maxCount == 0) {
             if (countOfKind == 1)
-                report(task, kindWords(task.kind) + " tasks are not available on " + std::string(profile_.description));
+                report(task, kindWords(task.kind) + " tasks are not available on " + std::string(profile_.description), true);
             return;
         }
         if (countOfKind == limits.maxCount + 1) {

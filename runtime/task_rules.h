@@ -16,6 +16,7 @@ namespace strun::rt {
 struct TaskRuleViolation {
     SourceLoc loc;
     std::string message;
+    bool unavailableOnTarget = false;  // a kind of task the target does not have (else: a rule broken)
 };
 
 // Fills in what the TASK declaration left out from the profile: the kind's

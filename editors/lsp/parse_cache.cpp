@@ -7,10 +7,7 @@ namespace strun::editors::lsp {
 namespace {
 
 void replay(const std::vector<Diagnostic>& diagnostics, CompileLog& log) {
-    for (const Diagnostic& d : diagnostics) {
-        Diagnostic& added = d.severity == Severity::Error ? log.error(d.loc, d.message) : log.warning(d.loc, d.message);
-        added = d;
-    }
+    for (const Diagnostic& d : diagnostics) log.repeat(d);
 }
 
 }  // namespace

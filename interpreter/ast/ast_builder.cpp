@@ -46,8 +46,8 @@ std::string AstBuilder::sourceText(antlr4::ParserRuleContext* c) {
     return out;
 }
 
-Diagnostic& AstBuilder::error(const Loc& at, const std::string& message) {
-    return errors_.report(static_cast<size_t>(at.line), at.col > 0 ? static_cast<size_t>(at.col - 1) : 0, message);
+Diagnostic& AstBuilder::error(diag::Code code, const Loc& at, const std::string& message) {
+    return errors_.report(code, static_cast<size_t>(at.line), at.col > 0 ? static_cast<size_t>(at.col - 1) : 0, message);
 }
 
 const antlr4::Token* AstBuilder::previousOnChannel(const antlr4::Token* token) const {
@@ -107,7 +107,7 @@ void AstBuilder::topLevelItem(P::TopLevelItemContext* c, const std::string& name
         // CODESYS writes an ACTION after the POU it belongs to.
         Pou* owner = unit.pous.empty() ? nullptr : unit.pous.back().get();
         if (!owner || (owner->kind != PouKind::Program && owner->kind != PouKind::FunctionBlock)) {
-            error(loc(a), "ACTION '" + text(a->name) + "' must follow the PROGRAM or FUNCTION_BLOCK it belongs to");
+            error(diag::E0009, loc(a), "ACTION '" + text(a->name) + "' must follow the PROGRAM or FUNCTION_BLOCK it belongs to");
             return;
         }
         owner->methods.push_back(action(a, owner->nameSpace));
@@ -116,7 +116,7 @@ void AstBuilder::topLevelItem(P::TopLevelItemContext* c, const std::string& name
     } else if (auto* v = c->globals) {
         VarBlock block = varBlock(v);
         if (block.section != VarSection::Global) {
-            error(block.loc, "only VAR_GLOBAL is allowed outside a POU, found " + v->getStart()->getText());
+            error(diag::E0009, block.loc, "only VAR_GLOBAL is allowed outside a POU, found " + v->getStart()->getText());
             return;
         }
         GlobalList list;
@@ -210,7 +210,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
 void AstBuilder::member(P::MemberDeclContext* c, Pou& owner, bool inInterface) {
     if (auto* m = c->method) owner.methods.push_back(method(m, owner.nameSpace, inInterface));
     else if (auto* a = c->action) {
-        if (inInterface) error(loc(a), "an INTERFACE cannot have an ACTION");
+        if (inInterface) error(diag::E0009, loc(a), "an INTERFACE cannot have an ACTION");
         else owner.methods.push_back(action(a, owner.nameSpace));
     }
     else if (auto* p = c->property) owner.properties.push_back(property(p, owner.nameSpace, inInterface));
@@ -231,7 +231,7 @@ std::unique_ptr<Pou> AstBuilder::method(P::MethodDeclContext* c, const std::stri
     stmtList(c->body, out->body);
     out->hasBody = !(inInterface || out->abstract);
     if (!out->hasBody && !out->body.empty()) {
-        error(out->body.front()->loc, inInterface ? "a method of an INTERFACE has no body (statements found in '" +
+        error(diag::E0009, out->body.front()->loc, inInterface ? "a method of an INTERFACE has no body (statements found in '" +
                                                         out->name + "')"
                                                   : "the ABSTRACT method '" + out->name + "' cannot have a body");
         out->body.clear();
@@ -279,7 +279,7 @@ Property AstBuilder::property(P::PropertyDeclContext* c, const std::string& name
         stmtList(body, pou->body);
         pou->hasBody = !prototype;
         if (prototype && !pou->body.empty()) {
-            error(pou->body.front()->loc, "the " + std::string(name) + " accessor of property '" + out.name +
+            error(diag::E0009, pou->body.front()->loc, "the " + std::string(name) + " accessor of property '" + out.name +
                                               "' cannot have a body here (interface or ABSTRACT)");
             pou->body.clear();
         }
@@ -289,11 +289,11 @@ Property AstBuilder::property(P::PropertyDeclContext* c, const std::string& name
 
     for (auto* a : c->accessors) {
         if (auto* g = exactly<P::PropertyGetterContext>(a)) {
-            if (out.getter) error(loc(g), "property '" + out.name + "' has more than one GET");
+            if (out.getter) error(diag::E0009, loc(g), "property '" + out.name + "' has more than one GET");
             out.getter = accessor(g, "GET", g->vars, g->body, g->end);
             modifiers(g->modifiers, out.getter->access, out.getter->abstract, out.getter->final);  // `GET PRIVATE`
         } else if (auto* s = exactly<P::PropertySetterContext>(a)) {
-            if (out.setter) error(loc(s), "property '" + out.name + "' has more than one SET");
+            if (out.setter) error(diag::E0009, loc(s), "property '" + out.name + "' has more than one SET");
             out.setter = accessor(s, "SET", s->vars, s->body, s->end);
             modifiers(s->modifiers, out.setter->access, out.setter->abstract, out.setter->final);  // `SET PROTECTED`
         }
@@ -324,7 +324,7 @@ void AstBuilder::typeDecl(P::TypeDeclContext* c, const std::string& nameSpace, C
         decl.spec = typeSpec(e->type);
         if (e->init) decl.init = initializer(e->init);
         if (!decl.extends.empty() && decl.spec && decl.spec->kind != TypeSpecKind::Struct)
-            error(decl.loc, "EXTENDS in a TYPE is only allowed for a STRUCT ('" + decl.name + "')");
+            error(diag::E0407, decl.loc, "EXTENDS in a TYPE is only allowed for a STRUCT ('" + decl.name + "')");
         unit.types.push_back(std::move(decl));
     }
 }

@@ -110,7 +110,7 @@ private:
     static std::string sourceText(antlr4::ParserRuleContext* c);  // as written, shortened for messages
     std::vector<Pragma> pragmasBefore(const antlr4::Token* token);
     const antlr4::Token* previousOnChannel(const antlr4::Token* token) const;  // null at the start
-    Diagnostic& error(const Loc& at, const std::string& message);
+    Diagnostic& error(diag::Code code, const Loc& at, const std::string& message);
 
     antlr4::BufferedTokenStream& tokens_;
     SyntaxErrorReporter& errors_;

@@ -106,7 +106,7 @@ ExprPtr AstBuilder::placeholder(const Loc& at) {
 // Past kMaxExpressionDepth: one error per file, and a placeholder.
 ExprPtr AstBuilder::tooComplex(const Loc& at) {
     if (!depthReported_)
-        error(at, fmt::format("expression too complex: more than {} nested operations", kMaxExpressionDepth));
+        error(diag::E0007, at, fmt::format("expression too complex: more than {} nested operations", kMaxExpressionDepth));
     depthReported_ = true;
     return placeholder(at);
 }
@@ -277,7 +277,7 @@ std::vector<Arg> AstBuilder::args(P::ArgListContext* c) {
             }
             const bool first = c->items.empty() || c->items.front()->getStart()->getTokenIndex() > c->commas[k]->getTokenIndex();
             if (first || (after != nullptr && after->getType() == L::COMMA)) {
-                error(loc(c->commas[k]), "empty argument: expected an expression before ','");
+                error(diag::E0001, loc(c->commas[k]), "empty argument: expected an expression before ','");
                 break;
             }
         }
@@ -302,7 +302,7 @@ std::vector<Arg> AstBuilder::args(P::ArgListContext* c) {
             }
         }
         if (name == nullptr) {
-            error(arg.loc, fmt::format("'{}' cannot name a parameter: expected 'name {} ...'",
+            error(diag::E0001, arg.loc, fmt::format("'{}' cannot name a parameter: expected 'name {} ...'",
                                        parts.empty() ? std::string() : sourceText(parts[0]), a->op->getText()));
             continue;
         }

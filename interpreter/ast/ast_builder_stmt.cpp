@@ -140,7 +140,7 @@ void AstBuilder::caseBranches(const std::vector<P::StatementContext*>& items, St
             continue;
         }
         if (out.cases.empty()) {
-            error(loc(item), "expected a CASE label ('value:') before the first statement of a CASE");
+            error(diag::E0503, loc(item), "expected a CASE label ('value:') before the first statement of a CASE");
             continue;
         }
         StmtPtr built = stmt(item);
@@ -159,13 +159,13 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
     const auto& operands = c->parts;
     if (operands.empty()) return nullptr;
     if (c->colon != nullptr && (c->dots != nullptr || !c->moreLabels.empty())) {
-        error(at, fmt::format("'{}' are CASE labels outside a CASE: a jump label is a name followed by ':'", sourceText(c)));
+        error(diag::E0503, at, fmt::format("'{}' are CASE labels outside a CASE: a jump label is a name followed by ':'", sourceText(c)));
         return nullptr;
     }
     if (c->colon != nullptr) {  // a jump label
         const antlr4::Token* name = bareName(operands[0]);
         if (name == nullptr) {
-            error(at, fmt::format("'{}' cannot be a label: a jump label is a name followed by ':'", sourceText(operands[0])));
+            error(diag::E0504, at, fmt::format("'{}' cannot be a label: a jump label is a name followed by ':'", sourceText(operands[0])));
             return nullptr;
         }
         auto s = makeStmt(StmtKind::Label, at);
@@ -180,15 +180,15 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
             if (const antlr4::Token* name = bareName(operands[0]); name != nullptr) {
                 const std::string keyword = mistypedEndKeyword(name->getText());
                 if (!keyword.empty()) {
-                    error(at, fmt::format("'{}' is not a keyword: did you mean '{}'?", name->getText(), keyword));
+                    error(diag::E0001, at, fmt::format("'{}' is not a keyword: did you mean '{}'?", name->getText(), keyword));
                     return nullptr;
                 }
             }
             const bool comparison = e->kind == ExprKind::Binary && e->op == Op::Eq;
-            Diagnostic& d = error(at, fmt::format("'{}' is not a statement: expected ':=' or a call with '(...)'{}",
+            Diagnostic& d = error(comparison ? diag::E0004 : diag::E0001, at, fmt::format("'{}' is not a statement: expected ':=' or a call with '(...)'{}",
                                                   sourceText(operands[0]),
                                                   comparison ? " (for an assignment write ':=', not '=')" : ""));
-            if (comparison) d.withCode("E0004").withHelp("'=' compares; assignment is ':=': x := 5;");
+            if (comparison) d.withHelp("'=' compares; assignment is ':=': x := 5;");
             return nullptr;
         }
         auto s = makeStmt(StmtKind::Call, at);
@@ -206,7 +206,7 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
         else if (op == "R") kind = StmtKind::ResetAssign;
         else if (op == "REF") kind = StmtKind::RefAssign;
         else {
-            error(loc(c->setOperator), "unknown assignment operator '" + text(c->setOperator) +
+            error(diag::E0001, loc(c->setOperator), "unknown assignment operator '" + text(c->setOperator) +
                                             "=', expected ':=', 'S=', 'R=', 'REF=' or '?='");
             return nullptr;
         }
@@ -214,7 +214,7 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
     // `a := b := 3;` (CODESYS): `b := 3;` first, then `a := b;` — the value
     // of an assignment is the value assigned (decision 0203).
     if (operands.size() > 2 && kind != StmtKind::Assign) {
-        error(loc(operands[2]), "only ':=' assignments can be chained (a := b := 3)");
+        error(diag::E0001, loc(operands[2]), "only ':=' assignments can be chained (a := b := 3)");
         return nullptr;
     }
     for (size_t k = operands.size() - 1; k >= 2 && kind == StmtKind::Assign; --k) {

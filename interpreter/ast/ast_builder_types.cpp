@@ -81,7 +81,7 @@ VarDecl AstBuilder::varDecl(P::VarDeclContext* c, VarSection section) {
         // VAR_CONFIG (and VAR_ACCESS) refer to other declarations that way.
         const bool isPath = n->getStart() != n->getStop();
         if (isPath && section != VarSection::Config && section != VarSection::Access)
-            error(loc(n), "'" + out.names.back() + "' is not a simple name; paths are only allowed in VAR_CONFIG");
+            error(diag::E0009, loc(n), "'" + out.names.back() + "' is not a simple name; paths are only allowed in VAR_CONFIG");
     }
     if (c->address != nullptr) out.address = c->address->getText();
     out.type = typeSpec(c->type);
@@ -91,7 +91,7 @@ VarDecl AstBuilder::varDecl(P::VarDeclContext* c, VarSection section) {
         std::string op = text(ref->refOperator);
         for (char& ch : op) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
         if (op != "REF") {
-            error(loc(ref->refOperator), "unknown initialisation operator '" + text(ref->refOperator) + "=', expected ':=' or 'REF='");
+            error(diag::E0001, loc(ref->refOperator), "unknown initialisation operator '" + text(ref->refOperator) + "=', expected ':=' or 'REF='");
         } else if (out.init == nullptr) {
             // A reference's initial value names the variable it refers to (as `:= x`).
             out.init = std::make_unique<Init>();

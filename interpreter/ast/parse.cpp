@@ -40,6 +40,17 @@ namespace {
 using L = strun_grammar::STLexer;
 using P = strun_grammar::STParser;
 
+// A comment, pragma or string the file ends inside (E0005; other error tokens are E0006).
+bool isUnterminated(const antlr4::Token& token) {
+    switch (token.getType()) {
+        case L::UNTERMINATED_BLOCK_COMMENT: case L::UNTERMINATED_C_COMMENT: case L::UNTERMINATED_PRAGMA:
+        case L::UNTERMINATED_STRING: case L::UNTERMINATED_WSTRING:
+            return true;
+        default:
+            return false;
+    }
+}
+
 std::string lexerErrorMessage(const antlr4::Token& token) {
     switch (token.getType()) {
         case L::UNTERMINATED_BLOCK_COMMENT: return "unterminated comment: '(*' has no matching '*)'";
@@ -101,9 +112,9 @@ public:
                 AstBuilder builder(tokens_, reporter_, fileIndex_);
                 unit = builder.build(tree);
             } catch (const std::exception& e) {
-                log_.error(Loc{fileIndex_, 1, 1}, std::string("internal parser error: ") + e.what());
+                log_.error(diag::E0001, Loc{fileIndex_, 1, 1}, std::string("internal parser error: ") + e.what());
             } catch (...) {
-                log_.error(Loc{fileIndex_, 1, 1}, "internal parser error");
+                log_.error(diag::E0001, Loc{fileIndex_, 1, 1}, "internal parser error");
             }
         });
         return unit;
@@ -130,7 +141,7 @@ private:
                 ++col;  // count code points, as the scanner does
             }
         }
-        log_.warning(Loc{fileIndex_, line, col},
+        log_.warning(diag::W0006, Loc{fileIndex_, line, col},
                      "the file is not valid UTF-8: " + std::to_string(invalidBytes_) +
                          " byte(s) replaced by U+FFFD, the first here");
     }
@@ -140,7 +151,7 @@ private:
     bool lexWithinLimit() {
         if (scan_.overLimit) {
             const ScannedToken& at = scan_.tokens[scan_.tokens.size() - 2];  // the last before EOF
-            log_.error(Loc{fileIndex_, static_cast<int>(at.line), static_cast<int>(at.column) + 1},
+            log_.error(diag::E0007, Loc{fileIndex_, static_cast<int>(at.line), static_cast<int>(at.column) + 1},
                        "the file has more than " + std::to_string(kMaxTokensPerFile) + " tokens (the limit per source file)");
             return false;
         }
@@ -152,7 +163,7 @@ private:
     void reportEmptyDeclarations() {
         for (std::size_t i : scan_.emptyDeclarations) {
             const ScannedToken& t = scan_.tokens[i];
-            log_.warning(Loc{fileIndex_, static_cast<int>(t.line), static_cast<int>(t.column) + 1},
+            log_.warning(diag::W0040, Loc{fileIndex_, static_cast<int>(t.line), static_cast<int>(t.column) + 1},
                          "an empty declaration: this ';' ends nothing and is ignored");
         }
     }
@@ -193,7 +204,7 @@ private:
             } else {
                 continue;
             }
-            reporter_.report(a->getLine(), a->getCharPositionInLine(), "ST has no '" + op + "' operator").withHelp(help)
+            reporter_.report(diag::E0004, a->getLine(), a->getCharPositionInLine(), "ST has no '" + op + "' operator").withHelp(help)
                 .spanTo(static_cast<int>(a->getLine()), static_cast<int>(a->getCharPositionInLine() + op.size()) + 1);
             if (pair && op.size() == 2) ++i;
         }
@@ -229,8 +240,7 @@ private:
             if (!std::regex_match(text, m, kMessage)) continue;
             const Loc at{fileIndex_, static_cast<int>(t->getLine()), static_cast<int>(t->getCharPositionInLine()) + 1};
             const bool isError = m[1].str().size() == 5;  // "error"
-            Diagnostic& d = isError ? log_.error(at, m[2].str()) : log_.warning(at, m[2].str());
-            d.withCode(isError ? "E0010" : "W0010");
+            Diagnostic& d = isError ? log_.error(diag::E0010, at, m[2].str()) : log_.warning(diag::W0010, at, m[2].str());
             if (text.find('\n') == std::string::npos) d.spanTo(at.line, at.col + static_cast<int>(text.size()));
         }
     }
@@ -243,7 +253,8 @@ private:
         for (antlr4::Token& each : tokens_.views()) {
             antlr4::Token* token = &each;
             if (token->getChannel() == L::ERRORS) {
-                reporter_.report(token->getLine(), token->getCharPositionInLine(), lexerErrorMessage(*token),
+                reporter_.report(isUnterminated(*token) ? diag::E0005 : diag::E0006, token->getLine(),
+                                 token->getCharPositionInLine(), lexerErrorMessage(*token),
                                  token->getType() != L::ERROR_CHAR);
                 // The statement an unterminated string cut off ends on the next line: one error, not two.
                 if (token->getType() == L::UNTERMINATED_STRING || token->getType() == L::UNTERMINATED_WSTRING)
@@ -258,7 +269,7 @@ private:
             }
         }
         if (auto violation = findExcessiveNesting(onChannel)) {
-            log_.error(Loc{fileIndex_, static_cast<int>(violation->token->getLine()),
+            log_.error(diag::E0007, Loc{fileIndex_, static_cast<int>(violation->token->getLine()),
                            static_cast<int>(violation->token->getCharPositionInLine()) + 1},
                        "syntax error: " + violation->message);
             return false;
@@ -306,9 +317,9 @@ CompilationUnit parseFile(const SourceSet& sources, int fileIndex, CompileLog& l
         FileParser parser(sources, fileIndex, log, halvesFrom);
         return parser.run();
     } catch (const std::exception& e) {
-        log.error(Loc{fileIndex, 1, 1}, std::string("internal parser error: ") + e.what());
+        log.error(diag::E0001, Loc{fileIndex, 1, 1}, std::string("internal parser error: ") + e.what());
     } catch (...) {
-        log.error(Loc{fileIndex, 1, 1}, "internal parser error");
+        log.error(diag::E0001, Loc{fileIndex, 1, 1}, "internal parser error");
     }
     CompilationUnit unit;
     unit.file = fileIndex;

@@ -99,7 +99,7 @@ std::string describeFoundToken(const antlr4::Token* token) {
 }
 
 std::string FriendlyErrorStrategy::message(antlr4::Parser* parser, antlr4::Token* found,
-                                           const antlr4::misc::IntervalSet& expected) {
+                                           const antlr4::misc::IntervalSet& expected, diag::Code* code) {
     const auto& vocabulary = parser->getVocabulary();
     std::vector<std::string> names;
     std::vector<std::string> structural;
@@ -116,7 +116,16 @@ std::string FriendlyErrorStrategy::message(antlr4::Parser* parser, antlr4::Token
             structural.push_back(name);
     }
     std::string text = "unexpected " + describeFoundToken(found);
-    if (!names.empty() && names.size() <= 4) return text + ", expected " + joinAlternatives(names);
+    // What alone is expected names the kind of mistake: a missing ';' (E0002),
+    // a construct left open (E0003); anything else is E0001.
+    auto expecting = [&](const std::vector<std::string>& alternatives) {
+        *code = diag::E0001;
+        if (alternatives.size() == 1 && alternatives[0] == "';'") *code = diag::E0002;
+        if (alternatives.size() == 1 && alternatives[0].rfind("'END_", 0) == 0) *code = diag::E0003;
+        return text + ", expected " + joinAlternatives(alternatives);
+    };
+    *code = diag::E0001;
+    if (!names.empty() && names.size() <= 4) return expecting(names);
 
     std::vector<std::string> hint;
     antlr4::ParserRuleContext* context = parser->getContext();
@@ -127,7 +136,7 @@ std::string FriendlyErrorStrategy::message(antlr4::Parser* parser, antlr4::Token
     if (structural.size() <= 3)
         hint.insert(hint.end(), structural.begin(), structural.end());
     if (hint.empty()) return text;
-    return text + ", expected " + joinAlternatives(hint);
+    return expecting(hint);
 }
 
 namespace {
@@ -251,7 +260,7 @@ bool FriendlyErrorStrategy::reportMistypedKeyword(antlr4::Parser* parser, antlr4
         if (word == nullptr || !P::isNameToken(word->getType())) return false;
         const std::string keyword = mistypedEndKeyword(word->getText());
         if (keyword.empty()) return false;
-        reporter_->report(word->getLine(), word->getCharPositionInLine(),
+        reporter_->report(diag::E0001, word->getLine(), word->getCharPositionInLine(),
                           fmt::format("'{}' is not a keyword: did you mean '{}'?", word->getText(), keyword));
         return true;
     };
@@ -301,7 +310,7 @@ bool FriendlyErrorStrategy::reportUnclosedVarBlock(antlr4::Parser* parser, antlr
             break;
     }
     antlr4::Token* opener = block->getStart();
-    Diagnostic& d = reporter_->report(opener->getLine(), opener->getCharPositionInLine(),
+    Diagnostic& d = reporter_->report(diag::E0003, opener->getLine(), opener->getCharPositionInLine(),
                                       fmt::format("'{}' has no matching 'END_VAR'", opener->getText()));
     d.note(Loc{reporter_->fileIndex(), static_cast<int>(before->getLine()), static_cast<int>(before->getCharPositionInLine()) + 1},
            fmt::format("'END_VAR' expected before {}", describeFoundToken(before)));
@@ -312,7 +321,7 @@ bool FriendlyErrorStrategy::reportUnclosedVarBlock(antlr4::Parser* parser, antlr
 void reportMissingDeclarationSemicolon(SyntaxErrorReporter& reporter, antlr4::TokenStream* tokens, antlr4::Token* first,
                                        antlr4::Token* last) {
     const size_t column = last->getCharPositionInLine() + codePoints(last->getText());
-    reporter.report(last->getLine(), column, fmt::format("expected ';' after '{}'", excerpt(tokens, first, last)));
+    reporter.report(diag::E0002, last->getLine(), column, fmt::format("expected ';' after '{}'", excerpt(tokens, first, last)));
 }
 
 bool FriendlyErrorStrategy::reportMissingSemicolon(antlr4::Parser* parser, antlr4::Token* found,
@@ -344,7 +353,7 @@ bool FriendlyErrorStrategy::reportMissingSemicolon(antlr4::Parser* parser, antlr
         }
     }
     const size_t column = prev->getCharPositionInLine() + codePoints(prev->getText());
-    Diagnostic& d = reporter_->report(prev->getLine(), column, fmt::format("expected ';' after '{}'", excerpt(tokens, first, prev)));
+    Diagnostic& d = reporter_->report(diag::E0002, prev->getLine(), column, fmt::format("expected ';' after '{}'", excerpt(tokens, first, prev)));
     if (inDeclaration && P::isNameToken(found->getType()))
         d.note(fmt::format("the declaration of '{}' on the next line is skipped until the ';' is there", found->getText()));
     return true;
@@ -369,7 +378,7 @@ bool FriendlyErrorStrategy::reportUnclosedBlock(antlr4::Parser* parser, antlr4::
         antlr4::Token* opener = c->getStart();
         if (opener == nullptr) return false;
         const std::string closerName = parser->getVocabulary().getSymbolicName(closer);
-        Diagnostic& d = reporter_->report(opener->getLine(), opener->getCharPositionInLine(),
+        Diagnostic& d = reporter_->report(diag::E0003, opener->getLine(), opener->getCharPositionInLine(),
                                           fmt::format("'{}' has no matching '{}'", opener->getText(), closerName));
         d.note(Loc{reporter_->fileIndex(), static_cast<int>(found->getLine()), static_cast<int>(found->getCharPositionInLine()) + 1},
                fmt::format("'{}' expected before {}", closerName, describeFoundToken(found)));
@@ -406,8 +415,8 @@ void FriendlyErrorStrategy::reportAt(antlr4::Parser* parser, antlr4::Token* foun
     // `IF x := 1 THEN`: the C habit of assigning in a condition, or '=' mistyped.
     if (reporter_ != nullptr && found != nullptr && found->getType() == L::ASSIGN &&
         (expected.contains(static_cast<size_t>(L::THEN)) || expected.contains(static_cast<size_t>(L::DO)))) {
-        reporter_->report(found->getLine(), found->getCharPositionInLine(), "':=' in a condition: a condition compares, it does not assign")
-            .withCode("E0004")
+        reporter_->report(diag::E0004, found->getLine(), found->getCharPositionInLine(),
+                          "':=' in a condition: a condition compares, it does not assign")
             .withHelp("compare with '=': IF x = 1 THEN");
         // Recovery drops the statement, so its END_IF / END_WHILE comes unexpected: the same mistake.
         orphanCloser_ = expected.contains(static_cast<size_t>(L::THEN)) ? L::END_IF : L::END_WHILE;
@@ -431,7 +440,10 @@ void FriendlyErrorStrategy::reportAt(antlr4::Parser* parser, antlr4::Token* foun
         parser->notifyErrorListeners(word, "unexpected " + describeFoundToken(word) + ", expected ':=', ';' or ':'", nullptr);
         return;
     }
-    parser->notifyErrorListeners(found, message(parser, found, expected), nullptr);
+    diag::Code code = diag::E0001;
+    std::string text = message(parser, found, expected, &code);
+    if (reporter_ != nullptr) reporter_->codeOfNext(code);
+    parser->notifyErrorListeners(found, text, nullptr);
 }
 
 void FriendlyErrorStrategy::reportNoViableAlternative(antlr4::Parser* parser, const antlr4::NoViableAltException& e) {
@@ -470,20 +482,22 @@ antlr4::Token* FriendlyErrorStrategy::singleTokenDeletion(antlr4::Parser* parser
 
 void SyntaxErrorReporter::syntaxError(antlr4::Recognizer*, antlr4::Token*, size_t line, size_t charPositionInLine,
                                       const std::string& msg, std::exception_ptr) {
-    report(line, charPositionInLine, msg);
+    const diag::Code code = nextCode_;
+    nextCode_ = diag::E0001;
+    report(code, line, charPositionInLine, msg);
 }
 
-Diagnostic& SyntaxErrorReporter::report(size_t line, size_t charPositionInLine, const std::string& msg, bool always) {
+Diagnostic& SyntaxErrorReporter::report(diag::Code code, size_t line, size_t charPositionInLine, const std::string& msg, bool always) {
     scratch_ = Diagnostic{};
     if (silenced_ && !always) return scratch_;
     if (!linesWithError_.insert(line).second && !always) return scratch_;
     if (reported_ > kMaxErrorsPerFile) return scratch_;
     if (reported_++ == kMaxErrorsPerFile) {
-        log_.error(Loc{fileIndex_, static_cast<int>(line), static_cast<int>(charPositionInLine) + 1},
+        log_.error(diag::E0007, Loc{fileIndex_, static_cast<int>(line), static_cast<int>(charPositionInLine) + 1},
                    "syntax error: too many errors in this file, the rest are not reported");
         return scratch_;
     }
-    return log_.error(Loc{fileIndex_, static_cast<int>(line), static_cast<int>(charPositionInLine) + 1},
+    return log_.error(code, Loc{fileIndex_, static_cast<int>(line), static_cast<int>(charPositionInLine) + 1},
                       "syntax error: " + msg);
 }
 

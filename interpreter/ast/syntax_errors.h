@@ -45,8 +45,8 @@ protected:
     antlr4::Token* singleTokenDeletion(antlr4::Parser* parser) override;
 
 private:
-    // "unexpected X, expected Y" for `found` with the given expected set.
-    std::string message(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected);
+    // "unexpected X, expected Y" for `found` with the given expected set, and its code.
+    std::string message(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected, diag::Code* code);
     // Reports the error at `found`, or the better-placed error it stands for:
     // a missing ';' after the previous token, a block whose END_ keyword is missing.
     void reportAt(antlr4::Parser* parser, antlr4::Token* found, const antlr4::misc::IntervalSet& expected);
@@ -83,7 +83,10 @@ public:
     // (an unterminated comment or string must be reported even on a line
     // that already has an error: it explains everything after it).
     // Returns the diagnostic for notes and help (a scratch one when the message is suppressed).
-    Diagnostic& report(size_t line, size_t charPositionInLine, const std::string& msg, bool always = false);
+    Diagnostic& report(diag::Code code, size_t line, size_t charPositionInLine, const std::string& msg, bool always = false);
+    // The code of the next error the parser reports through syntaxError()
+    // (its messages pass through ANTLR, which carries text only); E0001 when not set.
+    void codeOfNext(diag::Code code) { nextCode_ = code; }
     int fileIndex() const { return fileIndex_; }
     // Counts `line` as having its error already (a cascade of one reported elsewhere).
     void markLine(size_t line) { linesWithError_.insert(line); }
@@ -92,6 +95,7 @@ public:
 
 private:
     Diagnostic scratch_;
+    diag::Code nextCode_ = diag::E0001;
     bool silenced_ = false;
     CompileLog& log_;
     int fileIndex_;

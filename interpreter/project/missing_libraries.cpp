@@ -63,8 +63,9 @@ void groupMissingLibraryNames(CompileLog& log, const std::vector<std::string>& r
         std::string list;
         for (size_t k = 0; k < g.names.size() && k < kNamesShown; ++k) list += (k ? ", " : "") + g.names[k];
         if (g.names.size() > kNamesShown) list += fmt::format(" and {} more", g.names.size() - kNamesShown);
-        log.error(g.loc, fmt::format("library {} is not available: {} {} unknown", lib, list, g.names.size() == 1 ? "is" : "are"))
-            .withCode(g.code)
+        // The code of the first message it replaces (E0101 undeclared, E0102 unknown type, ...).
+        log.error(diag::fromText(g.code).value_or(diag::E0101), g.loc,
+                  fmt::format("library {} is not available: {} {} unknown", lib, list, g.names.size() == 1 ? "is" : "are"))
             .withHelp(fmt::format("the project's .plcproj references {}, which strun does not provide (docs/libraries.md lists "
                                   "what it provides)",
                                   lib));

@@ -54,14 +54,6 @@ public:
         discarded_ = Diagnostic{};
         return discarded_;
     }
-    // Without a code: classified by its wording (decision 0160), for call
-    // sites not converted yet (docs/diagnostics.md, "Adding a diagnostic").
-    Diagnostic& error(const ast::Loc& loc, const std::string& message) { return log_.error(loc, message); }
-    Diagnostic& warning(const ast::Loc& loc, const std::string& message) {
-        if (!libraryFiles_.count(loc.file)) return log_.warning(loc, message);
-        discarded_ = Diagnostic{};
-        return discarded_;
-    }
     // What CODESYS accepts and IEC 61131-3 does not (implicit narrowing, a constant
     // expression that wraps): a warning by default, an error with --strict
     // (decision 0090). Returns false when it was an error. The embedded library
@@ -70,11 +62,6 @@ public:
     bool lenient(diag::Code code, const ast::Loc& loc, const std::string& message, const std::string& errorHint = "") {
         if (options_.strict && !libraryFiles_.count(loc.file)) { error(code, loc, message + errorHint); return false; }
         warning(code, loc, message);
-        return true;
-    }
-    bool lenient(const ast::Loc& loc, const std::string& message, const std::string& errorHint = "") {
-        if (options_.strict && !libraryFiles_.count(loc.file)) { error(loc, message + errorHint); return false; }
-        warning(loc, message);
         return true;
     }
     // Converts `e` implicitly to `target` (errors if the standard forbids it).

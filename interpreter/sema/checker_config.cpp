@@ -222,12 +222,12 @@ void Checker::buildConfiguration() {
             s.watchdog = s.kind == rt::TaskKind::Cyclic ? 2 * s.interval : 200 * rt::kMillisecond;
             if (profile().maxWatchdog > 0) s.watchdog = std::min(s.watchdog, profile().maxWatchdog);
         }
-        if (std::string warning = rt::applyTaskDefaults(profile(), s); !warning.empty()) log_.warning(s.loc, warning);
+        if (std::string warning = rt::applyTaskDefaults(profile(), s); !warning.empty()) log_.warning(diag::W0007, s.loc, warning);
         model_.tasks.push_back(std::move(task));
     }
     std::vector<rt::TaskSpec> specs;
     for (auto& t : model_.tasks) specs.push_back(t.spec);
-    for (const auto& v : rt::checkTaskRules(profile(), specs)) error(v.loc, v.message);
+    for (const auto& v : rt::checkTaskRules(profile(), specs)) error(v.unavailableOnTarget ? diag::E0602 : diag::E0601, v.loc, v.message);
     // Indices, not pointers: the unassigned-program task below is added to model_.tasks.
     std::unordered_map<std::string, size_t> taskByName;  // the first of a name, as a scan finds it
     for (size_t i = 0; i < model_.tasks.size(); ++i) taskByName.try_emplace(upper(model_.tasks[i].spec.name), i);

@@ -88,14 +88,14 @@ Checked Checker::settle(Checked e) {
 // ---------------------------------------------------------------- literals
 
 Checked Checker::checkLiteral(const ast::Expr& e) {
-    auto fail = [&](const std::string& why) {
-        error(e.loc, why);
+    auto fail = [&](diag::Code code, const std::string& why) {
+        error(code, e.loc, why);
         return bad(e.loc);
     };
     switch (e.lit) {
         case ast::LitKind::Integer: {
             auto r = stdlib::parseIntegerLiteral(e.text);
-            if (!r) return fail(fmt::format("invalid integer literal '{}': {}", e.text.substr(0, 40), r.error()));
+            if (!r) return fail(diag::E0011, fmt::format("invalid integer literal '{}': {}", e.text.substr(0, 40), r.error()));
             Checked c = constInt(static_cast<int64_t>(r.value()), types().elementary(TK::LInt), e.loc);
             if (r.value() > static_cast<uint64_t>(std::numeric_limits<int64_t>::max())) {
                 c.type = types().elementary(TK::ULInt);
@@ -110,7 +110,7 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
         }
         case ast::LitKind::Real: {
             auto r = stdlib::parseRealLiteral(e.text);
-            if (!r) return fail(fmt::format("invalid real literal '{}': {}", e.text.substr(0, 40), r.error()));
+            if (!r) return fail(diag::E0011, fmt::format("invalid real literal '{}': {}", e.text.substr(0, 40), r.error()));
             Checked c = constReal(r.value(), types().elementary(TK::LReal), e.loc);
             c.untypedReal = true;
             return c;
@@ -126,18 +126,18 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
             size_t len = 0;
             if (wide) {
                 auto r = stdlib::parseWideStringLiteral(e.text);
-                if (!r) return fail(fmt::format("invalid string literal: {}", r.error()));
+                if (!r) return fail(diag::E0011, fmt::format("invalid string literal: {}", r.error()));
                 len = r.value().size();
                 bytes.resize((len + 1) * 2);
                 std::memcpy(bytes.data(), r.value().data(), len * 2);
             } else {
                 auto r = stdlib::parseStringLiteral(e.text);
-                if (!r) return fail(fmt::format("invalid string literal: {}", r.error()));
+                if (!r) return fail(diag::E0011, fmt::format("invalid string literal: {}", r.error()));
                 len = r.value().size();
                 bytes.resize(len + 1);
                 std::memcpy(bytes.data(), r.value().data(), len);
             }
-            if (len > 65535) return fail("string literal longer than 65535 characters");
+            if (len > 65535) return fail(diag::E0007, "string literal longer than 65535 characters");
             Checked c;
             c.ok = true;
             c.isConst = true;
@@ -153,7 +153,7 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
             bool isLong = u.rfind("LT", 0) == 0;
             bool saturated = false;
             auto r = stdlib::parseDurationLiteral(e.text, isLong, &saturated);
-            if (!r) return fail(fmt::format("invalid duration literal '{}': {}", e.text.substr(0, 40), r.error()));
+            if (!r) return fail(diag::E0011, fmt::format("invalid duration literal '{}': {}", e.text.substr(0, 40), r.error()));
             if (saturated)  // TwinCAT's LTIME is unsigned; strun's is signed (decision 0092)
                 warning(diag::W0005, e.loc, fmt::format("'{}' is beyond the largest LTIME (2^63-1 ns); it is taken as LTIME#106751d23h47m16s854ms775us807ns", e.text.substr(0, 60)));
             if (isLong) return constInt(r.value(), types().elementary(TK::LTime), e.loc);
@@ -167,7 +167,7 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
                 ms = std::numeric_limits<int32_t>::max();
             }
             if (ms > std::numeric_limits<int32_t>::max() || ms < std::numeric_limits<int32_t>::min())
-                return fail(fmt::format("'{}' is outside the range of TIME (32-bit milliseconds); use LTIME", e.text));
+                return fail(diag::E0205, fmt::format("'{}' is outside the range of TIME (32-bit milliseconds); use LTIME", e.text));
             return constInt(ms, types().elementary(TK::Time), e.loc);
         }
         case ast::LitKind::Date:
@@ -178,7 +178,7 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
             stdlib::Result<int64_t> r = e.lit == ast::LitKind::Date ? stdlib::parseDateLiteral(e.text)
                                         : e.lit == ast::LitKind::TimeOfDay ? stdlib::parseTimeOfDayLiteral(e.text)
                                                                           : stdlib::parseDateTimeLiteral(e.text);
-            if (!r) return fail(fmt::format("invalid literal '{}': {}", e.text.substr(0, 40), r.error()));
+            if (!r) return fail(diag::E0011, fmt::format("invalid literal '{}': {}", e.text.substr(0, 40), r.error()));
             if (isLong) {
                 TK k = e.lit == ast::LitKind::Date ? TK::LDate : e.lit == ast::LitKind::TimeOfDay ? TK::LTod : TK::LDt;
                 return constInt(r.value(), types().elementary(k), e.loc);
@@ -186,7 +186,7 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
             if (e.lit == ast::LitKind::TimeOfDay) return constInt(r.value() / 1000000, types().elementary(TK::Tod), e.loc);
             int64_t secs = r.value() / 1000000000;
             if (r.value() < 0 || secs > 0xFFFFFFFFll)
-                return fail(fmt::format("'{}' is outside the range of {} (1970..2106); use the L-form", e.text,
+                return fail(diag::E0205, fmt::format("'{}' is outside the range of {} (1970..2106); use the L-form", e.text,
                                         e.lit == ast::LitKind::Date ? "DATE" : "DT"));
             return constInt(secs, types().elementary(e.lit == ast::LitKind::Date ? TK::Date : TK::Dt), e.loc);
         }
@@ -203,11 +203,11 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
                 std::string uv = upper(v);
                 if (uv == "1" || uv == "TRUE") return constInt(1, t, e.loc);
                 if (uv == "0" || uv == "FALSE") return constInt(0, t, e.loc);
-                return fail(fmt::format("invalid BOOL literal '{}'", v));
+                return fail(diag::E0011, fmt::format("invalid BOOL literal '{}'", v));
             }
             if (isReal(t->kind)) {
                 auto r = stdlib::parseRealLiteral(v);
-                if (!r) return fail(fmt::format("invalid real literal '{}': {}", v, r.error()));
+                if (!r) return fail(diag::E0011, fmt::format("invalid real literal '{}': {}", v, r.error()));
                 return constReal(r.value(), t, e.loc);
             }
             if (isInteger(t->kind) || isBitString(t->kind)) {
@@ -215,13 +215,13 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
                 std::string_view body = v;
                 if (!body.empty() && (body[0] == '-' || body[0] == '+')) body.remove_prefix(1);
                 auto r = stdlib::parseIntegerLiteral(body);
-                if (!r) return fail(fmt::format("invalid integer literal '{}': {}", v, r.error()));
+                if (!r) return fail(diag::E0011, fmt::format("invalid integer literal '{}': {}", v, r.error()));
                 uint64_t mag = r.value();
                 bool big = mag > static_cast<uint64_t>(std::numeric_limits<int64_t>::max());
                 int64_t val = neg ? static_cast<int64_t>(0 - mag) : static_cast<int64_t>(mag);
-                if (neg && big && mag != (uint64_t(1) << 63)) return fail(fmt::format("'{}#{}' is out of range", e.typePrefix, v));
+                if (neg && big && mag != (uint64_t(1) << 63)) return fail(diag::E0205, fmt::format("'{}#{}' is out of range", e.typePrefix, v));
                 bool fits = fitsIn(val, big && !neg, t);
-                if (!fits) return fail(fmt::format("'{}#{}' is outside the range of {}", e.typePrefix, v, t->name));
+                if (!fits) return fail(diag::E0205, fmt::format("'{}#{}' is outside the range of {}", e.typePrefix, v, t->name));
                 return constInt(val, t, e.loc);
             }
             if (isStringType(t->kind) || isCharType(t->kind) || isTimeLike(t->kind) || isDateLike(t->kind)) {
@@ -245,7 +245,7 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
                 if (s.ok && isStringType(t->kind)) return coerce(s, t, e.loc, "literal");
                 return s;
             }
-            return fail(fmt::format("'{}' cannot prefix a literal", e.typePrefix));
+            return fail(diag::E0011, fmt::format("'{}' cannot prefix a literal", e.typePrefix));
         }
     }
     return bad(e.loc);

@@ -24,7 +24,7 @@ struct Diagnostic {
     Severity severity = Severity::Error;
     ast::Loc loc;
     std::string message;
-    std::string code;  // E0101, W0003, ...; set from the catalogue when the reporter gave none
+    std::string code;  // E0101, W0003, ...: the one the reporting site gave (diagnostic_code.h)
     // The span's end (same file), exclusive column; 0: the renderer underlines
     // the token at `loc`.
     int endLine = 0;
@@ -32,7 +32,7 @@ struct Diagnostic {
     std::vector<DiagnosticNote> notes;
     std::vector<std::string> help;
 
-    // Chained by the reporting sites: log.error(loc, msg).note(at, "...").withHelp("...").
+    // Chained by the reporting sites: log.error(diag::E0101, loc, msg).note(at, "...").withHelp("...").
     Diagnostic& note(const ast::Loc& at, std::string text) {
         notes.push_back({at, std::move(text)});
         return *this;
@@ -43,10 +43,6 @@ struct Diagnostic {
     }
     Diagnostic& withHelp(std::string text) {
         help.push_back(std::move(text));
-        return *this;
-    }
-    Diagnostic& withCode(std::string c) {
-        code = std::move(c);
         return *this;
     }
     Diagnostic& spanTo(int line, int col) {

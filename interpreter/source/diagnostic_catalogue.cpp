@@ -64,6 +64,11 @@ const std::vector<CodeInfo> kCatalogue = {
      "that text (typically: something must be configured before the code can be used).",
      "{error 'set the number of axes in GVL_Config first'}", ""},
     // ---- names (E01xx)
+    {"E0011", K::Error, "invalid literal",
+     "A literal that has the form of one but no valid value: an integer beyond 64 bits, a real beyond LREAL, a date "
+     "or time of day that does not exist (D#2026-02-30), a duration with an unknown unit, a string with an unknown "
+     "'$' escape, a type prefix that does not make a literal (STRING#5).",
+     "d := D#2026-02-30;", "d := D#2026-02-28;"},
     {"E0101", K::Error, "undeclared identifier",
      "The name is not declared where it is used: not a variable of the POU, not a global (or VAR_EXTERNAL), not an "
      "enumeration value. Check the spelling (strun suggests the closest declared name), or declare the variable in "
@@ -221,9 +226,6 @@ const std::vector<CodeInfo> kCatalogue = {
      "A system variable, address or function exists only on another PLC family than the one selected with "
      "--target.",
      "x := %SW30;  (* only with --target m340 *)", "x := %SW30;  (* strun check --target m340 FILE *)"},
-    {"E0999", K::Error, "other compile error",
-     "A compile error without a more specific code. The message says what is wrong.", "", ""},
-    // ---- warnings (W00xx)
     {"W0001", K::Warning, "implicit conversion",
      "A numeric value is converted implicitly in a way IEC 61131-3 does not allow (narrowing, signed/unsigned, REAL "
      "to integer, enumeration to integer). strun accepts it like CODESYS and converts as the explicit function "
@@ -244,15 +246,6 @@ const std::vector<CodeInfo> kCatalogue = {
      "The LTIME literal is above 2^63-1 ns (about 106751 days), the largest LTIME strun holds (TwinCAT's unsigned "
      "range goes further); it is taken as the largest value (decision 0092).",
      "t := LTIME#200000d;", "t := LTIME#100000d;"},
-    {"W0040", K::Warning, "an empty declaration",
-     "A ';' right after another one in a VAR block or STRUCT (`x : INT;;`) declares nothing. It is ignored "
-     "(decision 0276); remove it.",
-     "VAR x : INT;; END_VAR", "VAR x : INT; END_VAR"},
-    {"W0041", K::Warning, "TIME literal beyond strun's range",
-     "The TIME literal is above 2^31-1 ms (T#24d20h31m23s647ms), the largest TIME strun holds: strun's TIME is "
-     "signed so that durations may be negative, TwinCAT's and CODESYS' is unsigned up to T#49d17h2m47s295ms. It is "
-     "taken as the largest TIME (decision 0277); use LTIME for longer durations.",
-     "t := T#48d;", "t := T#24d; (* or an LTIME: LTIME#48d *)"},
     {"W0006", K::Warning, "the file is not valid UTF-8",
      "The file contains bytes that are not UTF-8 (often a Latin-1 file). They are replaced by U+FFFD; in comments "
      "that does no harm, in strings it changes the text. Save the file as UTF-8.",
@@ -309,9 +302,20 @@ const std::vector<CodeInfo> kCatalogue = {
      "always points at a read of the initial value.",
      "FUNCTION Total : INT\nVAR_INPUT x : INT; END_VAR\nVAR sum : INT; END_VAR\nsum := sum + x;\nTotal := sum;\nEND_FUNCTION",
      "FUNCTION Total : INT\nVAR_INPUT x : INT; END_VAR\nVAR sum : INT := 0; END_VAR\nsum := sum + x;\nTotal := sum;\nEND_FUNCTION"},
-    {"W0999", K::Warning, "other warning", "A warning without a more specific code. The message says what it is.",
+    {"W0040", K::Warning, "an empty declaration",
+     "A ';' right after another one in a VAR block or STRUCT (`x : INT;;`) declares nothing. It is ignored "
+     "(decision 0276); remove it.",
+     "VAR x : INT;; END_VAR", "VAR x : INT; END_VAR"},
+    {"W0041", K::Warning, "TIME literal beyond strun's range",
+     "The TIME literal is above 2^31-1 ms (T#24d20h31m23s647ms), the largest TIME strun holds: strun's TIME is "
+     "signed so that durations may be negative, TwinCAT's and CODESYS' is unsigned up to T#49d17h2m47s295ms. It is "
+     "taken as the largest TIME (decision 0277); use LTIME for longer durations.",
+     "t := T#48d;", "t := T#24d; (* or an LTIME: LTIME#48d *)"},
+    {"W0042", K::Warning, "a file of a directory argument is skipped",
+     "A `.xml` file found in a directory given on the command line is not a PLCopen TC6 project (a JUnit report, "
+     "another tool's settings): it is left out of the project with this warning instead of stopping the compile "
+     "(decision 0208). Named on the command line itself, such a file is an error (E0008).",
      "", ""},
-    // ---- runtime faults (the diagnostic buffer; names fixed by the outside interface)
     {"ARRAY_BOUNDS", K::Runtime, "array subscript out of range (runtime)",
      "An array subscript was outside the declared bounds while the program ran. The faulty read yields 0 and the "
      "faulty write is dropped; the program-error task runs if one is configured, otherwise the PLC goes to STOP "

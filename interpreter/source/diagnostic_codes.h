@@ -1,7 +1,7 @@
 // The catalogue of diagnostic codes: the one table from which `strun explain
 // CODE` and the pages docs/diagnostics/<CODE>.md are produced (the ctest
-// diagnostics.docs_in_sync fails when a committed page differs), and the
-// rules that give each compile message its code.
+// diagnostics.docs_in_sync fails when a committed page differs). Each compile
+// diagnostic gets its code where it is raised (diagnostic_code.h).
 //
 // Codes are stable: E0xxx compile errors, W0xxx warnings (each can be
 // silenced or raised with -W), and the runtime fault codes of the diagnostic
@@ -11,10 +11,6 @@
 #include <string>
 #include <string_view>
 #include <vector>
-
-namespace strun {
-enum class Severity;
-}
 
 namespace strun::diagnostics {
 
@@ -33,9 +29,6 @@ struct CodeInfo {
 const std::vector<CodeInfo>& catalogue();
 // The entry of `code` (case-insensitive), or null.
 const CodeInfo* find(std::string_view code);
-// The code of a compile message the reporter gave no code: by the message's
-// wording (the catalogue's classification rules), else E0999 / W0999.
-std::string classify(Severity severity, const std::string& message);
 // The page of one code as Markdown (docs/diagnostics/<CODE>.md) ...
 std::string markdownPage(const CodeInfo& info);
 // ... and as plain text for `strun explain`.

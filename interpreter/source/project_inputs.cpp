@@ -73,10 +73,10 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
             int raw = sources.add(path, "", {}, text);
             if (foundInDirectory) {
                 // A JUnit report or another tool's XML left in the project folder (decision 0208).
-                log.warning(ast::Loc{raw, 1, 1}, "not a PLCopen TC6 XML project: skipped");
+                log.warning(diag::W0042, ast::Loc{raw, 1, 1}, "not a PLCopen TC6 XML project: skipped");
                 return;
             }
-            log.error(ast::Loc{raw, 1, 1}, "not a PLCopen TC6 XML project (the root must be <project> in namespace http://www.plcopen.org/xml/tc6_0201)");
+            log.error(diag::E0008, ast::Loc{raw, 1, 1}, "not a PLCopen TC6 XML project (the root must be <project> in namespace http://www.plcopen.org/xml/tc6_0201)");
             return;
         }
         converted = readPlcOpen(text);
@@ -93,7 +93,8 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
     if (!converted.errors.empty()) {
         // Positions of these messages are in the XML itself: a view of the file without conversion.
         int raw = sources.add(path, "", {}, text);
-        for (const auto& e : converted.errors) log.error(ast::Loc{raw, e.line, e.col}, e.message);
+        // Whatever the readers could not convert makes the file unusable as a source: E0008.
+        for (const auto& e : converted.errors) log.error(diag::E0008, ast::Loc{raw, e.line, e.col}, e.message);
     }
     // The XML stays beside the ST made from it: diagnostics quote the file the user has.
     userFiles.push_back(sources.add(path, std::move(converted.text), std::move(converted.origins), std::move(text)));

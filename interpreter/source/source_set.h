@@ -11,7 +11,6 @@
 #include "interpreter/ast/ast.h"
 #include "interpreter/source/diagnostic.h"
 #include "interpreter/source/diagnostic_code.h"
-#include "interpreter/source/diagnostic_codes.h"
 
 namespace strun {
 
@@ -75,21 +74,13 @@ public:
     // A cap so that a pathological file cannot flood stderr or memory.
     static constexpr size_t kMaxMessages = 500;
 
-    // The returned diagnostic takes notes and help lines (and a code, when the
-    // catalogue's classification of the message is not the right one).
-    Diagnostic& error(const ast::Loc& loc, std::string message) { return add(Severity::Error, loc, std::move(message)); }
-    Diagnostic& warning(const ast::Loc& loc, std::string message) { return add(Severity::Warning, loc, std::move(message)); }
-    // With the code given where the diagnostic is raised (decision 0298): the
-    // wording no longer decides it. The forms above classify the message.
+    // The code first, given where the diagnostic is raised (decision 0298):
+    // the wording never decides it. The returned diagnostic takes notes and help lines.
     Diagnostic& error(diag::Code code, const ast::Loc& loc, std::string message) {
-        Diagnostic& d = add(Severity::Error, loc, std::move(message));
-        d.code = diag::text(code);
-        return d;
+        return add(Severity::Error, code, loc, std::move(message));
     }
     Diagnostic& warning(diag::Code code, const ast::Loc& loc, std::string message) {
-        Diagnostic& d = add(Severity::Warning, loc, std::move(message));
-        d.code = diag::text(code);
-        return d;
+        return add(Severity::Warning, code, loc, std::move(message));
     }
     bool hasErrors() const { return errors_ > 0; }
     size_t errorCount() const { return errors_; }
@@ -109,14 +100,17 @@ public:
         for (size_t i = count; i < messages_.size(); ++i) errors_ -= messages_[i].severity == Severity::Error;
         messages_.resize(count);
     }
+    // A diagnostic made before (a cached parse's, another log's) again, code, notes and all.
+    Diagnostic& repeat(Diagnostic d) {
+        Diagnostic& added = add(d.severity, diag::E0001, d.loc, std::string());
+        if (&added != &overflow_) added = std::move(d);
+        return added;
+    }
     // Appends the messages of `other` (a log filled on another thread), in
     // order and within this log's cap.
     void append(CompileLog&& other) {
         const size_t errors = errors_ + other.errors_;  // add() below counts only the messages other kept
-        for (Diagnostic& d : other.messages_) {
-            Diagnostic& added = add(d.severity, d.loc, std::string());
-            if (&added != &overflow_) added = std::move(d);
-        }
+        for (Diagnostic& d : other.messages_) repeat(std::move(d));
         dropped_ += other.dropped_;
         errors_ = errors;
     }
@@ -134,7 +128,7 @@ public:
     }
 
 private:
-    Diagnostic& add(Severity s, const ast::Loc& loc, std::string message) {
+    Diagnostic& add(Severity s, diag::Code code, const ast::Loc& loc, std::string message) {
         if (s == Severity::Error) ++errors_;
         if (messages_.size() >= kMaxMessages) {
             ++dropped_;
@@ -144,7 +138,7 @@ private:
         Diagnostic d;
         d.severity = s;
         d.loc = loc;
-        d.code = diagnostics::classify(s, message);
+        d.code = diag::text(code);
         d.message = std::move(message);
         messages_.push_back(std::move(d));
         return messages_.back();

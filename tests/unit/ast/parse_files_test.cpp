@@ -51,9 +51,9 @@ TEST_CASE("files parsed two at a time give the units and messages of one after t
 
 TEST_CASE("a log appended to another keeps order, codes, the cap and the error count", "[parser][files]") {
     CompileLog first, second;
-    for (int i = 0; i < 400; ++i) first.error(Loc{0, i + 1, 1}, "first " + std::to_string(i));
-    second.warning(Loc{1, 1, 1}, "a warning").withCode("W0010");
-    for (int i = 0; i < 700; ++i) second.error(Loc{1, i + 2, 1}, "second " + std::to_string(i));  // 500 of 701 kept
+    for (int i = 0; i < 400; ++i) first.error(strun::diag::E0001, Loc{0, i + 1, 1}, "first " + std::to_string(i));
+    second.warning(strun::diag::W0010, Loc{1, 1, 1}, "a warning");
+    for (int i = 0; i < 700; ++i) second.error(strun::diag::E0001, Loc{1, i + 2, 1}, "second " + std::to_string(i));  // 500 of 701 kept
     first.append(std::move(second));
     REQUIRE(first.messages().size() == CompileLog::kMaxMessages);
     CHECK(first.messages()[399].message == "first 399");

@@ -123,3 +123,22 @@ TEST_CASE("syntax errors: invalid UTF-8 is a warning, a byte-order mark is fine"
     CHECK(bom->errors() == "");
     CHECK(bom->unit.pous.at(0)->loc.col == 1);
 }
+
+TEST_CASE("syntax errors: the code says the kind of mistake, not the wording", "[errors]") {
+    auto codeOf = [](const char* source) {
+        auto parsed = parse(source);
+        return parsed->log.messages().empty() ? std::string() : parsed->log.messages()[0].code;
+    };
+    CHECK(codeOf("PROGRAM P\nIF a THEN\n  x := 1\nEND_IF\nEND_PROGRAM") == "E0002");  // missing ';' after a statement
+    CHECK(codeOf("PROGRAM P\nx := 1 y := 2;\nEND_PROGRAM") == "E0002");             // only ';' could follow
+    CHECK(codeOf("PROGRAM P\nWHILE x DO\n  x := 1;\nEND_FOR\nEND_PROGRAM") == "E0003");  // only END_WHILE could
+    CHECK(codeOf("PROGRAM P\nx := 1;\n") == "E0003");                                 // PROGRAM never closed
+    CHECK(codeOf("PROGRAM P\nx := ;\nEND_PROGRAM") == "E0001");
+    CHECK(codeOf("PROGRAM P\nx++;\nEND_PROGRAM") == "E0004");
+    CHECK(codeOf("PROGRAM P\nx := 'abc\nEND_PROGRAM") == "E0005");
+    CHECK(codeOf("PROGRAM P\nx := 1 ` 2;\nEND_PROGRAM") == "E0006");
+    // Built while making the tree: declarations in the wrong place are E0009, whatever the wording.
+    CHECK(codeOf("VAR x : INT; END_VAR") == "E0009");
+    CHECK(codeOf("PROGRAM P\nVAR a.b : INT; END_VAR\nEND_PROGRAM") == "E0009");
+    CHECK(codeOf("TYPE T EXTENDS U : INT; END_TYPE") == "E0407");
+}
