@@ -24,7 +24,9 @@ std::string makeTempDir() {
 
 void copyFile(const std::string& path, std::ostream& out) {
     std::ifstream in(path, std::ios::binary);
-    if (in) out << in.rdbuf();
+    // Inserting an empty buffer sets failbit on `out`: std::cerr would then
+    // swallow every later message (the next slice's, --junit errors).
+    if (in && in.peek() != std::ifstream::traits_type::eof()) out << in.rdbuf();
     out.flush();
 }
 

@@ -67,7 +67,9 @@ bool Checker::isNamespace(const ast::Expr& e) const {
             path = upper(p->name) + (path.empty() ? "" : "." + path);
             if (p->kind == ast::ExprKind::Name) break;
         }
-        return namespaces_.count(path) != 0;
+        // Namespaces are flattened, so a namespace or library name in front of another
+        // namespace (`TcUnit.GVL_Param_TcUnit.X`, a library's global list) names that one.
+        return namespaces_.count(path) != 0 || namespaces_.count(upper(e.name)) != 0;
     }
     return false;
 }

@@ -55,6 +55,7 @@ bool globMatch(std::string_view p, std::string_view t) {
 }
 
 bool Suite::finished() const {
+    if (pastSuiteLimit) return true;
     if (cycles == 0) return false;
     for (const auto& t : tests)
         if (!t.finished && !t.skipped) return false;
@@ -284,7 +285,28 @@ void TestRegistry::noteAssertion(uint64_t hash) {
     ++s.assertCount;
 }
 
+void TestRegistry::markSuitesPastLimit() {
+    for (size_t k = 0; k < suites.size(); ++k) suites[k].pastSuiteLimit = maxSuites >= 0 && k >= static_cast<size_t>(maxSuites);
+}
+
 void TestRegistry::applyTestLimit() {
+    bool suiteLimitReported = false;
+    for (auto& s : suites) {
+        if (!s.pastSuiteLimit) continue;
+        // TcUnit has no slot for the suite (its FB_init would write past
+        // TestSuiteAddresses): none of its tests ran, and none may pass silently.
+        for (TestCase& t : s.tests) {
+            if (t.skipped) continue;
+            Failure f;
+            f.fault = fmt::format("not run: the project has more test suites than GVL_Param_TcUnit.MaxNumberOfTestSuites ({})", maxSuites);
+            t.failures.assign(1, std::move(f));
+            t.finished = true;
+        }
+        if (!suiteLimitReported)
+            std::cerr << "Test suite '" << s.path << "' and those after it were not run: the project has more test suites than "
+                      << "defined in parameter 'GVL_Param_TcUnit.MaxNumberOfTestSuites' (" << maxSuites << "). Please increase this parameter.\n";
+        suiteLimitReported = true;
+    }
     for (auto& s : suites) {
         if (maxTests < 0 || s.tests.size() <= static_cast<size_t>(maxTests)) continue;
         for (size_t k = static_cast<size_t>(maxTests); k < s.tests.size(); ++k) {

@@ -55,7 +55,8 @@ struct Suite {
     uint64_t assertCycle = 0;
     int64_t assertCount = 0;
     bool assertOverflowReported = false;
-    bool finished() const;    // called at least once and every test finished or skipped
+    bool pastSuiteLimit = false;  // past MaxNumberOfTestSuites: never run, its tests fail
+    bool finished() const;    // called at least once and every test finished or skipped (or past the limit)
 };
 
 class TestRegistry;
@@ -107,7 +108,7 @@ public:
     // GVL_Param_TcUnit as compiled (readTcUnitLimits; TcUnit's defaults).
     int64_t maxTests = 100;           // MaxNumberOfTestsForEachTestSuite
     int64_t maxAsserts = 1000;        // MaxNumberOfAssertsForEachTestSuite
-    int64_t maxSuites = 1000;         // MaxNumberOfTestSuites (readable only)
+    int64_t maxSuites = 1000;         // MaxNumberOfTestSuites
     bool logExtendedResults = true;   // FALSE: TCUNIT_ADSLOGSTR prints only ADSLOG_MSGTYPE_ERROR
     rt::PlcTime timeBetweenSuites = 0;  // TimeBetweenTestSuitesExecution: RUN_IN_SEQUENCE()'s pause
 
@@ -158,8 +159,12 @@ public:
     // before it looped, the run stopped) is added and fails with `not run`,
     // so that the report lists every test --list shows.
     void addNotRun();
+    // Before the run: TcUnit registers at most MaxNumberOfTestSuites suites;
+    // those past it (in declaration order) are marked and never run.
+    void markSuitesPastLimit();
     // After the run: a suite with more tests than MaxNumberOfTestsForEachTestSuite
-    // fails the tests past the limit and logs TcUnit's error (its text).
+    // fails the tests past the limit and logs TcUnit's error (its text); every
+    // test of a suite past MaxNumberOfTestSuites fails as not run, with one error.
     void applyTestLimit();
 
     int currentSuite = -1;

@@ -128,7 +128,7 @@ bool writeJUnit(const TestRegistry& reg, const SourceSet& sources, rt::PlcTime t
             xml << ">\n";
             if (t.skipped) xml << "      <skipped/>\n";
             for (const auto& f : t.failures) {
-                std::string type = f.fault.empty() ? "ASSERT" : f.fault == "timeout" ? "TIMEOUT" : f.fault == "not run" ? "NOT_RUN" : "FAULT";
+                std::string type = f.fault.empty() ? "ASSERT" : f.fault == "timeout" ? "TIMEOUT" : f.fault.rfind("not run", 0) == 0 ? "NOT_RUN" : "FAULT";
                 xml << fmt::format("      <failure message=\"{}\" type=\"{}\"", xmlEscape(reason(f)), type);
                 if (f.file >= 0) xml << fmt::format(" file=\"{}\" line=\"{}\"", xmlEscape(fileName(f.file, sources)), originalLine(f, sources));
                 xml << ">" << xmlEscape(failureText(f, sources)) << "</failure>\n";

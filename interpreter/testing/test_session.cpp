@@ -26,6 +26,14 @@ private:
     const TestRegistry& reg_;
 };
 
+// The suites RUN() calls, the limits of GVL_Param_TcUnit, and which suites
+// those limits leave out.
+void findSuites(sema::ProgramModel& model) {
+    collectSuites(model, *model.tests);
+    readTcUnitLimits(model, *model.tests);
+    model.tests->markSuitesPastLimit();
+}
+
 }  // namespace
 
 std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
@@ -34,10 +42,7 @@ std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const st
     const CompileLog before = log;
     auto model = project::compileProject(sources, userFiles, log, options);
     if (!model || model->tests->runCalls > 0) {
-        if (model) {
-            collectSuites(*model, *model->tests);
-            readTcUnitLimits(*model, *model->tests);
-        }
+        if (model) findSuites(*model);
         return model;
     }
     log = before;
@@ -46,10 +51,7 @@ std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const st
     sema::CompileOptions withProgram = options;
     withProgram.testProgram = kSyntheticProgramName;
     model = project::compileProject(sources, files, log, withProgram);
-    if (model) {
-        collectSuites(*model, *model->tests);
-        readTcUnitLimits(*model, *model->tests);
-    }
+    if (model) findSuites(*model);
     return model;
 }
 
