@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Latencies of `strun lsp` on a generated 30 000-line project (the blocks of
-benchmarks/startup.sh: 435 function blocks and functions of ~70 lines, one
+"""Latencies of `strun lsp` on a generated 30 000-line project
+(benchmarks/generated_project.sh: 435 function blocks and functions of ~70 lines, one
 file each, and a Main calling them all).
 
 usage: benchmarks/lsp_latency.py [path-to-strun] [repeats]
@@ -11,6 +11,7 @@ definition, references, completion after `name.`, and the first compile
 after initialize."""
 import os
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
@@ -18,100 +19,20 @@ import time
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "editors"))
 from protocol_client import Client  # noqa: E402
 
-BLOCK = """FUNCTION_BLOCK Block{k}
-VAR_INPUT
-    enable : BOOL;
-    setpoint : DINT;
-    gain : REAL := 1.5;
-END_VAR
-VAR_OUTPUT
-    out : DINT;
-    busy : BOOL;
-    alarm : BOOL;
-END_VAR
-VAR
-    state : INT;
-    acc : DINT;
-    history : ARRAY[0..9] OF DINT;
-    i : INT;
-    timer : TON;
-END_VAR
-timer(IN := enable, PT := T#100ms);
-CASE state OF
-    0:
-        IF enable THEN
-            state := 1;
-            acc := 0;
-        END_IF;
-    1:
-        acc := acc + setpoint / 10;
-        IF acc > setpoint THEN
-            state := 2;
-        ELSIF timer.Q THEN
-            alarm := TRUE;
-            state := 3;
-        END_IF;
-    2:
-        FOR i := 0 TO 8 DO
-            history[i] := history[i + 1];
-        END_FOR;
-        history[9] := acc;
-        out := REAL_TO_DINT(DINT_TO_REAL(acc) * gain);
-        state := 0;
-    ELSE
-        IF NOT enable THEN
-            alarm := FALSE;
-            state := 0;
-        END_IF;
-END_CASE;
-busy := state <> 0;
-END_FUNCTION_BLOCK
-
-FUNCTION Scale{k} : DINT
-VAR_INPUT
-    raw : DINT;
-    low : DINT;
-    high : DINT;
-END_VAR
-VAR
-    span : DINT;
-END_VAR
-span := high - low;
-IF span = 0 THEN
-    Scale{k} := low;
-ELSE
-    Scale{k} := low + (raw * span) / 32767;
-END_IF;
-END_FUNCTION
-
-"""
-
-
-def main_program(n):
-    lines = ["PROGRAM Main", "VAR"] + ["    b%d : Block%d;" % (k, k) for k in range(n)] + ["    total : DINT;", "END_VAR"]
-    for k in range(n):
-        lines.append("b%d(enable := TRUE, setpoint := Scale%d(raw := total, low := 0, high := 1000));" % (k, k))
-        lines.append("total := total + b%d.out;" % k)
-    lines.append("END_PROGRAM")
-    return "\n".join(lines) + "\n"
-
-
 def main():
     strun = sys.argv[1] if len(sys.argv) > 1 else "build/strun"
     repeats = int(sys.argv[2]) if len(sys.argv) > 2 else 10
     blocks = 435
     work = tempfile.mkdtemp(prefix="strun_lsp_bench_")
+    generator = os.path.join(os.path.dirname(os.path.abspath(__file__)), "generated_project.sh")
+    subprocess.run(["bash", generator, "files", str(blocks), work], check=True)
     total_lines = 0
-    for k in range(blocks):
-        text = BLOCK.format(k=k)
-        total_lines += text.count("\n")
-        with open(os.path.join(work, "block%d.st" % k), "w") as f:
-            f.write(text)
-    main_text = main_program(blocks)
-    total_lines += main_text.count("\n")
+    for name in os.listdir(work):
+        with open(os.path.join(work, name)) as f:
+            total_lines += f.read().count("\n")
     main_path = os.path.join(work, "main.st")
-    with open(main_path, "w") as f:
-        f.write(main_text)
+    with open(main_path) as f:
+        main_text = f.read()
     uri = "file://" + main_path
     c = Client([strun, "lsp"])
     ids = [0]

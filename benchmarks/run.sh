@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Runs every benchmark workload on strun and on Lua 5.4 and prints, per
 # workload, the best wall-clock time of each side and the ratio strun/Lua.
-# When luajit is installed, also LuaJIT's interpreter (luajit -joff, on
-# NAME.luajit.lua when there is one: Lua 5.1 has no //), and when gcc is
+# When luajit is installed, also LuaJIT's interpreter (luajit -joff, on the
+# Lua twin made Lua 5.1 code by luajit_twin below), and when gcc is
 # installed and the workload has a C twin NAME.c, that twin at gcc -O2.
 # Fails (exit 1) when a run fails or a checksum differs from strun's.
 #
@@ -101,6 +101,14 @@ printf "$row_format" "workload" "strun s" "lua s" "strun/lua" "luajit s" "strun/
 printf "$row_format" "--------" "-------" "-----" "---------" "--------" "---------" "---" "-------" "--------"
 jit_log_sum=0 jit_log_count=0 c_log_sum=0 c_log_count=0
 
+# The Lua twin as Lua 5.1 (LuaJIT) reads it: 5.1 has no integer division
+# `a // b` (math.floor(a / b) is exact below 2^53, where the workloads stay)
+# and no math.tointeger (its numbers are all doubles).
+luajit_twin() {
+    sed -E -e 's/math\.tointeger\(([^()]*)\)/(\1)/g' \
+        -e '/^[[:space:]]*--/!s#([A-Za-z_][A-Za-z0-9_.]*|[0-9]+) // ([A-Za-z_][A-Za-z0-9_.]*|[0-9]+)#math.floor(\1 / \2)#g' "$1"
+}
+
 failed=0
 for name in "${workloads[@]}"; do
     st_file="$workload_dir/$name.st"
@@ -135,8 +143,8 @@ for name in "${workloads[@]}"; do
     # LuaJIT's interpreter and the C twin: their output must be strun's checksum too.
     jit_col="-" jit_ratio="-" c_col="-" c_ratio="-"
     if [[ -n "$luajit" ]]; then
-        jit_file="$workload_dir/$name.luajit.lua"
-        [[ -f "$jit_file" ]] || jit_file=$lua_file
+        jit_file="$scratch/$name.luajit.lua"
+        luajit_twin "$lua_file" >"$jit_file"
         best_time "$scratch/jit.out" "$scratch/jit.err" "$luajit" -joff "$jit_file"
         if (( run_rc == 0 )) && "$lua" "$bench_dir/same_checksum.lua" "$scratch/strun.json" "$scratch/jit.out" >/dev/null; then
             jit_col=$(seconds "$best_ns")
