@@ -6,6 +6,8 @@
 #include <memory>
 #include <unordered_map>
 
+#include "runtime/fnv1a.h"
+
 namespace strun::rt {
 
 namespace {
@@ -121,8 +123,8 @@ uint64_t VcdRecorder::read(const VcdSignal& s) const {
         }
         case VcdSignal::Kind::Text: {
             // A change of the characters is a change of this hash (FNV-1a up to the NUL).
-            uint64_t h = 1469598103934665603ull;
-            for (uint32_t i = 0; i < s.size && s.addr[i] != 0; ++i) h = (h ^ s.addr[i]) * 1099511628211ull;
+            uint64_t h = kFnv1aBasis;
+            for (uint32_t i = 0; i < s.size && s.addr[i] != 0; ++i) h = fnv1aStep(h, s.addr[i]);
             return h;
         }
         case VcdSignal::Kind::EnumName:

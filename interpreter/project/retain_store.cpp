@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "interpreter/project/retain_validate.h"
+#include "runtime/fnv1a.h"
 #include "runtime/output_files.h"
 
 namespace strun::project {
@@ -25,8 +26,7 @@ using sema::TK;
 using sema::Type;
 
 constexpr const char* kMagic = "STRUN-RETAIN 1";
-constexpr uint64_t kFnvBasis = 1469598103934665603ull;
-constexpr uint64_t kFnvPrime = 1099511628211ull;
+constexpr uint64_t kFnvBasis = rt::kRetainFnv1aBasis;
 
 // No host addresses in the file: pointers, references and interfaces are
 // not retained (their value means nothing in another run).
@@ -91,7 +91,7 @@ class Writer {
 public:
     explicit Writer(int fd) : fd_(fd) { buffer_.reserve(kSize); }
     void put(std::string_view text) {
-        for (unsigned char c : text) hash_ = (hash_ ^ c) * kFnvPrime;
+        for (unsigned char c : text) hash_ = rt::fnv1aStep(hash_, c);
         buffer_.append(text);
         if (buffer_.size() >= kSize) flush();
     }
@@ -161,7 +161,7 @@ Scan scanRetainFile(int fd, uint64_t limit, bool firstLineOnly) {
         }
         if (firstLine && (line.size() > magic.size() || magic.substr(0, line.size()) != line)) return {Scan::NotRetainFile};
         if (in.consumed() > limit) return {Scan::TooLarge};
-        hash = (hash ^ static_cast<unsigned>(c)) * kFnvPrime;
+        hash = rt::fnv1aStep(hash, static_cast<uint8_t>(c));
     }
     if (in.error()) return {Scan::ReadError, in.error()};
     if (in.consumed() == 0) return {Scan::Damaged};

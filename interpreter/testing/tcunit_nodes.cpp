@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "interpreter/testing/assert_text.h"
+#include "runtime/fnv1a.h"
 
 namespace strun::testing {
 
@@ -59,11 +60,7 @@ int64_t SuiteQueryNode::i(Ctx& c) {
     return 0;
 }
 
-uint64_t hashBytes(uint64_t h, const void* p, size_t n) {
-    const auto* b = static_cast<const uint8_t*>(p);
-    for (size_t k = 0; k < n; ++k) h = (h ^ b[k]) * 1099511628211ULL;
-    return h;
-}
+uint64_t hashBytes(uint64_t h, const void* p, size_t n) { return rt::fnv1a(h, p, n); }
 
 void AssertBase::note(Ctx& c, uint64_t values) {
     std::string scratch;
@@ -87,7 +84,7 @@ void AssertBase::fail(Ctx& c, std::string expected, std::string actual, const ch
 int64_t AssertConditionNode::i(Ctx& c) {
     if (!reg->assertionsActive()) return 0;
     bool value = condition->i(c) != 0;
-    note(c, hashBytes(14695981039346656037ULL, &value, sizeof value));
+    note(c, hashBytes(rt::kFnv1aBasis, &value, sizeof value));
     if (value != expected) fail(c, expected ? "TRUE" : "FALSE", value ? "TRUE" : "FALSE");
     return 0;
 }
@@ -145,7 +142,7 @@ int64_t AssertEqualsNode::i(Ctx& c) {
         if (sema::isStringType(t->kind)) return stringLength(t, p) * (t->kind == TK::String ? 1 : 2);
         return t->size;
     };
-    note(c, hashBytes(hashBytes(14695981039346656037ULL, pe, bytes(te, pe)), pa, bytes(ta, pa)));
+    note(c, hashBytes(hashBytes(rt::kFnv1aBasis, pe, bytes(te, pe)), pa, bytes(ta, pa)));
     double d = 0;
     const double* dp = nullptr;
     if (delta) {
@@ -237,7 +234,7 @@ int64_t AssertArrayNode::i(Ctx& c) {
             ne *= static_cast<uint64_t>(std::max<int64_t>(he[k] - le[k] + 1, 0));
             na *= static_cast<uint64_t>(std::max<int64_t>(ha[k] - la[k] + 1, 0));
         }
-        note(c, hashBytes(hashBytes(14695981039346656037ULL, be, ne * elem->size), ba, na * elem->size));
+        note(c, hashBytes(hashBytes(rt::kFnv1aBasis, be, ne * elem->size), ba, na * elem->size));
     }
     for (size_t k = 0; k < dims; ++k) {
         if (he[k] - le[k] != ha[k] - la[k]) {

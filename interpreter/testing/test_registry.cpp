@@ -9,6 +9,7 @@
 
 #include "interpreter/exec/call_nodes.h"
 #include "interpreter/sema/types.h"
+#include "runtime/fnv1a.h"
 #include "stdlib/value_format.h"
 
 namespace strun::testing {
@@ -266,7 +267,7 @@ std::vector<std::string> TestRegistry::declaredTests(const Suite& s) const {
 
 void TestRegistry::noteAssertion(uint64_t hash) {
     Suite& s = suites[static_cast<size_t>(currentSuite)];
-    hash = hash * 1099511628211ULL ^ static_cast<uint64_t>(currentTest);
+    hash = hash * rt::kFnv1aPrime ^ static_cast<uint64_t>(currentTest);
     if (s.assertCycle != s.cycles) {
         s.assertCycle = s.cycles;
         s.assertsThisCycle.clear();

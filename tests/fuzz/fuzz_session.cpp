@@ -14,6 +14,7 @@
 #include "interpreter/project/task_runner.h"
 #include "interpreter/source/project_inputs.h"
 #include "interpreter/source/xml_inputs.h"
+#include "runtime/fnv1a.h"
 #include "runtime/scheduler.h"
 
 namespace strun::fuzz {
@@ -92,10 +93,10 @@ void fixRetainChecksum(std::string& bytes) {
     if (view.size() < marker.size() || view.substr(view.size() - marker.size()) != marker) return;
     const size_t bodyEnd = view.size() - marker.size();
     if (bodyEnd > 0 && bytes[bodyEnd - 1] != '\n') return;
-    uint64_t hash = 1469598103934665603ull;
+    uint64_t hash = strun::rt::kRetainFnv1aBasis;
     size_t lines = 0;
     for (size_t i = 0; i < bodyEnd; ++i) {
-        hash = (hash ^ static_cast<unsigned char>(bytes[i])) * 1099511628211ull;
+        hash = strun::rt::fnv1aStep(hash, static_cast<uint8_t>(bytes[i]));
         lines += bytes[i] == '\n';
     }
     char end[64];
