@@ -202,7 +202,9 @@ private:
     // POINTER, `(x := v)` used as a value.
     Checked checkStringOrPointerIndex(const ast::Expr& e, const Checked& base);
     Checked checkAssignmentValue(const ast::Expr& e);
-    std::vector<std::unique_ptr<ast::Stmt>> assignmentValues_;
+    std::vector<std::unique_ptr<ast::Stmt>> assignmentValues_;  // statements made from expressions, kept with the checker
+    // `fb.A_Act(in := v, out => x)` (checker_action_call.cpp): the block's inputs set, the action run, its outputs read.
+    exec::Stmt* callActionWithArguments(const ast::Expr& call, PouInfo* block);
     Checked checkUnary(const ast::Expr& e);
     Checked checkBinary(const ast::Expr& e);
     Checked checkCall(const ast::Expr& e, bool statement);

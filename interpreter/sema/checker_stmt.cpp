@@ -399,9 +399,12 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                 if (callee.kind == ast::ExprKind::Member && !qualifiedGlobal) {
                     // inst.Method(...) vs. structVar.fbMember(...)
                     Checked base = checkExpr(*callee.kids[0]);
+                    PouInfo* method = nullptr;
                     if (base.ok && (base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou)
-                        isMethod = findMethod(base.type->pou, upper(callee.name)) != nullptr;
+                        method = findMethod(base.type->pou, upper(callee.name));
                     if (!base.ok) return nullptr;
+                    isMethod = method != nullptr;
+                    if (method && method->ast->isAction && !s.expr->args.empty()) return callActionWithArguments(*s.expr, base.type->pou);
                 }
                 if (!isMethod) {
                     Checked inst = checkExpr(callee);
