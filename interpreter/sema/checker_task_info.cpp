@@ -6,6 +6,7 @@
 // and index checks see it (decision 0305). The refresh each activation is
 // interpreter/builtins/libraries/task_info.cpp.
 #include <algorithm>
+#include <string_view>
 
 #include "interpreter/sema/checker.h"
 
@@ -14,8 +15,11 @@ namespace strun::sema {
 void Checker::sizeTaskInfoToTasks() {
     VarSym* list = nullptr;
     VarSym* app = nullptr;
+    static constexpr std::string_view kList = "TWINCAT_SYSTEMINFOVARLIST";
     for (const auto& g : model_.globalStore) {
-        if (!g->decl || !libraryFiles_.count(g->decl->loc.file) || upper(g->listName) != "TWINCAT_SYSTEMINFOVARLIST") continue;
+        // A size test first: this runs for every project, most have no such list.
+        if (g->listName.size() != kList.size() || !g->decl || !libraryFiles_.count(g->decl->loc.file) || upper(g->listName) != kList)
+            continue;
         const std::string key = upper(g->name);
         if (key == "_TASKINFO") list = g.get();
         else if (key == "_APPINFO") app = g.get();
