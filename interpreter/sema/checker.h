@@ -172,6 +172,7 @@ private:
 
     // ---- configuration (checker_config.cpp)
     void buildConfiguration();
+    void sizeTaskInfoToTasks();  // Tc2_System's _TaskInfo[] bound = task count (checker_task_info.cpp)
     void addTestProgram(const std::string& name);
     void declareMethodInstanceVars(PouInfo* fb, uint32_t& instOff, std::vector<Field>& fields);
     void buildDefaultConfiguration();

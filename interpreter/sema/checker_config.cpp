@@ -397,6 +397,7 @@ void Checker::run(std::vector<ast::CompilationUnit>& units) {
         if (p->kind != ast::PouKind::Interface) layoutPou(p);
     buildClasses();
     buildConfiguration();
+    sizeTaskInfoToTasks();
     checkBodies();
     if (log_.hasErrors()) return;
     buildFbInitCalls();

@@ -926,6 +926,9 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
                 std::memcpy(p, bytes->bytes.data(), n);
                 p[t->size - 1] = 0;
                 if (t->kind == TK::WString) p[t->size - 2] = 0;
+            } else if (t->kind == TK::Interface && c.isConst && c.constInt == 0) {
+                // `ipSourceInfo : I_TcSourceInfo := 0` (Beckhoff's declarations):
+                // no instance, the storage's zero.
             } else if (!deferred()) {
                 error(diag::E0401, init->expr->loc, fmt::format("a value of type {} cannot be initialised with an expression", typeName(t)));
             }
