@@ -163,6 +163,17 @@ void registerStrings(Checker& ck) {
     ck.addBuiltin("INSERT", checkInsert);
     ck.addBuiltin("DELETE", checkDelete);
     ck.addBuiltin("REPLACE", checkReplace);
+    // The WSTRING names of CODESYS' and TwinCAT's standard library (WLEN,
+    // WCONCAT, ...): the same functions, which take WSTRING as IEC's do.
+    ck.addBuiltin("WLEN", checkLen);
+    ck.addBuiltin("WFIND", checkFind);
+    ck.addBuiltin("WCONCAT", checkConcat);
+    ck.addBuiltin("WLEFT", checkLeftRight<StrFn::Left>);
+    ck.addBuiltin("WRIGHT", checkLeftRight<StrFn::Right>);
+    ck.addBuiltin("WMID", checkMid);
+    ck.addBuiltin("WINSERT", checkInsert);
+    ck.addBuiltin("WDELETE", checkDelete);
+    ck.addBuiltin("WREPLACE", checkReplace);
 }
 
 }  // namespace strun::stdlib::bind
