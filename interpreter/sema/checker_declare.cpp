@@ -823,7 +823,13 @@ void Checker::declareGlobals() {
             writeVarInitial(v->abs, v, &globalAddressInits_);
         }
     };
+    // A list of the project named like one of strun's library lists (TcUnit's
+    // own source declares GVL_Param_TcUnit) replaces it, as a user type does.
+    std::set<std::string> projectLists;
+    for (auto* list : globalLists_)
+        if (!list->nameSpace.empty() && !libraryFiles_.count(list->loc.file)) projectLists.insert(upper(list->nameSpace));
     for (auto* list : globalLists_) {
+        if (libraryFiles_.count(list->loc.file) && projectLists.count(upper(list->nameSpace))) continue;
         qualifiedOnlyList_ = hasAttribute(list->pragmas, "qualified_only") ? list->nameSpace : "";
         declaringList_ = list->nameSpace;
         declareBlocks(list->blocks);
