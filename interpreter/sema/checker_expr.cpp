@@ -708,9 +708,11 @@ Checked Checker::checkMember(const ast::Expr& e) {
         qualifiedList_.clear();
         return c;
     }
-    if (baseExpr.kind == ast::ExprKind::Name) {
+    // Enum.Value, also with its library or namespace in front (SysFile.ACCESS_MODE.AM_READ).
+    const bool qualifiedType = baseExpr.kind == ast::ExprKind::Member && isNamespace(*baseExpr.kids[0]);
+    if (baseExpr.kind == ast::ExprKind::Name || qualifiedType) {
         std::string bkey = upper(baseExpr.name);
-        if (!lookupVar(bkey)) {
+        if (qualifiedType || !lookupVar(bkey)) {
             // Enum.Value
             if (typeDecls_.count(bkey)) {
                 const Type* t = resolveTypeDecl(bkey, baseExpr.loc);
