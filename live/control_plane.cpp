@@ -148,9 +148,10 @@ const LiveVariable* ControlPlane::variableAt(const uint8_t* address, int bit) co
 void ControlPlane::fillSnapshot(Snapshot& snap, bool ended) {
     for (const Region& r : regions_) std::memcpy(snap.data.data() + r.offset, r.from, r.size);
     const rt::ProcessImage& image = model_.machine.image;
-    std::memcpy(snap.inputs.data(), image.inputs.data(), snap.inputs.size());
-    std::memcpy(snap.outputs.data(), image.outputs.data(), snap.outputs.size());
-    std::memcpy(snap.memory.data(), image.memory.data(), snap.memory.size());
+    // An empty image has no storage: memcpy of zero bytes from null is still undefined.
+    if (!snap.inputs.empty()) std::memcpy(snap.inputs.data(), image.inputs.data(), snap.inputs.size());
+    if (!snap.outputs.empty()) std::memcpy(snap.outputs.data(), image.outputs.data(), snap.outputs.size());
+    if (!snap.memory.empty()) std::memcpy(snap.memory.data(), image.memory.data(), snap.memory.size());
     snap.ended = ended;
     if (scheduler_) {
         snap.time = ended ? scheduler_->endTime() : scheduler_->now();
@@ -390,7 +391,7 @@ void ControlPlane::store(const Target& t, uint8_t* dest) {
         uint8_t mask = uint8_t(1u << t.bit);
         *dest = (!t.bytes.empty() && t.bytes[0]) ? uint8_t(*dest | mask) : uint8_t(*dest & ~mask);
     } else {
-        std::memcpy(dest, t.bytes.data(), t.bytes.size());
+        if (!t.bytes.empty()) std::memcpy(dest, t.bytes.data(), t.bytes.size());
     }
 }
 
