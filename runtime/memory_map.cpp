@@ -12,6 +12,22 @@ void MemoryMap::add(const void* begin, size_t size) {
     hot_ = {0, 0};
 }
 
+void MemoryMap::insert(const void* begin, size_t size) {
+    if (!begin || size == 0) return;
+    if (!sorted_) sort();
+    auto b = reinterpret_cast<uintptr_t>(begin);
+    auto it = std::upper_bound(regions_.begin(), regions_.end(), b, [](uintptr_t v, const Region& r) { return v < r.begin; });
+    regions_.insert(it, {b, b + size});
+}
+
+void MemoryMap::remove(const void* begin) {
+    if (!sorted_) sort();
+    auto b = reinterpret_cast<uintptr_t>(begin);
+    auto it = std::lower_bound(regions_.begin(), regions_.end(), b, [](const Region& r, uintptr_t v) { return r.begin < v; });
+    if (it != regions_.end() && it->begin == b) regions_.erase(it);
+    hot_ = {0, 0};
+}
+
 void MemoryMap::addObject(const void* object) {
     objects_.push_back(reinterpret_cast<uintptr_t>(object));
     sorted_ = false;

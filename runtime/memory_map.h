@@ -17,6 +17,10 @@ namespace strun::rt {
 class MemoryMap {
 public:
     void add(const void* begin, size_t size);
+    // While running (runtime/heap.h): a region added or removed in place,
+    // keeping the regions sorted, so lookups stay a binary search.
+    void insert(const void* begin, size_t size);
+    void remove(const void* begin);
     // True when [p, p + size) lies inside one registered region. The region
     // of the last hit is tried first: accesses through one reference or
     // pointer tend to stay in one block, so most checks are two compares.

@@ -307,6 +307,11 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             r.node->type = r.type;
             return r;
         }
+        if (key.starts_with("__")) {
+            bool handled = false;
+            Checked h = heapCall(key, e, handled);
+            if (handled) return h;
+        }
         if (key == "__QUERYINTERFACE") {
             if (e.args.size() != 2 || !e.args[0].value || !e.args[1].value) {
                 error(diag::E0301, e.loc, "__QUERYINTERFACE takes a source and a destination interface");

@@ -1,0 +1,60 @@
+// The dynamic memory of a running project: the blocks CODESYS/TwinCAT
+// `__NEW` allocates and `__DELETE` releases (docs/decisions/0300). Every live
+// block is a region of the project's MemoryMap, so a pointer into it is
+// checked like any other dereference; a released block leaves the map at
+// once, so a dangling pointer faults instead of reaching host memory. Released
+// blocks stay reserved for a while (a quarantine) before their host memory is
+// given back: a second __DELETE, or a dereference, of a recently released
+// block is recognised as such. The heap is bounded (docs/limits.md); past the
+// bound __NEW yields 0, as on the PLC when its heap is exhausted.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <unordered_map>
+
+#include "runtime/memory_map.h"
+
+namespace strun::rt {
+
+class Heap {
+public:
+    static constexpr size_t kMaxBytes = size_t{64} << 20;      // live bytes, all blocks together
+    static constexpr size_t kMaxBlocks = 100000;               // live blocks
+    static constexpr size_t kQuarantineBytes = size_t{8} << 20;  // released bytes kept reserved
+
+    explicit Heap(MemoryMap& map) : map_(map) {}
+    Heap(const Heap&) = delete;
+    Heap& operator=(const Heap&) = delete;
+
+    // A zeroed block of `size` bytes (at least 1) registered in the memory
+    // map, or nullptr when the bound would be passed.
+    uint8_t* allocate(size_t size);
+
+    enum class Release { Freed, AlreadyFreed, Interior, NotHeap };
+    // Releases the block starting at p; anything else is refused untouched.
+    Release release(const void* p);
+
+    // What p is, for a fault message: the start or inside of a live block
+    // (size of the block in *blockSize), of a released one, or neither.
+    enum class Where { Live, Released, None };
+    Where locate(const void* p, size_t* blockSize = nullptr) const;
+
+    size_t liveBytes() const { return liveBytes_; }
+    size_t liveBlocks() const { return live_.size(); }
+
+private:
+    struct Block {
+        std::unique_ptr<uint8_t[]> data;
+        size_t size;
+    };
+    MemoryMap& map_;
+    std::unordered_map<uintptr_t, Block> live_;
+    std::deque<std::pair<uintptr_t, Block>> released_;  // oldest first
+    size_t liveBytes_ = 0;
+    size_t releasedBytes_ = 0;
+};
+
+}  // namespace strun::rt
