@@ -7,6 +7,7 @@ namespace strun::rt {
 uint8_t* Heap::allocate(size_t size) {
     if (size == 0) size = 1;
     if (size > kMaxBytes - liveBytes_ || live_.size() >= kMaxBlocks) return nullptr;
+    if (releasedBytes_ > kMaxWaitingBytes || released_.size() >= kMaxWaitingBlocks) return nullptr;
     std::unique_ptr<uint8_t[]> data(new (std::nothrow) uint8_t[size]());
     if (!data) return nullptr;
     uint8_t* p = data.get();
@@ -31,12 +32,14 @@ Heap::Release Heap::release(const void* p) {
     releasedBytes_ += it->second.size;
     released_.emplace_back(a, std::move(it->second));
     live_.erase(it);
-    // Give back the oldest released blocks once the quarantine is full.
-    while (releasedBytes_ > kQuarantineBytes && !released_.empty()) {
+    return Release::Freed;
+}
+
+void Heap::trimSlow() {
+    while ((releasedBytes_ > kQuarantineBytes || released_.size() > kQuarantineBlocks) && !released_.empty()) {
         releasedBytes_ -= released_.front().second.size;
         released_.pop_front();
     }
-    return Release::Freed;
 }
 
 Heap::Where Heap::locate(const void* p, size_t* blockSize) const {

@@ -2,11 +2,15 @@
 // `__NEW` allocates and `__DELETE` releases (docs/decisions/0300). Every live
 // block is a region of the project's MemoryMap, so a pointer into it is
 // checked like any other dereference; a released block leaves the map at
-// once, so a dangling pointer faults instead of reaching host memory. Released
-// blocks stay reserved for a while (a quarantine) before their host memory is
-// given back: a second __DELETE, or a dereference, of a recently released
-// block is recognised as such. The heap is bounded (docs/limits.md); past the
-// bound __NEW yields 0, as on the PLC when its heap is exhausted.
+// once, so a dangling pointer faults instead of reaching host memory.
+// Released blocks keep their host memory until the scheduler calls trim()
+// with no activation in progress (code may still run on an instance it has
+// just released: `__DELETE(pSelf); count := count + 1;` must not touch freed
+// host memory), and then the newest 8 MiB of them stay reserved (a
+// quarantine), so a second __DELETE, or a dereference, of a recently
+// released block is recognised as such. The heap is bounded
+// (docs/limits.md); past a bound __NEW yields 0, as on the PLC when its heap
+// is exhausted.
 #pragma once
 
 #include <cstddef>
@@ -21,9 +25,14 @@ namespace strun::rt {
 
 class Heap {
 public:
-    static constexpr size_t kMaxBytes = size_t{64} << 20;      // live bytes, all blocks together
-    static constexpr size_t kMaxBlocks = 100000;               // live blocks
-    static constexpr size_t kQuarantineBytes = size_t{8} << 20;  // released bytes kept reserved
+    static constexpr size_t kMaxBytes = size_t{64} << 20;        // live bytes, all blocks together
+    static constexpr size_t kMaxBlocks = 100000;                 // live blocks
+    static constexpr size_t kQuarantineBytes = size_t{8} << 20;  // released bytes kept reserved after trim()
+    static constexpr size_t kQuarantineBlocks = 10000;           // ... and released blocks
+    // Released but not yet trimmed (within one activation) at most: past
+    // either, __NEW gives 0 until the activation ends.
+    static constexpr size_t kMaxWaitingBytes = size_t{64} << 20;
+    static constexpr size_t kMaxWaitingBlocks = 100000;
 
     explicit Heap(MemoryMap& map) : map_(map) {}
     Heap(const Heap&) = delete;
@@ -42,10 +51,17 @@ public:
     enum class Where { Live, Released, None };
     Where locate(const void* p, size_t* blockSize = nullptr) const;
 
+    // With no activation in progress (the scheduler, once per activation):
+    // gives back the host memory of released blocks beyond the quarantine.
+    void trim() {
+        if (__builtin_expect(releasedBytes_ > kQuarantineBytes || released_.size() > kQuarantineBlocks, 0)) trimSlow();
+    }
+
     size_t liveBytes() const { return liveBytes_; }
     size_t liveBlocks() const { return live_.size(); }
 
 private:
+    void trimSlow();
     struct Block {
         std::unique_ptr<uint8_t[]> data;
         size_t size;

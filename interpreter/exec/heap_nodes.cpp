@@ -28,7 +28,7 @@ int64_t HeapNew::i(Ctx& c) {
 }
 
 int64_t HeapDelete::i(Ctx& c) {
-    auto* p = reinterpret_cast<uint8_t*>(static_cast<intptr_t>(loadAs<int64_t>(pointer->addr(c))));
+    auto* p = reinterpret_cast<uint8_t*>(static_cast<intptr_t>(clears ? loadAs<int64_t>(pointer->addr(c)) : pointer->i(c)));
     if (!p) return 0;
     size_t blockSize = 0;
     rt::Heap& heap = c.m->heap;
@@ -54,7 +54,7 @@ int64_t HeapDelete::i(Ctx& c) {
     }
     // The pointer is cleared before the block goes: it may lie inside it.
     // Its place is evaluated again, as FB_exit may have moved things.
-    storeAs<int64_t>(pointer->addr(c), 0);
+    if (clears) storeAs<int64_t>(pointer->addr(c), 0);
     if (heap.release(p) != rt::Heap::Release::Freed)
         reportMemoryFault(c, site, "__DELETE: FB_exit released the instance itself (a double free)");
     return 0;

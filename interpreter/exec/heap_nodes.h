@@ -32,15 +32,16 @@ struct HeapCurrent final : Expr {
 };
 
 // __DELETE(p): releases the block p points to (after the instance's FB_exit,
-// if any) and sets p to 0. p = 0 does nothing. A pointer that is not the start
+// if any) and sets p to 0 when p is a variable. p = 0 does nothing. A pointer that is not the start
 // of a live block (released already, inside a block, not from __NEW) is a
 // NULL_POINTER fault and nothing is released.
 struct HeapDelete final : Expr {
-    Expr* pointer;  // place of the pointer variable
+    Expr* pointer;  // place of the pointer variable, or (clears false) its value: `__DELETE(THIS)`
+    bool clears;
     Stmt* exit = nullptr;  // FB_exit of the instance, or null
     Site site;
     uint8_t* current = nullptr;  // the instance `exit` works on
-    HeapDelete(Expr* p, Site s) : pointer(p), site(s) {}
+    HeapDelete(Expr* p, bool c, Site s) : pointer(p), clears(c), site(s) {}
     int64_t i(Ctx& c) override;
 };
 

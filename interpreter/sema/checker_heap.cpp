@@ -120,7 +120,10 @@ Checked Checker::heapCall(const std::string& key, const ast::Expr& e, bool& hand
             error(diag::E0301, e.loc, "__NEW takes a type and an optional element count: __NEW(T) or __NEW(T, n)");
             return bad(e.loc);
         }
-        const ast::Expr& typeArg = *e.args[0].value;
+        const ast::Expr& written = *e.args[0].value;
+        // `__NEW(FB_List(Initial_Capacity := 0))` (TwinCAT): the arguments of the instance's FB_init.
+        const bool withInitArgs = written.kind == ast::ExprKind::Call && !written.kids.empty() && written.kids[0]->kind == ast::ExprKind::Name;
+        const ast::Expr& typeArg = withInitArgs ? *written.kids[0] : written;
         if (typeArg.kind != ast::ExprKind::Name) {
             error(diag::E0201, typeArg.loc, "__NEW needs a type name as its first argument");
             return bad(e.loc);
@@ -163,11 +166,20 @@ Checked Checker::heapCall(const std::string& key, const ast::Expr& e, bool& hand
                 return bad(e.loc);
             }
         }
+        ast::TypeSpec initSpec;
+        if (withInitArgs) {
+            if (t->kind != TK::FunctionBlock || !t->pou || !findMethod(t->pou, "FB_INIT")) {
+                error(diag::E0301, written.loc, fmt::format("'{}' has no FB_init method to take these arguments", typeArg.name));
+                return bad(e.loc);
+            }
+            initSpec.loc = written.loc;
+            for (const auto& a : written.args) initSpec.initArgs.push_back(ast::cloneArg(a));
+        }
         if (holdsFbInit(t)) {
             auto* current = pool().make<exec::HeapCurrent>(node);
             current->type = t;
             std::vector<exec::Stmt*> stmts;
-            heapInitStmts(t, current, nullptr, 0, stmts);
+            heapInitStmts(t, current, withInitArgs ? &initSpec : nullptr, 0, stmts);
             if (stmts.size() > kMaxInitStmts) {
                 error(diag::E0007, typeArg.loc, fmt::format("__NEW of '{}' needs more than {} start-up calls (FB_init of embedded instances)", typeArg.name, kMaxInitStmts));
                 return bad(e.loc);
@@ -197,11 +209,8 @@ Checked Checker::heapCall(const std::string& key, const ast::Expr& e, bool& hand
             error(diag::E0201, e.args[0].value->loc, fmt::format("__DELETE needs a POINTER, not {}", typeName(p.type)));
             return bad(e.loc);
         }
-        if (!p.isPlace || p.readOnly) {
-            error(diag::E0206, e.args[0].value->loc, "__DELETE needs a variable: it sets the pointer to 0");
-            return bad(e.loc);
-        }
-        auto* node = pool().make<exec::HeapDelete>(p.node, site(e.loc));
+        // A variable is set to 0; a value (`__DELETE(THIS)`, as TwinCAT code releases itself) is only released.
+        auto* node = pool().make<exec::HeapDelete>(p.node, p.isPlace && !p.readOnly, site(e.loc));
         const Type* target = p.type->target;
         PouInfo* exitMethod = target && target->kind == TK::FunctionBlock && target->pou && target->pou->kind == ast::PouKind::FunctionBlock
                                   ? findMethod(target->pou, "FB_EXIT") : nullptr;
