@@ -32,6 +32,7 @@ Heap::Release Heap::release(const void* p) {
     releasedBytes_ += it->second.size;
     released_.emplace_back(a, std::move(it->second));
     live_.erase(it);
+    trimDue_ = releasedBytes_ > kQuarantineBytes || released_.size() > kQuarantineBlocks;
     return Release::Freed;
 }
 
@@ -40,6 +41,7 @@ void Heap::trimSlow() {
         releasedBytes_ -= released_.front().second.size;
         released_.pop_front();
     }
+    trimDue_ = false;
 }
 
 Heap::Where Heap::locate(const void* p, size_t* blockSize) const {

@@ -53,8 +53,9 @@ public:
 
     // With no activation in progress (the scheduler, once per activation):
     // gives back the host memory of released blocks beyond the quarantine.
+    // One load and branch per activation: release() sets trimDue_.
     void trim() {
-        if (__builtin_expect(releasedBytes_ > kQuarantineBytes || released_.size() > kQuarantineBlocks, 0)) trimSlow();
+        if (__builtin_expect(trimDue_, 0)) trimSlow();
     }
 
     size_t liveBytes() const { return liveBytes_; }
@@ -71,6 +72,7 @@ private:
     std::deque<std::pair<uintptr_t, Block>> released_;  // oldest first
     size_t liveBytes_ = 0;
     size_t releasedBytes_ = 0;
+    bool trimDue_ = false;  // the quarantine is over its bounds
 };
 
 }  // namespace strun::rt
