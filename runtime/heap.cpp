@@ -1,5 +1,6 @@
 #include "runtime/heap.h"
 
+#include <iterator>
 #include <new>
 
 namespace strun::rt {
@@ -13,7 +14,6 @@ uint8_t* Heap::allocate(size_t size) {
     uint8_t* p = data.get();
     live_.emplace(reinterpret_cast<uintptr_t>(p), Block{std::move(data), size});
     liveBytes_ += size;
-    map_.insert(p, size);
     return p;
 }
 
@@ -27,9 +27,10 @@ Heap::Release Heap::release(const void* p) {
         case Where::None: return Release::NotHeap;
         }
     }
-    map_.remove(p);
+    map_.forgetHot();
     liveBytes_ -= it->second.size;
     releasedBytes_ += it->second.size;
+    releasedAt_[a] = it->second.size;
     released_.emplace_back(a, std::move(it->second));
     live_.erase(it);
     trimDue_ = releasedBytes_ > kQuarantineBytes || released_.size() > kQuarantineBlocks;
@@ -39,24 +40,41 @@ Heap::Release Heap::release(const void* p) {
 void Heap::trimSlow() {
     while ((releasedBytes_ > kQuarantineBytes || released_.size() > kQuarantineBlocks) && !released_.empty()) {
         releasedBytes_ -= released_.front().second.size;
+        releasedAt_.erase(released_.front().first);
         released_.pop_front();
     }
     trimDue_ = false;
 }
 
+bool Heap::holds(const void* heap, uintptr_t a, size_t size, uintptr_t& begin, uintptr_t& end) {
+    const auto& live = static_cast<const Heap*>(heap)->live_;
+    auto it = live.upper_bound(a);
+    if (it == live.begin()) return false;
+    --it;
+    if (!(a - it->first < it->second.size && size <= it->second.size - (a - it->first))) return false;
+    begin = it->first;
+    end = it->first + it->second.size;
+    return true;
+}
+
+size_t Heap::blockAt(const void* p) const {
+    auto it = live_.find(reinterpret_cast<uintptr_t>(p));
+    return it == live_.end() ? 0 : it->second.size;
+}
+
 Heap::Where Heap::locate(const void* p, size_t* blockSize) const {
     auto a = reinterpret_cast<uintptr_t>(p);
-    // Only on fault paths and __DELETE of a non-block: a linear search is enough.
-    for (const auto& [begin, block] : live_)
-        if (a >= begin && a - begin < block.size) {
-            if (blockSize) *blockSize = block.size;
-            return Where::Live;
-        }
-    for (const auto& [begin, block] : released_)
-        if (a >= begin && a - begin < block.size) {
-            if (blockSize) *blockSize = block.size;
-            return Where::Released;
-        }
+    // The last block starting at or before a, in each map.
+    auto live = live_.upper_bound(a);
+    if (live != live_.begin() && a - std::prev(live)->first < std::prev(live)->second.size) {
+        if (blockSize) *blockSize = std::prev(live)->second.size;
+        return Where::Live;
+    }
+    auto released = releasedAt_.upper_bound(a);
+    if (released != releasedAt_.begin() && a - std::prev(released)->first < std::prev(released)->second) {
+        if (blockSize) *blockSize = std::prev(released)->second;
+        return Where::Released;
+    }
     return Where::None;
 }
 

@@ -1,7 +1,8 @@
 // The dynamic memory of a running project: the blocks CODESYS/TwinCAT
-// `__NEW` allocates and `__DELETE` releases (docs/decisions/0300). Every live
-// block is a region of the project's MemoryMap, so a pointer into it is
-// checked like any other dereference; a released block leaves the map at
+// `__NEW` allocates and `__DELETE` releases (docs/decisions/0300). The
+// project's MemoryMap asks the heap about an address no fixed region holds,
+// so a pointer into a live block is checked like any other dereference
+// (an ordered map: allocation, release and lookup are logarithmic); a released block leaves the map at
 // once, so a dangling pointer faults instead of reaching host memory.
 // Released blocks keep their host memory until the scheduler calls trim()
 // with no activation in progress (code may still run on an instance it has
@@ -17,7 +18,7 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
-#include <unordered_map>
+#include <map>
 
 #include "runtime/memory_map.h"
 
@@ -34,7 +35,7 @@ public:
     static constexpr size_t kMaxWaitingBytes = size_t{64} << 20;
     static constexpr size_t kMaxWaitingBlocks = 100000;
 
-    explicit Heap(MemoryMap& map) : map_(map) {}
+    explicit Heap(MemoryMap& map) : map_(map) { map.setDynamic(&Heap::holds, this); }
     Heap(const Heap&) = delete;
     Heap& operator=(const Heap&) = delete;
 
@@ -46,8 +47,12 @@ public:
     // Releases the block starting at p; anything else is refused untouched.
     Release release(const void* p);
 
+    // The size of the live block that starts at p; 0 when none does.
+    size_t blockAt(const void* p) const;
+
     // What p is, for a fault message: the start or inside of a live block
     // (size of the block in *blockSize), of a released one, or neither.
+    // Ordered maps: a lookup is logarithmic, also in a loop of faults.
     enum class Where { Live, Released, None };
     Where locate(const void* p, size_t* blockSize = nullptr) const;
 
@@ -63,13 +68,16 @@ public:
 
 private:
     void trimSlow();
+    // MemoryMap::DynamicLookup: the live block holding [a, a + size).
+    static bool holds(const void* heap, uintptr_t a, size_t size, uintptr_t& begin, uintptr_t& end);
     struct Block {
         std::unique_ptr<uint8_t[]> data;
         size_t size;
     };
     MemoryMap& map_;
-    std::unordered_map<uintptr_t, Block> live_;
+    std::map<uintptr_t, Block> live_;
     std::deque<std::pair<uintptr_t, Block>> released_;  // oldest first
+    std::map<uintptr_t, size_t> releasedAt_;            // the same blocks by address: their sizes
     size_t liveBytes_ = 0;
     size_t releasedBytes_ = 0;
     bool trimDue_ = false;  // the quarantine is over its bounds

@@ -12,22 +12,6 @@ void MemoryMap::add(const void* begin, size_t size) {
     hot_ = {0, 0};
 }
 
-void MemoryMap::insert(const void* begin, size_t size) {
-    if (!begin || size == 0) return;
-    if (!sorted_) sort();
-    auto b = reinterpret_cast<uintptr_t>(begin);
-    auto it = std::upper_bound(regions_.begin(), regions_.end(), b, [](uintptr_t v, const Region& r) { return v < r.begin; });
-    regions_.insert(it, {b, b + size});
-}
-
-void MemoryMap::remove(const void* begin) {
-    if (!sorted_) sort();
-    auto b = reinterpret_cast<uintptr_t>(begin);
-    auto it = std::lower_bound(regions_.begin(), regions_.end(), b, [](const Region& r, uintptr_t v) { return r.begin < v; });
-    if (it != regions_.end() && it->begin == b) regions_.erase(it);
-    hot_ = {0, 0};
-}
-
 void MemoryMap::addObject(const void* object) {
     objects_.push_back(reinterpret_cast<uintptr_t>(object));
     sorted_ = false;
@@ -44,11 +28,19 @@ bool MemoryMap::containsSlow(uintptr_t a, size_t size) const {
     if (!sorted_) sort();
     // The last region starting at or before `a`; regions do not overlap.
     auto it = std::upper_bound(regions_.begin(), regions_.end(), a, [](uintptr_t v, const Region& r) { return v < r.begin; });
-    if (it == regions_.begin()) return false;
-    --it;
-    if (!(a < it->end && size <= it->end - a)) return false;
-    hot_ = *it;
-    return true;
+    if (it != regions_.begin()) {
+        --it;
+        if (a < it->end && size <= it->end - a) {
+            hot_ = *it;
+            return true;
+        }
+    }
+    Region block{0, 0};
+    if (dynamic_ && dynamic_(dynamicOwner_, a, size, block.begin, block.end)) {
+        hot_ = block;
+        return true;
+    }
+    return false;
 }
 
 bool MemoryMap::isObject(const void* p) const {

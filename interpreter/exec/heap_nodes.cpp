@@ -30,20 +30,20 @@ int64_t HeapNew::i(Ctx& c) {
 int64_t HeapDelete::i(Ctx& c) {
     auto* p = reinterpret_cast<uint8_t*>(static_cast<intptr_t>(clears ? loadAs<int64_t>(pointer->addr(c)) : pointer->i(c)));
     if (!p) return 0;
-    size_t blockSize = 0;
     rt::Heap& heap = c.m->heap;
-    switch (heap.locate(p, &blockSize)) {
-        case rt::Heap::Where::Released:
-            reportMemoryFault(c, site, "__DELETE of memory already released by __DELETE (a double free); nothing is released");
-            return 0;
-        case rt::Heap::Where::None:
-            reportMemoryFault(c, site, "__DELETE of a pointer that __NEW did not return; nothing is released");
-            return 0;
-        case rt::Heap::Where::Live: break;
-    }
-    // A live block is one region of the memory map: p is its start exactly when the whole block follows p.
-    if (!c.m->memory.contains(p, blockSize)) {
-        reportMemoryFault(c, site, fmt::format("__DELETE of a pointer into the middle of a __NEW block of {} bytes; nothing is released", blockSize));
+    if (heap.blockAt(p) == 0) {  // not the start of a live block: say what it is, release nothing
+        size_t blockSize = 0;
+        switch (heap.locate(p, &blockSize)) {
+            case rt::Heap::Where::Released:
+                reportMemoryFault(c, site, "__DELETE of memory already released by __DELETE (a double free); nothing is released");
+                break;
+            case rt::Heap::Where::Live:
+                reportMemoryFault(c, site, fmt::format("__DELETE of a pointer into the middle of a __NEW block of {} bytes; nothing is released", blockSize));
+                break;
+            case rt::Heap::Where::None:
+                reportMemoryFault(c, site, "__DELETE of a pointer that __NEW did not return; nothing is released");
+                break;
+        }
         return 0;
     }
     if (exit) {
