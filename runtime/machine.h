@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "runtime/heap.h"
 #include "runtime/memory_map.h"
 
 namespace strun::rt {
@@ -171,6 +172,8 @@ struct Machine {
     ProcessImage image;
     // What pointers may reach (registered by the compiler, the task bodies and the scheduler).
     MemoryMap memory;
+    // __NEW / __DELETE blocks, regions of `memory` while they live.
+    Heap heap{memory};
 
     // At every statement boundary and loop back-edge. True: abort the activation.
     inline bool tick() {

@@ -28,11 +28,19 @@ bool MemoryMap::containsSlow(uintptr_t a, size_t size) const {
     if (!sorted_) sort();
     // The last region starting at or before `a`; regions do not overlap.
     auto it = std::upper_bound(regions_.begin(), regions_.end(), a, [](uintptr_t v, const Region& r) { return v < r.begin; });
-    if (it == regions_.begin()) return false;
-    --it;
-    if (!(a < it->end && size <= it->end - a)) return false;
-    hot_ = *it;
-    return true;
+    if (it != regions_.begin()) {
+        --it;
+        if (a < it->end && size <= it->end - a) {
+            hot_ = *it;
+            return true;
+        }
+    }
+    Region block{0, 0};
+    if (dynamic_ && dynamic_(dynamicOwner_, a, size, block.begin, block.end)) {
+        hot_ = block;
+        return true;
+    }
+    return false;
 }
 
 bool MemoryMap::isObject(const void* p) const {

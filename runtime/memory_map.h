@@ -17,6 +17,16 @@ namespace strun::rt {
 class MemoryMap {
 public:
     void add(const void* begin, size_t size);
+    // Memory that comes and goes while running (runtime/heap.h): asked when no
+    // fixed region holds the range. It answers with the block [begin, end)
+    // that holds [a, a + size), or false.
+    using DynamicLookup = bool (*)(const void* owner, uintptr_t a, size_t size, uintptr_t& begin, uintptr_t& end);
+    void setDynamic(DynamicLookup lookup, const void* owner) {
+        dynamic_ = lookup;
+        dynamicOwner_ = owner;
+    }
+    // A dynamic block went away: the last hit may have been it.
+    void forgetHot() { hot_ = {0, 0}; }
     // True when [p, p + size) lies inside one registered region. The region
     // of the last hit is tried first: accesses through one reference or
     // pointer tend to stay in one block, so most checks are two compares.
@@ -39,6 +49,8 @@ private:
     mutable std::vector<Region> regions_;
     mutable std::vector<uintptr_t> objects_;
     mutable bool sorted_ = true;
+    DynamicLookup dynamic_ = nullptr;
+    const void* dynamicOwner_ = nullptr;
 };
 
 }  // namespace strun::rt

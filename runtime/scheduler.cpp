@@ -505,6 +505,8 @@ void Scheduler::runActivation(TaskRun& task) {
             observe(false);
         }
         stack_.pop_back();
+        // No activation left running: host memory of blocks __DELETE released may go (runtime/heap.h).
+        if (stack_.empty()) machine_.heap.trim();
         task.phase = Phase::Idle;
         task.watchdogAt = kNever;
         if (system_) system_->leave(task.spec.systemSlot);

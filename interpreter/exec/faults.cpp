@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/exec/call_nodes.h"
+#include "interpreter/exec/heap_nodes.h"
 #include "stdlib/conversions.h"
 
 namespace strun::exec {
@@ -66,14 +67,20 @@ uint8_t* FlexIndexPlace::outOfRange(Ctx& c, int64_t value, int64_t lo, int64_t h
 }
 
 uint8_t* RefSlotPlace::badTarget(Ctx& c, const uint8_t* p) {
+    const std::string heap = p ? heapDescription(c.m->heap, p) : std::string();
     c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(at(c, site)), at(c, site).line,
-                          p ? "reference leads outside the project's memory" : "reference is not bound", at(c, site).file, at(c, site).col);
+                          !p ? std::string("reference is not bound")
+                          : heap.empty() ? std::string("reference leads outside the project's memory") : "reference leads to " + heap,
+                          at(c, site).file, at(c, site).col);
     return sink(c);
 }
 
 uint8_t* DerefPlace::badTarget(Ctx& c, const uint8_t* p) {
+    // A pointer into __NEW memory says what went wrong: released, or read past the block's end.
+    const std::string heap = p ? heapDescription(c.m->heap, p) : std::string();
     c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(at(c, site)), at(c, site).line,
-                          p ? "dereference of a pointer outside the project's memory" : "dereference of a null pointer",
+                          !p ? std::string("dereference of a null pointer")
+                          : heap.empty() ? std::string("dereference of a pointer outside the project's memory") : "dereference of a pointer to " + heap,
                           at(c, site).file, at(c, site).col);
     return sink(c);
 }

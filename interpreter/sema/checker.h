@@ -285,6 +285,9 @@ private:
     static constexpr size_t kMaxFbInitCalls = 100000;
     std::map<const Type*, bool> holdsFbInit_;
     bool fbInitLimitReported_ = false;
+    // ---- __NEW, __DELETE, __QUERYPOINTER (checker_heap.cpp); handled false for other names
+    Checked heapCall(const std::string& key, const ast::Expr& e, bool& handled);
+    void heapInitStmts(const Type* t, exec::Expr* place, const ast::TypeSpec* declSpec, int depth, std::vector<exec::Stmt*>& out);
 
     ProgramModel& model_;
     CompileLog& log_;

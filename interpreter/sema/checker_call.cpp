@@ -2,6 +2,7 @@
 // the standard-library functions registered by interpreter/builtins.
 #include <fmt/format.h>
 
+#include "interpreter/sema/any_argument.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/fuse.h"
 #include "interpreter/sema/node_factory.h"
@@ -307,6 +308,11 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             r.node->type = r.type;
             return r;
         }
+        if (key.starts_with("__")) {
+            bool handled = false;
+            Checked h = heapCall(key, e, handled);
+            if (handled) return h;
+        }
         if (key == "__QUERYINTERFACE") {
             if (e.args.size() != 2 || !e.args[0].value || !e.args[1].value) {
                 error(diag::E0301, e.loc, "__QUERYINTERFACE takes a source and a destination interface");
@@ -534,6 +540,17 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
             continue;
         }
         exec::Expr* place = makeByRep<exec::PendingVar>(pool(), isAggregate(p->type) ? Rep::Void : repOf(p->type), p->offset);
+        {
+            // An input declared ANY / ANY_NUM / ... receives the argument's AnyType (decision 0302).
+            std::vector<exec::Stmt*> anyBinding;
+            bool anyOk = true;
+            if (bindAnyArgument(*this, p, v, place, b.arg->value->loc, anyBinding, anyOk)) {
+                if (!anyOk) { ok = false; continue; }
+                call->inputs.insert(call->inputs.end(), anyBinding.begin(), anyBinding.end());
+                direct = false;
+                continue;
+            }
+        }
         if (p->type->kind == TK::Reference) {
             // A REFERENCE TO input is bound to the argument (like REF=).
             if (exec::Stmt* bind = bindReference(p, v, place, b.arg->value->loc)) call->inputs.push_back(bind);

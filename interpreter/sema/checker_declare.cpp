@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/sema/attributes.h"
+#include "interpreter/sema/any_argument.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/node_factory.h"
 
@@ -145,6 +146,25 @@ const Type* Checker::resolveNamedType(const std::string& name, const ast::Loc& l
     if (dot != std::string::npos && !typeDecls_.count(key) && !pous_.count(key)) key = key.substr(dot + 1);
     if (const Type* t = types().byName(key)) return t;
     if (typeDecls_.count(key)) return resolveTypeDecl(key, loc);
+    if (isGenericTypeName(key)) {
+        // ANY, ANY_NUM, ...: the __SYSTEM.AnyType of stdlib/st/system.st when the
+        // project names __SYSTEM (which selects that file), else the same layout
+        // built here with a UDINT TypeClass (decision 0302).
+        if (typeDecls_.count("ANYTYPE")) return resolveTypeDecl("ANYTYPE", loc);
+        auto& slot = resolvedTypes_[" AnyType"];  // no declared name has a space
+        if (!slot) {
+            Type t;
+            t.kind = TK::Struct;
+            t.name = "__SYSTEM.AnyType";
+            t.fields = {Field{"TypeClass", types().elementary(TK::UDInt), 0, loc, false},
+                        Field{"pValue", types().pointer(types().elementary(TK::Byte)), 8, loc, false},
+                        Field{"diSize", types().elementary(TK::DInt), 16, loc, false}};
+            t.size = 24;
+            t.align = 8;
+            slot = types().create(std::move(t));
+        }
+        return slot;
+    }
     auto it = pous_.find(key);
     if (it != pous_.end()) {
         PouInfo* p = it->second;

@@ -724,6 +724,24 @@ Checked Checker::checkMember(const ast::Expr& e) {
             }
         }
     }
+    // Namespace.Enum.Value (`__SYSTEM.TYPE_CLASS.TYPE_INT`, decision 0302).
+    if (baseExpr.kind == ast::ExprKind::Member && !baseExpr.kids.empty() && isNamespace(*baseExpr.kids[0])) {
+        std::string bkey = upper(baseExpr.name);
+        std::string qualified = bkey;
+        for (const ast::Expr* p = baseExpr.kids[0].get(); p; p = p->kids.empty() ? nullptr : p->kids[0].get()) {
+            qualified = upper(p->name) + "." + qualified;
+            if (p->kind == ast::ExprKind::Name) break;
+        }
+        const std::string key = typeDecls_.count(qualified) ? qualified : bkey;
+        if (typeDecls_.count(key)) {
+            const Type* t = resolveTypeDecl(key, baseExpr.loc);
+            if (t && t->kind == TK::Enum) {
+                if (const Enumerator* en = t->findEnumerator(upper(e.name))) return constInt(en->value, t, e.loc);
+                enumValueError(e.nameLoc.line ? e.nameLoc : e.loc, e.name, t);
+                return bad(e.loc);
+            }
+        }
+    }
     Checked base = checkExpr(baseExpr);
     return memberOf(base, e.name, e.nameLoc.line ? e.nameLoc : e.loc);
 }
@@ -1124,6 +1142,7 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
             for (PouInfo* p = from->pou; p && !ok; p = p->parent)
                 for (const auto& n : p->ast->implements) {
                     auto it = pous_.find(upper(n));
+                    if (it == pous_.end() && n.rfind('.') != std::string::npos) it = pous_.find(upper(n.substr(n.rfind('.') + 1)));
                     if (it == pous_.end()) continue;
                     std::vector<PouInfo*> all;
                     collectInterfaces(it->second, all);

@@ -39,6 +39,8 @@ void Checker::collectInterfaces(PouInfo* itf, std::vector<PouInfo*>& out) {
     if (bases.empty() && !itf->ast->extends.empty()) bases.push_back(itf->ast->extends);
     for (const auto& b : bases) {
         auto it = pous_.find(upper(b));
+        // `EXTENDS __SYSTEM.IQueryInterface`: POUs are known by their own name.
+        if (it == pous_.end() && b.rfind('.') != std::string::npos) it = pous_.find(upper(b.substr(b.rfind('.') + 1)));
         if (it == pous_.end() || it->second->kind != ast::PouKind::Interface) {
             error(diag::E0405, itf->ast->loc, fmt::format("'{}' is not an interface", b));
             continue;
@@ -93,6 +95,8 @@ void Checker::buildClasses() {
         }
         for (const auto& name : fb->ast->implements) {
             auto it = pous_.find(upper(name));
+            // A namespace-qualified interface (`IMPLEMENTS __SYSTEM.IQueryInterface`): POUs are known by their own name.
+            if (it == pous_.end() && name.rfind('.') != std::string::npos) it = pous_.find(upper(name.substr(name.rfind('.') + 1)));
             if (it == pous_.end() || it->second->kind != ast::PouKind::Interface) {
                 error(diag::E0405, fb->ast->loc, fmt::format("'{}' in IMPLEMENTS is not an interface", name));
                 continue;

@@ -417,6 +417,15 @@ Checked Checker::makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& l
     if (isCharType(a.type->kind) && isStringType(b.type->kind) && b.isConst) b = coerce(b, a.type, b.loc, "operand");
     else if (isCharType(b.type->kind) && isStringType(a.type->kind) && a.isConst) a = coerce(a, b.type, a.loc, "operand");
     if (!a.ok || !b.ok) return bad(loc);
+    // An integer compared with an enumeration value compares with the value's
+    // integer (`UDINT_TO_INT(any.TypeClass) = IBaseLibrary.TypeClass.TYPE_INT`,
+    // as TcUnit writes it; CODESYS/TwinCAT accept it): decision 0302. Not with --strict.
+    if (!options_.strict) {
+        auto isPlainInteger = [](const Type* t) { return isInteger(t->kind) && !t->isSubrange; };
+        if (a.type->kind == TK::Enum && a.type->base && isPlainInteger(b.type)) a = coerce(a, a.type->base, a.loc, "operand");
+        else if (b.type->kind == TK::Enum && b.type->base && isPlainInteger(a.type)) b = coerce(b, b.type->base, b.loc, "operand");
+        if (!a.ok || !b.ok) return bad(loc);
+    }
     const Type* t = commonType(a, b, loc, false);
     if (!t || t->kind == TK::Struct || t->kind == TK::FunctionBlock || t->kind == TK::Array) {
         if (t && (op == ast::Op::Eq || op == ast::Op::Ne) && sameType(a.type, b.type)) {

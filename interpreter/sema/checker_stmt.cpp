@@ -205,6 +205,10 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
         } else {
             Checked src = checkExpr(*s.expr);
             if (!src.ok) return nullptr;
+            // `r REF= GetTest(name)`: a function or method returning REFERENCE TO T
+            // gives the address itself (TcUnit binds its results this way).
+            if (src.type->kind == TK::Reference && sameType(src.type->target, target.type->target))
+                return storeTo(target.node, types().elementary(TK::LWord), src.node);
             if (!src.isPlace || !sameType(src.type, target.type->target)) {
                 error(diag::E0206, s.expr->loc, fmt::format("REF= needs a variable of type {}, not {}", typeName(target.type->target), typeName(src.type)));
                 return nullptr;
@@ -334,6 +338,11 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
                         return false;
                     }
                 } else {
+                    // An enumeration value as the label of an integer selector is its
+                    // integer (`CASE UDINT_TO_INT(any.TypeClass) OF IBaseLibrary.TypeClass.TYPE_INT:`,
+                    // as CODESYS/TwinCAT accept; decision 0302). Not with --strict.
+                    if (c.type->kind == TK::Enum && !options_.strict && (isInteger(st->kind) || isBitString(st->kind)))
+                        c = constInt(c.constInt, st, e->loc);
                     if (!(c.untypedInt || isInteger(c.type->kind) || isBitString(c.type->kind))) {
                         error(diag::E0503, e->loc, fmt::format("CASE label of type {} does not match the selector type {}", typeName(c.type), typeName(st)));
                         return false;
