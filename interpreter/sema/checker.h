@@ -219,6 +219,8 @@ private:
     Checked varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside);
     Checked memberOf(Checked base, const std::string& member, const ast::Loc& loc);
     Checked laterConstant(const std::string& upperName, const ast::Loc& loc);
+    Checked earlyGlobalConstant(const std::string& key, const ast::Loc& loc);
+    bool globalsDeclared_ = false;  // declareGlobals has run: global constants are variables from then on
     std::set<std::string> pendingConstants_;
     // Constants read by laterConstant before their VarSym existed: used, for warnUnused.
     std::set<std::pair<const PouInfo*, std::string>> constantsUsedEarly_;

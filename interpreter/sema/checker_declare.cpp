@@ -860,6 +860,7 @@ void Checker::declareGlobals() {
         declareBlocks(conf->globals);
         for (auto& res : conf->resources) declareBlocks(res.globals);
     }
+    globalsDeclared_ = true;
 }
 
 // ---------------------------------------------------------------- initial values

@@ -459,7 +459,45 @@ Checked Checker::checkName(const ast::Expr& e) {
 // CODESYS resolves declarations in any order: a VAR CONSTANT of the POU being
 // laid out, declared further down (`arr : ARRAY[0..N] OF INT; ... N : INT := 3;`),
 // is its folded initial value here.
+// A constant of a global list, used before the lists are declared: in a TYPE
+// (`ARRAY[1..GVL.cMax] OF ...`, `UINT(0..cMax)`), which is resolved first.
+// The project's lists come before strun's library lists of the same name.
+Checked Checker::earlyGlobalConstant(const std::string& key, const ast::Loc& loc) {
+    if (globalsDeclared_ || pendingConstants_.count(key)) return bad(loc);
+    for (int pass = 0; pass < 2; ++pass)
+        for (const ast::GlobalList* list : globalLists_) {
+            if ((libraryFiles_.count(list->loc.file) != 0) != (pass == 1)) continue;
+            if (!qualifiedList_.empty() && upper(list->nameSpace) != qualifiedList_) continue;
+            for (const auto& block : list->blocks) {
+                if (!block.constant || block.section != ast::VarSection::Global) continue;
+                for (const auto& decl : block.vars)
+                    for (const auto& name : decl.names) {
+                        if (upper(name) != key || !decl.type || !decl.init || decl.init->kind != ast::InitKind::Expr || !decl.init->expr)
+                            continue;
+                        const Type* t = resolveTypeSpec(decl.type.get(), name);
+                        if (!t || !(isIntRep(t) || isRealRep(t))) return bad(loc);
+                        pendingConstants_.insert(key);
+                        const bool wasQualified = qualifiedAccess_;
+                        const std::string savedList = qualifiedList_;
+                        qualifiedAccess_ = false;  // its initial value names what it names
+                        qualifiedList_.clear();
+                        Checked v = checkExpr(*decl.init->expr);
+                        qualifiedAccess_ = wasQualified;
+                        qualifiedList_ = savedList;
+                        pendingConstants_.erase(key);
+                        if (!v.ok) return bad(loc);
+                        v = coerce(v, t, decl.init->expr->loc, "initial value");
+                        if (!v.ok || !v.isConst) return bad(loc);
+                        v.loc = loc;
+                        return v;
+                    }
+            }
+        }
+    return bad(loc);
+}
+
 Checked Checker::laterConstant(const std::string& key, const ast::Loc& loc) {
+    if (Checked global = earlyGlobalConstant(key, loc); global.ok) return global;
     if (!pou_ || !pou_->layingOut || !pou_->ast || pendingConstants_.count(key)) return bad(loc);
     for (const auto& block : pou_->ast->vars) {
         if (!block.constant) continue;
