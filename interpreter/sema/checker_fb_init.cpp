@@ -6,8 +6,8 @@
 // instances before the instance that contains them (docs/decisions/0079).
 #include <fmt/format.h>
 
-#include "interpreter/ast/ast_clone.h"
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/fb_init_call.h"
 
 namespace strun::sema {
 
@@ -84,41 +84,7 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
         fbInitLimitReported_ = true;
         return;
     }
-    ast::Expr call;
-    call.kind = ast::ExprKind::Call;
-    call.loc = declSpec ? declSpec->loc : init->ast->loc;
-    auto callee = std::make_unique<ast::Expr>();
-    callee->kind = ast::ExprKind::Name;
-    callee->loc = call.loc;
-    callee->name = "FB_init";
-    call.kids.push_back(std::move(callee));
-    if (declSpec) {
-        for (const auto& a : declSpec->initArgs) call.args.push_back(ast::cloneArg(a));
-        for (const auto& ev : declSpec->enumValues) {  // `FB(a := 1)` arrives as a typed-enumeration spec
-            ast::Arg a;
-            a.loc = ev.loc;
-            if (ev.value) {
-                a.name = ev.name;
-                a.value = ast::cloneExpr(*ev.value);
-            } else {
-                a.value = std::make_unique<ast::Expr>();
-                a.value->kind = ast::ExprKind::Name;
-                a.value->loc = ev.loc;
-                a.value->name = ev.name;
-            }
-            call.args.push_back(std::move(a));
-        }
-    }
-    // Positional arguments skip the two implicit inputs, as in CODESYS.
-    size_t implicit = 0;
-    for (VarSym* p : init->params)
-        if (upper(p->name) == "BINITRETAINS" || upper(p->name) == "BINCOPYCODE") ++implicit;
-    if (implicit == 2)
-        for (auto& a : call.args)
-            if (a.name.empty()) {
-                size_t index = &a - &call.args.front() + implicit;
-                if (index < init->params.size()) a.name = init->params[index]->name;
-            }
+    ast::Expr call = fbInitCall(*init, declSpec, declSpec ? declSpec->loc : init->ast->loc);
     auto* instance = pool().make<exec::AbsVar<void>>(addr);
     instance->type = t;
     Checked c = callUserFunction(init, call, instance);

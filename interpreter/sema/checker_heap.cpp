@@ -8,26 +8,13 @@
 #include "interpreter/exec/call_nodes.h"
 #include "interpreter/exec/heap_nodes.h"
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/fb_init_call.h"
 
 namespace strun::sema {
 
 namespace {
 constexpr int kMaxNesting = 64;            // instances inside instances, as for FB_init at start-up
 constexpr size_t kMaxInitStmts = 10000;    // start-up statements of one __NEW instance
-
-// `FB_init(...)` / `FB_exit(...)` as written, with the arguments of a
-// declaration's `(a := 1)` when there is one, for callUserFunction.
-ast::Expr implicitMethodCall(const char* name, const ast::Loc& loc) {
-    ast::Expr call;
-    call.kind = ast::ExprKind::Call;
-    call.loc = loc;
-    auto callee = std::make_unique<ast::Expr>();
-    callee->kind = ast::ExprKind::Name;
-    callee->loc = loc;
-    callee->name = name;
-    call.kids.push_back(std::move(callee));
-    return call;
-}
 }  // namespace
 
 // The start-up code of a value of type `t` at `place` created by __NEW: what
@@ -74,33 +61,7 @@ void Checker::heapInitStmts(const Type* t, exec::Expr* place, const ast::TypeSpe
     }
     PouInfo* init = fb->kind == ast::PouKind::FunctionBlock ? findMethod(fb, "FB_INIT") : nullptr;
     if (!init) return;
-    ast::Expr call = implicitMethodCall("FB_init", declSpec ? declSpec->loc : init->ast->loc);
-    if (declSpec) {
-        for (const auto& a : declSpec->initArgs) call.args.push_back(ast::cloneArg(a));
-        for (const auto& ev : declSpec->enumValues) {  // `FB(a := 1)` arrives as a typed-enumeration spec
-            ast::Arg a;
-            a.loc = ev.loc;
-            if (ev.value) {
-                a.name = ev.name;
-                a.value = ast::cloneExpr(*ev.value);
-            } else {
-                a.value = std::make_unique<ast::Expr>();
-                a.value->kind = ast::ExprKind::Name;
-                a.value->loc = ev.loc;
-                a.value->name = ev.name;
-            }
-            call.args.push_back(std::move(a));
-        }
-        size_t implicit = 0;
-        for (VarSym* p : init->params)
-            if (upper(p->name) == "BINITRETAINS" || upper(p->name) == "BINCOPYCODE") ++implicit;
-        if (implicit == 2)
-            for (auto& a : call.args)
-                if (a.name.empty()) {
-                    size_t index = &a - &call.args.front() + implicit;
-                    if (index < init->params.size()) a.name = init->params[index]->name;
-                }
-    }
+    ast::Expr call = fbInitCall(*init, declSpec, declSpec ? declSpec->loc : init->ast->loc);
     place->type = t;
     Checked c = callUserFunction(init, call, place);
     if (c.ok) out.push_back(pool().make<exec::EvalStmt>(c.node, exec::EvalStmt::Rep::Int));
