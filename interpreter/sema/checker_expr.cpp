@@ -336,6 +336,13 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
     Checked::Direct d = v->storage == Storage::Self ? Checked::Direct::Self
                         : v->storage == Storage::Frame ? Checked::Direct::Frame
                                                        : Checked::Direct::Abs;
+    if (d == Checked::Direct::Abs && !v->abs) {
+        // A global of the list being declared, named in a later declaration's
+        // type (`s : STRING(max)` with a plain VAR_GLOBAL max): it has no
+        // storage yet, and only a constant can size a type (found by fuzzing).
+        error(diag::E0401, loc, fmt::format("'{}' is not a constant: a type's size or bounds can only use constants", v->name));
+        return bad(loc);
+    }
     if (v->byRef && v->type->flexible) {
         exec::Expr* slot = directNode(pool(), d, v->offset, v->abs, types().elementary(TK::Void));
         c.flexDesc = slot;
