@@ -45,6 +45,13 @@ grep -q "is not a complete retain file" "$WORK/err" || fail "no warning about th
 rm -f "$FILE"
 "$STRUN" run --retain "$FILE" --retain-every 1h "$HERE/counter.st" 2>/dev/null &
 pid=$!
+# Not before strun catches SIGTERM (a sanitizer build on a loaded machine can
+# take longer than any fixed pause to get there), then a moment of cycles.
+for _ in $(seq 1 600); do
+    mask=$(awk '/^SigCgt:/ { print $2 }' /proc/$pid/status 2>/dev/null)
+    [ -n "$mask" ] && [ $(( 0x$mask & 0x4000 )) -ne 0 ] && break
+    sleep 0.05
+done
 sleep 0.5
 kill -TERM $pid
 wait $pid
