@@ -78,6 +78,7 @@ tokens {
     VAR_TEMP,
     VAR_STAT,
     VAR_INST,
+    VAR_GENERIC,
     VAR_GLOBAL,
     VAR_EXTERNAL,
     VAR_ACCESS,

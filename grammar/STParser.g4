@@ -77,13 +77,13 @@ pouDecl
     : PROGRAM modifiers+=modifier* name=identifier headerEnd=SEMI? elements+=pouElement* (body=pouBody members+=memberDecl*)? end=END_PROGRAM   # programDecl
     | FUNCTION modifiers+=modifier* name=identifier (COLON result=returnType)? headerEnd=SEMI? vars+=varBlock* body=stmtList end=END_FUNCTION # functionDecl
     | FUNCTION_BLOCK modifiers+=modifier* name=identifier
-        (EXTENDS base=qualifiedName)? (IMPLEMENTS interfaces+=qualifiedName (COMMA interfaces+=qualifiedName)*)?
+        (EXTENDS base=qualifiedName baseGeneric=genericArguments?)? (IMPLEMENTS interfaces+=qualifiedName (COMMA interfaces+=qualifiedName)*)?
         headerEnd=SEMI? elements+=pouElement* (body=pouBody members+=memberDecl*)? end=END_FUNCTION_BLOCK              # functionBlockDecl
     | INTERFACE modifiers+=modifier* name=identifier (EXTENDS bases+=qualifiedName (COMMA bases+=qualifiedName)*)?
         headerEnd=SEMI? members+=memberDecl* end=END_INTERFACE                                                         # interfaceDecl
     // IEC 61131-3 Ed.3 / SIMATIC AX: a CLASS is a function block without a body.
     | CLASS modifiers+=modifier* name=identifier
-        (EXTENDS base=qualifiedName)? (IMPLEMENTS interfaces+=qualifiedName (COMMA interfaces+=qualifiedName)*)?
+        (EXTENDS base=qualifiedName baseGeneric=genericArguments?)? (IMPLEMENTS interfaces+=qualifiedName (COMMA interfaces+=qualifiedName)*)?
         headerEnd=SEMI? elements+=pouElement* end=END_CLASS                                            # classDecl
     ;
 
@@ -148,7 +148,19 @@ typeSpec
     | STRUCT fields+=varDecl* END_STRUCT                                     # structType
     | UNION fields+=varDecl* END_UNION                                       # unionType   // CODESYS: members share storage
     | LPAREN values+=enumValue (COMMA values+=enumValue)* RPAREN base=qualifiedName?   # enumType
-    | name=qualifiedName arguments=typeArguments?                            # namedType
+    | name=qualifiedName generic=genericArguments? arguments=typeArguments?  # namedType
+    ;
+
+// The values of a block's VAR_GENERIC CONSTANTs (TwinCAT 4026 / CODESYS):
+// `FB_X<6>`, `FB_X<(2 * cMax)>`, `FB_X<cMax, 3>`.
+genericArguments
+    : LT_OP values+=genericArgument (COMMA values+=genericArgument)* GT_OP
+    ;
+
+genericArgument
+    : LPAREN value=expression RPAREN
+    | sign=MINUS? number=(INTEGER | BASED_INTEGER | TYPED_LITERAL)
+    | name=qualifiedName
     ;
 
 // After a type name: `INT (0..100)` (subrange), `INT (Red, Green)` (enumeration
@@ -206,7 +218,7 @@ varBlock
     ;
 
 varSection
-    : VAR | VAR_INPUT | VAR_OUTPUT | VAR_IN_OUT | VAR_TEMP | VAR_STAT | VAR_INST
+    : VAR | VAR_INPUT | VAR_OUTPUT | VAR_IN_OUT | VAR_TEMP | VAR_STAT | VAR_INST | VAR_GENERIC
     | VAR_GLOBAL | VAR_EXTERNAL | VAR_CONFIG
     ;
 

@@ -138,6 +138,7 @@ struct TypeSpec {
     std::vector<EnumValue> enumValues; // Enum
     std::vector<VarDecl> fields;       // Struct
     std::vector<Arg> initArgs;         // Named: CODESYS `fb : FB(1, x := 2)` — arguments of FB_init
+    std::vector<ExprPtr> genericArgs;  // Named: `FB_X<6, (2 * c)>` — values of the block's VAR_GENERIC CONSTANTs
     bool isUnion = false;              // Struct written UNION ... END_UNION (CODESYS): members overlap
 };
 
@@ -192,6 +193,7 @@ struct VarBlock {
     VarSection section = VarSection::Var;
     Access access = Access::Default;  // Ed.3 `VAR PUBLIC` / `VAR PRIVATE` ... (decision 0278)
     bool constant = false;
+    bool generic = false;  // VAR_GENERIC CONSTANT (TwinCAT 4026 / CODESYS): constants each instance's type sets
     bool retain = false;
     bool nonRetain = false;
     bool persistent = false;
@@ -278,6 +280,7 @@ struct Pou {
     bool final = false;
     bool override = false;        // METHOD ... OVERRIDE (Ed.3 / SIMATIC AX): must override a base method
     std::string extends;          // FB EXTENDS base; INTERFACE: first of extendsList
+    std::vector<ExprPtr> extendsGenericArgs;  // FB EXTENDS FB_Base<1000>: the base's VAR_GENERIC values
     std::vector<std::string> extendsList;  // INTERFACE EXTENDS I1, I2
     std::vector<std::string> implements;
     std::vector<VarBlock> vars;

@@ -176,6 +176,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
         out->nameLoc = loc(fb->name);
         modifiers(fb->modifiers, out->access, out->abstract, out->final);
         if (fb->base) out->extends = text(fb->base);
+        if (fb->baseGeneric) out->extendsGenericArgs = genericArguments(fb->baseGeneric);
         for (auto* i : fb->interfaces) out->implements.push_back(text(i));
         addElements(fb->elements);
         if (fb->body) statements(fb->body->statements, out->body);
@@ -188,6 +189,7 @@ std::unique_ptr<Pou> AstBuilder::pou(P::PouDeclContext* c, const std::string& na
         out->nameLoc = loc(cls->name);
         modifiers(cls->modifiers, out->access, out->abstract, out->final);
         if (cls->base) out->extends = text(cls->base);
+        if (cls->baseGeneric) out->extendsGenericArgs = genericArguments(cls->baseGeneric);
         for (auto* i : cls->interfaces) out->implements.push_back(text(i));
         addElements(cls->elements);
         out->endLoc = loc(cls->end ? cls->end : c->getStop());

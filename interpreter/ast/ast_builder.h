@@ -75,6 +75,7 @@ private:
               typename Element>
     bool sharedTypeForm(Context* c, TypeSpec& out, Element&& element);
     TypeSpecPtr namedType(P::QualifiedNameContext* c);
+    std::vector<ExprPtr> genericArguments(P::GenericArgumentsContext* c);
     EnumValue enumValue(P::EnumValueContext* c);
     InitPtr initializer(P::InitializerContext* c);
 

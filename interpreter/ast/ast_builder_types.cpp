@@ -35,6 +35,10 @@ VarBlock AstBuilder::varBlock(P::VarBlockContext* c) {
     out.loc = loc(c);
     if (c->access != nullptr) out.section = VarSection::Access;
     else if (c->section) out.section = sectionOf(c->section->getStart()->getType());
+    if (c->section && c->section->getStart()->getType() == L::VAR_GENERIC) {
+        out.generic = true;
+        out.constant = true;  // a generic variable is a constant of its instance's type (decision 0312)
+    }
     for (auto* q : c->qualifiers) {
         switch (q->getStart()->getType()) {
             case L::CONSTANT: out.constant = true; break;
@@ -111,6 +115,55 @@ TypeSpecPtr AstBuilder::namedType(P::QualifiedNameContext* c) {
     return out;
 }
 
+// `<6, (2 * c), cMax, -1>`: each value as an expression, checked where the
+// instance is declared.
+std::vector<ExprPtr> AstBuilder::genericArguments(P::GenericArgumentsContext* c) {
+    std::vector<ExprPtr> out;
+    if (c == nullptr) return out;
+    for (auto* v : c->values) {
+        if (v->value) {
+            out.push_back(expr(v->value));
+        } else if (v->number) {
+            ExprPtr e = literal(v->number);
+            if (v->sign) {
+                auto neg = std::make_unique<Expr>();
+                neg->kind = ExprKind::Unary;
+                neg->op = Op::Neg;
+                neg->loc = loc(v->sign);
+                neg->kids.push_back(std::move(e));
+                e = std::move(neg);
+            }
+            out.push_back(std::move(e));
+        } else if (v->name) {
+            // A dotted name `Ns.cMax` becomes Name `Ns` with Member `cMax`, as in an expression.
+            ExprPtr e;
+            const std::string written = text(v->name);
+            for (size_t from = 0; from <= written.size();) {
+                size_t dot = written.find('.', from);
+                if (dot == std::string::npos) dot = written.size();
+                const std::string word = written.substr(from, dot - from);
+                from = dot + 1;
+                if (word.empty()) continue;
+                auto next = std::make_unique<Expr>();
+                next->loc = loc(v->name);
+                next->nameLoc = next->loc;
+                next->name = word;
+                if (e) {
+                    next->kind = ExprKind::Member;
+                    next->kids.push_back(std::move(e));
+                } else {
+                    next->kind = ExprKind::Name;
+                }
+                e = std::move(next);
+            }
+            out.push_back(e ? std::move(e) : placeholder(loc(v)));
+        } else {
+            out.push_back(placeholder(loc(v)));
+        }
+    }
+    return out;
+}
+
 EnumValue AstBuilder::enumValue(P::EnumValueContext* c) {
     EnumValue out;
     out.loc = loc(c);
@@ -142,6 +195,8 @@ TypeSpecPtr AstBuilder::typeSpec(P::TypeSpecContext* c) {
             out->name = text(n->name);
             out->initArgs = args(ia->args);
         }
+        // `FB_X<4>(a := 1)` arrives as an enumeration on FB_X: the values go with the name.
+        if (n->generic) (out->elem ? out->elem->genericArgs : out->genericArgs) = genericArguments(n->generic);
     } else if (sharedTypeForm<P::ArrayTypeContext, P::PointerTypeContext, P::ReferenceTypeContext, P::StringTypeContext>(
                    c, *out, [&](auto* form) { return typeSpec(form->element); })) {
         // ARRAY, POINTER TO, REFERENCE TO, STRING

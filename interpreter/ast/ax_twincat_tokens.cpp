@@ -26,7 +26,7 @@ bool isModifier(std::size_t type) {
 bool startsDeclarations(std::size_t type) {
     switch (type) {
         case L::SEMI: case L::END_VAR: case L::VAR: case L::VAR_INPUT: case L::VAR_OUTPUT: case L::VAR_IN_OUT:
-        case L::VAR_TEMP: case L::VAR_STAT: case L::VAR_INST: case L::VAR_GLOBAL: case L::VAR_EXTERNAL:
+        case L::VAR_TEMP: case L::VAR_STAT: case L::VAR_GENERIC: case L::VAR_INST: case L::VAR_GLOBAL: case L::VAR_EXTERNAL:
         case L::VAR_CONFIG: case L::VAR_ACCESS: case L::CONSTANT: case L::RETAIN: case L::NON_RETAIN:
         case L::PERSISTENT: case L::STRUCT: case L::END_STRUCT: case L::END_TYPE: case L::END_PROGRAM:
         case L::END_FUNCTION: case L::END_FUNCTION_BLOCK: case L::END_METHOD: case L::END_PROPERTY:
@@ -40,7 +40,7 @@ bool startsDeclarations(std::size_t type) {
 // Tokens that open a block of declarations ended by END_VAR or END_STRUCT.
 bool opensDeclarations(std::size_t type) {
     switch (type) {
-        case L::VAR: case L::VAR_INPUT: case L::VAR_OUTPUT: case L::VAR_IN_OUT: case L::VAR_TEMP: case L::VAR_STAT:
+        case L::VAR: case L::VAR_INPUT: case L::VAR_OUTPUT: case L::VAR_IN_OUT: case L::VAR_TEMP: case L::VAR_STAT: case L::VAR_GENERIC:
         case L::VAR_INST: case L::VAR_GLOBAL: case L::VAR_EXTERNAL: case L::VAR_CONFIG: case L::VAR_ACCESS: case L::STRUCT:
             return true;
         default:

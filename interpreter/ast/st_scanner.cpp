@@ -461,7 +461,7 @@ std::size_t keywordOrIdentifier(std::string_view word) {
         {"PROTECTED", L::PROTECTED}, {"INTERNAL", L::INTERNAL}, {"THIS", L::THIS}, {"SUPER", L::SUPER},
         {"END_GET", L::END_GET}, {"END_SET", L::END_SET}, {"GET", L::GET}, {"SET", L::SET}, {"VAR", L::VAR},
         {"VAR_INPUT", L::VAR_INPUT}, {"VAR_OUTPUT", L::VAR_OUTPUT}, {"VAR_IN_OUT", L::VAR_IN_OUT},
-        {"VAR_TEMP", L::VAR_TEMP}, {"VAR_STAT", L::VAR_STAT}, {"VAR_INST", L::VAR_INST},
+        {"VAR_TEMP", L::VAR_TEMP}, {"VAR_STAT", L::VAR_STAT}, {"VAR_INST", L::VAR_INST}, {"VAR_GENERIC", L::VAR_GENERIC},
         {"VAR_GLOBAL", L::VAR_GLOBAL}, {"VAR_EXTERNAL", L::VAR_EXTERNAL}, {"VAR_ACCESS", L::VAR_ACCESS},
         {"VAR_CONFIG", L::VAR_CONFIG}, {"END_VAR", L::END_VAR}, {"CONSTANT", L::CONSTANT},
         {"RETAIN", L::RETAIN}, {"NON_RETAIN", L::NON_RETAIN}, {"PERSISTENT", L::PERSISTENT}, {"AT", L::AT},

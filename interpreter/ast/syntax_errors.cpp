@@ -199,7 +199,7 @@ size_t closingKeyword(antlr4::ParserRuleContext* c) {
 // The keywords that open a declaration section.
 bool isVarSectionKeyword(size_t type) {
     switch (type) {
-        case L::VAR: case L::VAR_INPUT: case L::VAR_OUTPUT: case L::VAR_IN_OUT: case L::VAR_TEMP: case L::VAR_STAT:
+        case L::VAR: case L::VAR_INPUT: case L::VAR_OUTPUT: case L::VAR_IN_OUT: case L::VAR_TEMP: case L::VAR_STAT: case L::VAR_GENERIC:
         case L::VAR_INST: case L::VAR_GLOBAL: case L::VAR_EXTERNAL: case L::VAR_CONFIG: case L::VAR_ACCESS:
             return true;
         default:

@@ -47,10 +47,17 @@ public:
     TypeTable& types() { return *model_.types; }
     CompileLog& log() { return log_; }
     // The code first (decision 0298): error(diag::E0101, loc, "undeclared identifier 'x'").
-    Diagnostic& error(diag::Code code, const ast::Loc& loc, const std::string& message) { return log_.error(code, loc, message); }
-    // A warning, unless `loc` is in strun's embedded library (its sources are never shown to users).
+    // In a generic block's specialisation the error says which one it is.
+    Diagnostic& error(diag::Code code, const ast::Loc& loc, const std::string& message) {
+        Diagnostic& d = log_.error(code, loc, message);
+        if (const PouInfo* s = specialisationBeingChecked()) d.note("in the specialisation '" + s->name + "'");
+        return d;
+    }
+    // A warning, unless `loc` is in strun's embedded library (its sources are
+    // never shown to users) or in a generic block's specialisation (the block
+    // itself was warned about).
     Diagnostic& warning(diag::Code code, const ast::Loc& loc, const std::string& message) {
-        if (!libraryFiles_.count(loc.file)) return log_.warning(code, loc, message);
+        if (!libraryFiles_.count(loc.file) && !specialisationBeingChecked()) return log_.warning(code, loc, message);
         discarded_ = Diagnostic{};
         return discarded_;
     }
@@ -153,6 +160,7 @@ private:
     std::string cyclePath(const std::string& name) const;
     // Type declarations and POUs whose resolution is in progress, outermost first.
     std::vector<std::string> declStack_;
+    bool declDepthExceeded_ = false;  // kMaxDeclarationDepth was reported
     friend class DeclDepthGuard;
 
     // ---- object orientation (checker_oop.cpp)
@@ -282,11 +290,27 @@ private:
     std::set<std::pair<const Type*, std::string>> unresolvedMembers_;
     // ---- CODESYS FB_init (checker_fb_init.cpp)
     void buildFbInitCalls();
-    void collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth);
+    // `enclosing`/`enclosingAddr`: the instance that declares this one, whose
+    // variables the FB_init arguments on the declaration may name.
+    void collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth,
+                        PouInfo* enclosing = nullptr, uint8_t* enclosingAddr = nullptr);
     bool holdsFbInit(const Type* t);
     static constexpr size_t kMaxFbInitCalls = 100000;
     std::map<const Type*, bool> holdsFbInit_;
     bool fbInitLimitReported_ = false;
+    // ---- blocks with VAR_GENERIC CONSTANT (checker_generic.cpp)
+    // The specialisation of block `name` for the values `args` (evaluated in
+    // the current scope), declared on first use; null after an error.
+    PouInfo* specialise(const std::string& name, const std::vector<ast::ExprPtr>& args, const ast::Loc& loc);
+    const Type* specialisedInstanceType(const ast::TypeSpec& spec);
+    static constexpr size_t kMaxSpecialisations = 4096;  // above the nesting limit: self-nesting ends there
+    // The specialisation whose declarations or body are being checked (its name has '<'), or null.
+    const PouInfo* specialisationBeingChecked() const {
+        const PouInfo* p = pou_ && pou_->owner ? pou_->owner : pou_;
+        return p && !genericCopies_.empty() && p->name.find('<') != std::string::npos ? p : nullptr;
+    }
+    std::vector<std::unique_ptr<ast::Pou>> genericCopies_;  // the specialisations' declarations
+    bool specialisationLimitReported_ = false;
     // ---- __NEW, __DELETE, __QUERYPOINTER (checker_heap.cpp); handled false for other names
     Checked heapCall(const std::string& key, const ast::Expr& e, bool& handled);
     void heapInitStmts(const Type* t, exec::Expr* place, const ast::TypeSpec* declSpec, int depth, std::vector<exec::Stmt*>& out);

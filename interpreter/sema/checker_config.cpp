@@ -393,8 +393,9 @@ void Checker::run(std::vector<ast::CompilationUnit>& units) {
     // Types and enumerations first, so that enumeration values are known everywhere.
     for (auto& [key, decl] : typeDecls_) resolveTypeDecl(key, decl->loc);
     declareGlobals();
-    for (PouInfo* p : pouOrder_)
-        if (p->kind != ast::PouKind::Interface) layoutPou(p);
+    // By index: laying out a POU may declare a specialisation of a generic block (appended).
+    for (size_t i = 0; i < pouOrder_.size(); ++i)
+        if (pouOrder_[i]->kind != ast::PouKind::Interface) layoutPou(pouOrder_[i]);
     buildClasses();
     buildConfiguration();
     sizeTaskInfoToTasks();
@@ -417,6 +418,7 @@ static bool isTestSuiteInstance(const Type* t) {
 void Checker::warnUnused() {
     for (PouInfo* p : pouOrder_) {
         if (libraryFiles_.count(p->ast->loc.file)) continue;
+        if (p->name.find('<') != std::string::npos) continue;  // a generic block's specialisation: warned on the block
         auto visit = [&](PouInfo* pou) {
             for (auto& v : pou->ownedVars) {
                 if (v->used || v.get() == pou->result || constantsUsedEarly_.count({pou, upper(v->name)})) continue;

@@ -17,6 +17,7 @@ DeclDepthGuard::DeclDepthGuard(Checker& checker, const std::string& name, const 
         checker_.error(diag::E0007, loc, fmt::format("declarations nested more than {} deep (at '{}'): each type or block contains, "
                                         "aliases or extends the next",
                                         kMaxDeclarationDepth, name));
+        checker_.declDepthExceeded_ = true;
         return;
     }
     checker_.declStack_.push_back(name);

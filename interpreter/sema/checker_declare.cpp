@@ -337,7 +337,9 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
 const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::string& context) {
     if (!spec) return nullptr;
     switch (spec->kind) {
-        case ast::TypeSpecKind::Named: return resolveNamedType(spec->name, spec->loc);
+        case ast::TypeSpecKind::Named:
+            if (!spec->genericArgs.empty()) return specialisedInstanceType(*spec);
+            return resolveNamedType(spec->name, spec->loc);
         case ast::TypeSpecKind::String: {
             int64_t len = 80;
             if (spec->length && !constIntExpr(spec->length.get(), len, "a string length")) len = 80;
@@ -411,7 +413,9 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
             // instance with FB_init arguments (see buildFbInitCalls).
             if (spec->elem && spec->elem->kind == ast::TypeSpecKind::Named) {
                 auto it = pous_.find(upper(spec->elem->name));
-                if (it != pous_.end() && it->second->kind == ast::PouKind::FunctionBlock) return resolveNamedType(spec->elem->name, spec->loc);
+                if (it != pous_.end() && it->second->kind == ast::PouKind::FunctionBlock)
+                    return spec->elem->genericArgs.empty() ? resolveNamedType(spec->elem->name, spec->loc)
+                                                           : specialisedInstanceType(*spec->elem);
             }
             // Inline enumeration in a declaration: an anonymous enum type.
             static int counter = 0;
@@ -499,16 +503,21 @@ void Checker::layoutPou(PouInfo* pou) {
         if (pou->kind == ast::PouKind::FunctionBlock) instOff = kFbHeader;
         if (!pou->ast->extends.empty() && pou->kind == ast::PouKind::FunctionBlock) {
             // EXTENDS Lib.Base: namespaces are flattened, as for type names.
+            // EXTENDS FB_Base<100>: the specialisation for those values.
             std::string base = upper(pou->ast->extends);
             if (!pous_.count(base) && base.rfind('.') != std::string::npos) base = base.substr(base.rfind('.') + 1);
             auto it = pous_.find(base);
-            if (it == pous_.end() || it->second->kind != ast::PouKind::FunctionBlock) {
+            PouInfo* baseInfo = it == pous_.end() ? nullptr : it->second;
+            if (!pou->ast->extendsGenericArgs.empty()) {
+                baseInfo = specialise(pou->ast->extends, pou->ast->extendsGenericArgs, pou->ast->loc);
+                if (baseInfo) layoutPou(baseInfo);
+            } else if (!baseInfo || baseInfo->kind != ast::PouKind::FunctionBlock) {
                 error(diag::E0102, pou->ast->loc, fmt::format("unknown function block '{}' in EXTENDS", pou->ast->extends));
             } else {
-                layoutPou(it->second);
+                layoutPou(baseInfo);
             }
-            if (it != pous_.end() && it->second->kind == ast::PouKind::FunctionBlock && it->second->laidOut) {
-                pou->parent = it->second;
+            if (baseInfo && baseInfo->kind == ast::PouKind::FunctionBlock && baseInfo->laidOut) {
+                pou->parent = baseInfo;
                 inst->parent = pou->parent->instanceType;
                 instOff = pou->parent->instanceType ? pou->parent->instanceType->size : kFbHeader;
                 pou->params = pou->parent->params;
@@ -640,6 +649,8 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
         if (instOnly && block.section != ast::VarSection::Inst) continue;
         // A method's VAR_INST was declared with its block's instance (declareMethodInstanceVars).
         if (block.section == ast::VarSection::Inst && !instOnly && pou->instanceVarsDeclared) continue;
+        if (block.generic && pou->kind != ast::PouKind::FunctionBlock)
+            error(diag::E0009, block.loc, "VAR_GENERIC CONSTANT belongs to a FUNCTION_BLOCK");
         for (const auto& decl : block.vars) {
             const Type* t = nullptr;
             bool isExternal = block.section == ast::VarSection::External;

@@ -39,7 +39,8 @@ bool Checker::holdsFbInit(const Type* t) {
     return result;
 }
 
-void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth) {
+void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth, PouInfo* enclosing,
+                             uint8_t* enclosingAddr) {
     if (!t || depth > kMaxNesting || !holdsFbInit(t)) return;
     if (t->kind == TK::Array) {
         if (t->elem && (t->elem->kind == TK::FunctionBlock || t->elem->kind == TK::Struct || t->elem->kind == TK::Array))
@@ -56,7 +57,7 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
     for (PouInfo* p = fb; p; p = p->parent)
         for (auto& v : p->ownedVars)
             if (v->storage == Storage::Self && !v->byRef)
-                collectFbInits(v->type, addr + v->offset, v->decl ? v->decl->type.get() : nullptr, depth + 1);
+                collectFbInits(v->type, addr + v->offset, v->decl ? v->decl->type.get() : nullptr, depth + 1, fb, addr);
     // Run-time initialisers of this instance (its base blocks' first, then its own), before its FB_init.
     std::vector<PouInfo*> chain;
     for (PouInfo* p = fb; p && chain.size() <= static_cast<size_t>(kMaxNesting); p = p->parent) chain.insert(chain.begin(), p);
@@ -87,9 +88,18 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
     ast::Expr call = fbInitCall(*init, declSpec, declSpec ? declSpec->loc : init->ast->loc);
     auto* instance = pool().make<exec::AbsVar<void>>(addr);
     instance->type = t;
+    // The arguments on a declaration inside a block or program may name that
+    // instance's variables (TcUnit: `logger : FB_Logger(TestResults);`): they
+    // are checked in its scope and run with it as THIS (decision 0313).
+    const bool inEnclosing = enclosing && declSpec && (!declSpec->initArgs.empty() || !declSpec->enumValues.empty());
+    PouInfo* savedPou = pou_;
+    if (inEnclosing) pou_ = enclosing;
     Checked c = callUserFunction(init, call, instance);
+    pou_ = savedPou;
     if (!c.ok) return;
-    model_.initCalls.push_back(pool().make<exec::EvalStmt>(c.node, exec::EvalStmt::Rep::Int));
+    exec::Stmt* run = pool().make<exec::EvalStmt>(c.node, exec::EvalStmt::Rep::Int);
+    if (inEnclosing) run = pool().make<exec::WithSelf>(enclosingAddr, run);
+    model_.initCalls.push_back(run);
 }
 
 void Checker::buildFbInitCalls() {
@@ -99,8 +109,17 @@ void Checker::buildFbInitCalls() {
     frameTop_ = 0;
     for (const RuntimeInit& g : globalAddressInits_)
         if (exec::Stmt* st = addressInitStmt(g)) model_.initCalls.push_back(st);
-    for (VarSym* g : model_.globals)
-        if (g->abs) collectFbInits(g->type, g->abs, g->decl ? g->decl->type.get() : nullptr, 0);
+    // A program's variables are here too (they have fixed addresses): their
+    // declaration arguments are in the program's scope.
+    for (VarSym* g : model_.globals) {
+        if (!g->abs) continue;
+        uint8_t* programMemory = nullptr;
+        if (g->owner)
+            for (const auto& prog : model_.programs)
+                if (prog.pou == g->owner) programMemory = prog.memory;
+        collectFbInits(g->type, g->abs, g->decl ? g->decl->type.get() : nullptr, 0, programMemory ? g->owner : nullptr,
+                       programMemory);
+    }
     for (auto& prog : model_.programs) collectFbInits(prog.pou->instanceType, prog.memory, nullptr, 0);
     // Temporaries of the FB_init calls (aggregate results) live in the frame they run in.
     model_.maxFrameSize = std::max(model_.maxFrameSize, (frameTop_ + 15) / 16 * 16);

@@ -131,11 +131,12 @@ void Checker::buildClasses() {
                 }
         }
     };
-    for (PouInfo* p : pouOrder_)
-        if (p->kind == ast::PouKind::FunctionBlock) build(p);
-    for (PouInfo* p : pouOrder_)
-        if (p->kind == ast::PouKind::Interface)
-            for (auto& [key, m] : p->methods) layoutPou(m);
+    // By index: a layout may append a generic block's specialisation to pouOrder_.
+    for (size_t i = 0; i < pouOrder_.size(); ++i)
+        if (pouOrder_[i]->kind == ast::PouKind::FunctionBlock) build(pouOrder_[i]);
+    for (size_t i = 0; i < pouOrder_.size(); ++i)
+        if (pouOrder_[i]->kind == ast::PouKind::Interface)
+            for (auto& [key, m] : pouOrder_[i]->methods) layoutPou(m);
 }
 
 // A call of `method` on `base` (an FB instance place, an interface value, SUPER^).

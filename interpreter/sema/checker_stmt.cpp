@@ -536,7 +536,8 @@ void Checker::checkBody(PouInfo* pou) {
 }
 
 void Checker::checkBodies() {
-    for (PouInfo* p : pouOrder_) {
+    for (size_t i = 0; i < pouOrder_.size(); ++i) {  // by index: see Checker::run
+        PouInfo* p = pouOrder_[i];
         if (p->kind == ast::PouKind::Interface) continue;
         checkBody(p);
         for (auto& [name, m] : p->methods) checkBody(m);

@@ -57,7 +57,7 @@ const std::vector<CodeInfo> kCatalogue = {
     {"E0009", K::Error, "a declaration in the wrong place",
      "A declaration that is valid ST but not where it stands: VAR blocks other than VAR_GLOBAL outside a POU, a "
      "STRUCT outside TYPE, an ACTION before its POU, a body in an INTERFACE method, an access path outside "
-     "VAR_ACCESS, an unknown assignment operator.",
+     "VAR_ACCESS, an unknown assignment operator, VAR_GENERIC CONSTANT outside a FUNCTION_BLOCK.",
      "VAR\n    x : INT;\nEND_VAR\nPROGRAM Main\nEND_PROGRAM", "PROGRAM Main\nVAR\n    x : INT;\nEND_VAR\nEND_PROGRAM"},
     {"E0010", K::Error, "an {error} pragma",
      "The source holds a CODESYS message pragma `{error 'text'}`: its author wants compilation to stop here with "
@@ -194,7 +194,7 @@ const std::vector<CodeInfo> kCatalogue = {
      "A type is declared in a way ST does not allow: an array whose upper bound is below its lower bound, ARRAY[*] "
      "outside VAR_IN_OUT, a subrange or enumeration on a base type that is not an integer, a string length outside "
      "1..65535, EXTENDS on a type that is not a structure, an enumeration value without an explicit value after "
-     "the largest LINT.",
+     "the largest LINT, values in '<...>' after a block whose VAR_GENERIC CONSTANTs they do not match in number.",
      "VAR a : ARRAY[10..1] OF INT; END_VAR", "VAR a : ARRAY[1..10] OF INT; END_VAR"},
     {"E0408", K::Error, "bad direct address",
      "An `AT %I..`, `%Q..` or `%M..` address is malformed, or does not exist on the target.",
