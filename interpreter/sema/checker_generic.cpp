@@ -10,28 +10,12 @@
 #include <fmt/ranges.h>
 
 #include "interpreter/ast/ast_clone.h"
+#include "interpreter/ast/synthesized_expr.h"
 #include "interpreter/sema/checker.h"
 
 namespace strun::sema {
 
 namespace {
-
-// An integer literal holding `value`, for the copied constant's initial value.
-ast::ExprPtr integerLiteral(int64_t value, const ast::Loc& loc) {
-    auto lit = std::make_unique<ast::Expr>();
-    lit->kind = ast::ExprKind::Literal;
-    lit->lit = ast::LitKind::Integer;
-    lit->loc = loc;
-    const uint64_t magnitude = value < 0 ? 0 - static_cast<uint64_t>(value) : static_cast<uint64_t>(value);
-    lit->text = std::to_string(magnitude);
-    if (value >= 0) return lit;
-    auto neg = std::make_unique<ast::Expr>();
-    neg->kind = ast::ExprKind::Unary;
-    neg->op = ast::Op::Neg;
-    neg->loc = loc;
-    neg->kids.push_back(std::move(lit));
-    return neg;
-}
 
 size_t genericConstantCount(const ast::Pou& pou) {
     size_t n = 0;
@@ -92,7 +76,7 @@ PouInfo* Checker::specialise(const std::string& name, const std::vector<ast::Exp
                 one.nameLocs = n < decl.nameLocs.size() ? std::vector<ast::Loc>{decl.nameLocs[n]} : std::vector<ast::Loc>{};
                 one.init = std::make_unique<ast::Init>();
                 one.init->loc = args[next]->loc;
-                one.init->expr = integerLiteral(values[next], args[next]->loc);
+                one.init->expr = ast::integerExpr(values[next], args[next]->loc);
                 ++next;
                 split.push_back(std::move(one));
             }

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/ast/ast_clone.h"
+#include "interpreter/ast/synthesized_expr.h"
 #include "interpreter/sema/checker.h"
 
 namespace strun::sema {
@@ -20,29 +21,6 @@ namespace {
 // Run-time initialisers of one variable (`arr : ARRAY[1..100000] OF INT := [100000(n)]`
 // would be one assignment per element): beyond this the declaration is an error.
 constexpr size_t kMaxRuntimeInitsPerVar = 4096;
-
-ast::ExprPtr nameExpr(const std::string& name, const ast::Loc& loc) {
-    auto e = std::make_unique<ast::Expr>();
-    e->kind = ast::ExprKind::Name;
-    e->loc = loc;
-    e->name = name;
-    return e;
-}
-
-ast::ExprPtr integerExpr(int64_t value, const ast::Loc& loc) {
-    auto e = std::make_unique<ast::Expr>();
-    e->kind = ast::ExprKind::Literal;
-    e->lit = ast::LitKind::Integer;
-    e->loc = loc;
-    e->text = std::to_string(value < 0 ? -value : value);
-    if (value >= 0) return e;
-    auto neg = std::make_unique<ast::Expr>();
-    neg->kind = ast::ExprKind::Unary;
-    neg->op = ast::Op::Neg;
-    neg->loc = loc;
-    neg->kids.push_back(std::move(e));
-    return neg;
-}
 }  // namespace
 
 void Checker::writeVarInitial(uint8_t* p, VarSym* v, std::vector<RuntimeInit>* runtime) {
@@ -79,7 +57,7 @@ bool Checker::deferInitial(const ast::Expr& value) {
     init.var = runtimeInitVar_;
     init.value = &value;
     if (!initPath_.empty()) {
-        ast::ExprPtr target = nameExpr(runtimeInitVar_->name, value.loc);
+        ast::ExprPtr target = ast::nameExpr(runtimeInitVar_->name, value.loc);
         for (const InitPathStep& step : initPath_) {
             auto next = std::make_unique<ast::Expr>();
             next->loc = value.loc;
@@ -99,7 +77,7 @@ bool Checker::deferInitial(const ast::Expr& value) {
                     index[d] = dims[d].lo + static_cast<int64_t>(count ? rest % count : 0);
                     rest = count ? rest / count : 0;
                 }
-                for (int64_t i : index) next->kids.push_back(integerExpr(i, value.loc));
+                for (int64_t i : index) next->kids.push_back(ast::integerExpr(i, value.loc));
             }
             target = std::move(next);
         }
@@ -117,7 +95,7 @@ exec::Stmt* Checker::addressInitStmt(const RuntimeInit& init) {
     ast::Stmt st;
     st.kind = !init.target && v->type->kind == TK::Reference ? ast::StmtKind::RefAssign : ast::StmtKind::Assign;
     st.loc = init.target || !v->decl || !v->decl->init ? init.value->loc : v->decl->init->loc;
-    st.target = init.target ? ast::cloneExpr(*init.target) : nameExpr(v->name, v->loc);
+    st.target = init.target ? ast::cloneExpr(*init.target) : ast::nameExpr(v->name, v->loc);
     st.expr = ast::cloneExpr(*init.value);
     return checkStmt(st);
 }
