@@ -20,6 +20,7 @@ struct PouCode;
 // slot of a method name; `interfaces` lists the INTERFACEs the class implements.
 struct ClassDesc {
     std::string name;
+    PouCode* body = nullptr;  // the block's own body: `p^()` through a POINTER TO its base runs this one
     std::vector<PouCode*> methods;
     std::vector<const void*> interfaces;
     bool implements(const void* itf) const {
@@ -275,7 +276,12 @@ struct AssignCallLocal final : Stmt {
 
 // FUNCTION_BLOCK call statement: inputs and outputs are plain stores in the
 // caller's context (into / out of the instance's members).
-struct CallFbStmt final : Stmt {
+// `Dispatch`: the instance is reached through a pointer, reference or
+// VAR_IN_OUT of a block that others extend, so it may be of a derived type:
+// its class's body runs, as in CODESYS/TwinCAT (decision 0314; TcUnit calls
+// its suites through POINTER TO FB_TestSuite). Direct calls do not pay for it.
+template <bool Dispatch>
+struct CallFbStmtOf final : Stmt {
     PouCode* body = nullptr;
     Expr* instance = nullptr;
     std::vector<Stmt*> inputs;
@@ -294,15 +300,22 @@ struct CallFbStmt final : Stmt {
             for (Stmt* s : inputs) s->exec(c);
             inst = instance->addr(c);
         }
-        uint8_t* f = pushFrame(c, *body, site);
+        const PouCode* code = body;
+        if constexpr (Dispatch) {
+            const ClassDesc* cls = loadAs<const ClassDesc*>(inst);
+            if (cls && cls->body) code = cls->body;
+        }
+        uint8_t* f = pushFrame(c, *code, site);
         if (!f) return Flow::Next;
-        runBody(c, *body, inst, f);
+        runBody(c, *code, inst, f);
         c.stackTop = f;
         if (c.aborting) return Flow::Abort;
         for (Stmt* s : outputs) s->exec(c);
         return Flow::Next;
     }
 };
+using CallFbStmt = CallFbStmtOf<false>;
+using CallFbDispatchStmt = CallFbStmtOf<true>;
 
 // ARRAY[*] parameters (VAR_IN_OUT): the slot holds a descriptor
 // { address, lo0, hi0, lo1, hi1, ... } filled in at the call.

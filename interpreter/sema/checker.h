@@ -224,6 +224,10 @@ private:
     exec::Stmt* bindOutput(const ast::Arg& arg, VarSym* p, Checked src);
     exec::Stmt* bindReference(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc);
     exec::Stmt* callFunctionBlock(Checked inst, const ast::Expr& e);
+    // Whether some block EXTENDS `fb` (known once every block is laid out).
+    bool isExtended(const PouInfo* fb);
+    std::set<const PouInfo*> extendedBlocks_;
+    bool extendedKnown_ = false;
     Checked varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside);
     Checked memberOf(Checked base, const std::string& member, const ast::Loc& loc);
     Checked laterConstant(const std::string& upperName, const ast::Loc& loc);
@@ -298,6 +302,12 @@ private:
     static constexpr size_t kMaxFbInitCalls = 100000;
     std::map<const Type*, bool> holdsFbInit_;
     bool fbInitLimitReported_ = false;
+    // ---- {attribute 'instance-path'} (checker_instance_path.cpp)
+    void writeAllInstancePaths();
+    void writeInstancePaths(const Type* t, uint8_t* addr, const std::string& path, int depth);
+    bool holdsInstancePath(const Type* t);
+    std::map<const Type*, bool> holdsInstancePath_;
+    uint64_t instancePathWrites_ = 0;
     // ---- blocks with VAR_GENERIC CONSTANT (checker_generic.cpp)
     // The specialisation of block `name` for the values `args` (evaluated in
     // the current scope), declared on first use; null after an error.

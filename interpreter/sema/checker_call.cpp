@@ -447,7 +447,8 @@ exec::Stmt* Checker::bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, co
         }
         return bind;
     }
-    if (!sameType(v.type, p->type) && !(isStringType(v.type->kind) && v.type->kind == p->type->kind)) {
+    if (!sameType(v.type, p->type) && !(isStringType(v.type->kind) && v.type->kind == p->type->kind) &&
+        !isBlockOrExtends(v.type, p->type)) {
         error(diag::E0201, loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}", p->name, typeName(p->type), typeName(v.type)));
         return nullptr;
     }
@@ -657,7 +658,34 @@ exec::Stmt* Checker::callFunctionBlock(Checked inst, const ast::Expr& e) {
             // An unconnected VAR_IN_OUT of an FB keeps its previous binding (CODESYS); only the first call must bind it.
         }
     if (!ok) return nullptr;
+    // Through a pointer, a reference or a VAR_IN_OUT the instance may be of a
+    // block derived from `fb`: then its own body runs (decision 0314).
+    // SUPER^() runs the base's body itself.
+    const bool exactType = inst.var && !inst.var->byRef && inst.var->type == inst.type;
+    const ast::Expr* callee = e.kids.empty() ? nullptr : e.kids[0].get();
+    const bool super = callee && callee->kind == ast::ExprKind::Deref && !callee->kids.empty() && callee->kids[0] &&
+                       callee->kids[0]->kind == ast::ExprKind::Super;
+    if (!exactType && !super && isExtended(fb)) {
+        auto* dispatch = pool().make<exec::CallFbDispatchStmt>();
+        dispatch->body = call->body;
+        dispatch->instance = call->instance;
+        dispatch->inputs = std::move(call->inputs);
+        dispatch->binds = std::move(call->binds);
+        dispatch->directInputs = call->directInputs;
+        dispatch->outputs = std::move(call->outputs);
+        dispatch->site = call->site;
+        return dispatch;
+    }
     return call;
+}
+
+bool Checker::isExtended(const PouInfo* fb) {
+    if (!extendedKnown_) {
+        for (const PouInfo* p : pouOrder_)
+            if (p->parent) extendedBlocks_.insert(p->parent);
+        extendedKnown_ = true;
+    }
+    return extendedBlocks_.count(fb) != 0;
 }
 
 }  // namespace strun::sema

@@ -312,6 +312,8 @@ void Checker::buildConfiguration() {
         for (PouInfo* p : pouOrder_) {
             if (p->kind != ast::PouKind::Program || libraryFiles_.count(p->ast->loc.file)) continue;
             const std::string key = upper(p->name);
+            // The test runner's program gets its one instance from addTestProgram.
+            if (!options_.testProgram.empty() && key == upper(options_.testProgram)) continue;
             if (!findProgram(key)) instantiateProgram(p->name, p, p->ast->loc);
         }
     if (!options_.testProgram.empty()) addTestProgram(options_.testProgram);
@@ -401,6 +403,7 @@ void Checker::run(std::vector<ast::CompilationUnit>& units) {
     sizeTaskInfoToTasks();
     checkBodies();
     if (log_.hasErrors()) return;
+    writeAllInstancePaths();
     buildFbInitCalls();
     warnUnused();
 }

@@ -70,6 +70,7 @@ void Checker::buildClasses() {
         done.insert(fb);
         exec::ClassDesc& d = *fb->classDesc;
         d.methods.assign(slots, nullptr);
+        d.body = fb->code;
         if (fb->parent) {
             build(fb->parent);
             if (fb->parent->classDesc) d.methods = fb->parent->classDesc->methods;

@@ -209,7 +209,7 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
             // gives the address itself (TcUnit binds its results this way).
             if (src.type->kind == TK::Reference && sameType(src.type->target, target.type->target))
                 return storeTo(target.node, types().elementary(TK::LWord), src.node);
-            if (!src.isPlace || !sameType(src.type, target.type->target)) {
+            if (!src.isPlace || !(sameType(src.type, target.type->target) || isBlockOrExtends(src.type, target.type->target))) {
                 error(diag::E0206, s.expr->loc, fmt::format("REF= needs a variable of type {}, not {}", typeName(target.type->target), typeName(src.type)));
                 return nullptr;
             }

@@ -232,6 +232,13 @@ Type* TypeTable::create(Type t) {
 
 std::string typeName(const Type* t) { return t ? t->name : std::string("?"); }
 
+bool isBlockOrExtends(const Type* t, const Type* base) {
+    if (!t || !base || t->kind != TK::FunctionBlock || base->kind != TK::FunctionBlock) return false;
+    for (const Type* p = t; p; p = p->parent)
+        if (p == base) return true;
+    return false;
+}
+
 bool sameType(const Type* a, const Type* b) {
     if (a == b) return true;
     if (!a || !b) return false;

@@ -156,5 +156,8 @@ void upperInPlace(std::string& s);  // the same folding into a buffer the caller
 std::string typeName(const Type* t);
 // Same type for assignment purposes: elementary types by kind (strings of any length), others by identity.
 bool sameType(const Type* a, const Type* b);
+// `t` is the function block `base` or one that EXTENDS it (at any depth): an
+// instance CODESYS accepts where a `base` is expected (VAR_IN_OUT, REF=).
+bool isBlockOrExtends(const Type* t, const Type* base);
 
 }  // namespace strun::sema
