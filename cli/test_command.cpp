@@ -26,6 +26,26 @@ namespace strun::cli {
 
 namespace {
 
+// A project that brings TcUnit's own library source (its FB_TestSuite replaces
+// strun's): its suites register with that source's runner, not with strun's
+// built-in TcUnit, so `strun test` finds no test. Say so and what to do.
+void explainOwnTcUnit(const sema::ProgramModel& model, const SourceSet& sources) {
+    // (The POUs' syntax trees are gone by now: the file comes from the registry.)
+    for (const auto& p : model.pouStore) {
+        if (p->owner || !p->code || p->code->library || sema::upper(p->name) != "FB_TESTSUITE") continue;
+        auto file = model.tests->pouFiles.find(p->code->name);
+        if (file == model.tests->pouFiles.end()) continue;
+        std::cerr << "strun: the project declares its own FB_TestSuite (" << sources.file(file->second).path
+                  << "), TcUnit's library source: strun test runs suites with its built-in TcUnit, so leave TcUnit's "
+                     "sources out of the inputs; `strun run` runs TcUnit's own engine, which reports through its ADS log\n";
+        return;
+    }
+}
+
+}  // namespace
+
+namespace {
+
 constexpr int64_t kDefaultTimeout = 10'000'000'000LL;  // T#10s (contract)
 
 int usage(const std::string& message) {
@@ -237,6 +257,7 @@ int testCommand(const CommandLine& line, const TestCommandLine& test) {
         std::cerr << "strun: " << (test.allowEmpty ? "warning: " : "") << "no test ran"
                   << (test.filter.empty() ? std::string(": the suites declare none") : ": --filter '" + test.filter + "' matches no test")
                   << "\n";
+    if (empty) explainOwnTcUnit(*model, sources);
     if (empty && !test.allowEmpty) return kExitCompile;
     return counts.failed == 0 ? kExitOk : kExitCompile;
 }
