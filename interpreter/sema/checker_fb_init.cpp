@@ -8,6 +8,7 @@
 
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/fb_init_call.h"
+#include "interpreter/sema/instance_search.h"
 
 namespace strun::sema {
 
@@ -19,24 +20,10 @@ constexpr int kMaxNesting = 64;  // instances inside instances: far beyond real 
 // FB_init, or REF()/ADR() declaration initialisers): arrays of types without
 // any are skipped instead of visited element by element.
 bool Checker::holdsFbInit(const Type* t) {
-    if (!t) return false;
-    auto known = holdsFbInit_.find(t);
-    if (known != holdsFbInit_.end()) return known->second;
-    holdsFbInit_[t] = false;  // a cycle (already an error) ends here
-    bool result = false;
-    if (t->kind == TK::Array) result = holdsFbInit(t->elem);
-    else if (t->kind == TK::Struct)
-        for (const Type* p = t; p && !result; p = p->parent)
-            for (const auto& f : p->fields) result = result || holdsFbInit(f.type);
-    else if (t->kind == TK::FunctionBlock && t->pou) {
-        result = t->pou->kind == ast::PouKind::FunctionBlock && findMethod(t->pou, "FB_INIT");
-        for (PouInfo* p = t->pou; p && !result; p = p->parent) result = !p->addressInits.empty();
-        for (PouInfo* p = t->pou; p && !result; p = p->parent)
-            for (auto& v : p->ownedVars)
-                if (v->storage == Storage::Self && !v->byRef) result = result || holdsFbInit(v->type);
-    }
-    holdsFbInit_[t] = result;
-    return result;
+    // Asked for each block of an EXTENDS chain: an FB_init of any of them, or its run-time initialisers.
+    return holdsInstanceWhere(t, holdsFbInit_, [](PouInfo* p) {
+        return (p->kind == ast::PouKind::FunctionBlock && p->methods.count("FB_INIT")) || !p->addressInits.empty();
+    });
 }
 
 void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth, PouInfo* enclosing,

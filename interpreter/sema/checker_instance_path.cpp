@@ -10,6 +10,7 @@
 
 #include "interpreter/sema/attributes.h"
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/instance_search.h"
 
 namespace strun::sema {
 
@@ -38,23 +39,11 @@ std::string subscripts(const Type* t, uint64_t k) {
 }  // namespace
 
 bool Checker::holdsInstancePath(const Type* t) {
-    if (!t) return false;
-    auto known = holdsInstancePath_.find(t);
-    if (known != holdsInstancePath_.end()) return known->second;
-    holdsInstancePath_[t] = false;  // a cycle (already an error) ends here
-    bool result = false;
-    if (t->kind == TK::Array) {
-        result = holdsInstancePath(t->elem);
-    } else if (t->kind == TK::Struct) {
-        for (const Type* p = t; p && !result; p = p->parent)
-            for (const auto& f : p->fields) result = result || holdsInstancePath(f.type);
-    } else if (t->kind == TK::FunctionBlock && t->pou) {
-        for (PouInfo* p = t->pou; p && !result; p = p->parent)
-            for (auto& v : p->ownedVars)
-                result = result || isInstancePathVar(*v) || (v->storage == Storage::Self && !v->byRef && holdsInstancePath(v->type));
-    }
-    holdsInstancePath_[t] = result;
-    return result;
+    return holdsInstanceWhere(t, holdsInstancePath_, [](PouInfo* p) {
+        for (auto& v : p->ownedVars)
+            if (isInstancePathVar(*v)) return true;
+        return false;
+    });
 }
 
 void Checker::writeInstancePaths(const Type* t, uint8_t* addr, const std::string& path, int depth) {
