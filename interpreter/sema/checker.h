@@ -206,6 +206,7 @@ private:
     Checked checkLiteral(const ast::Expr& e);
     Checked checkName(const ast::Expr& e);
     Checked checkMember(const ast::Expr& e);
+    Checked checkMemberBase(const ast::Expr& base);
     Checked checkIndex(const ast::Expr& e);
     // TwinCAT/CODESYS forms (checker_lang_forms.cpp): s[i] on a STRING, p[i] on a
     // POINTER, `(x := v)` used as a value.

@@ -404,7 +404,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         return bad(e.loc);
     }
     if (callee.kind == ast::ExprKind::Member) {
-        Checked base = checkExpr(*callee.kids[0]);
+        Checked base = checkMemberBase(*callee.kids[0]);
         if (!base.ok) return base;
         if ((base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou) {
             if (PouInfo* m = findMethod(base.type->pou, upper(callee.name))) return methodCall(base, m, e);

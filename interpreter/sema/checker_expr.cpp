@@ -787,8 +787,15 @@ Checked Checker::checkMember(const ast::Expr& e) {
             }
         }
     }
-    Checked base = checkExpr(baseExpr);
+    Checked base = checkMemberBase(baseExpr);
     return memberOf(base, e.name, e.nameLoc.line ? e.nameLoc : e.loc);
+}
+
+// What stands before `.member`: `THIS.x` (IEC 61131-3 Ed.3 and SIMATIC AX,
+// where THIS is a reference) is CODESYS's `THIS^.x` (decision 0316).
+Checked Checker::checkMemberBase(const ast::Expr& base) {
+    if (base.kind == ast::ExprKind::This) return checkThis(base, true);
+    return checkExpr(base);
 }
 
 Checked Checker::checkIndex(const ast::Expr& e) {

@@ -279,6 +279,8 @@ Checked Checker::autoDeref(Checked c) {
 }
 
 Checked Checker::addressOf(const ast::Expr& e, const char* fn) {
+    // REF(THIS) / ADR(THIS) (SIMATIC AX): the instance's own address, which THIS already is (decision 0316).
+    if (e.kind == ast::ExprKind::This) return checkThis(e, false);
     bool saved = suppressAutoDeref_;
     Checked v = checkExpr(e);
     suppressAutoDeref_ = saved;
