@@ -75,8 +75,8 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
     ast::Expr call = fbInitCall(*init, declSpec, declSpec ? declSpec->loc : init->ast->loc);
     auto* instance = pool().make<exec::AbsVar<void>>(addr);
     instance->type = t;
-    // The arguments on a declaration inside a block or program may name that
-    // instance's variables (TcUnit: `logger : FB_Logger(TestResults);`): they
+    // The arguments on a declaration inside a block or program (reached
+    // through its instance by the walk above) may name that instance's variables (TcUnit: `logger : FB_Logger(TestResults);`): they
     // are checked in its scope and run with it as THIS (decision 0313).
     const bool inEnclosing = enclosing && declSpec && (!declSpec->initArgs.empty() || !declSpec->enumValues.empty());
     PouInfo* savedPou = pou_;
@@ -96,17 +96,8 @@ void Checker::buildFbInitCalls() {
     frameTop_ = 0;
     for (const RuntimeInit& g : globalAddressInits_)
         if (exec::Stmt* st = addressInitStmt(g)) model_.initCalls.push_back(st);
-    // A program's variables are here too (they have fixed addresses): their
-    // declaration arguments are in the program's scope.
-    for (VarSym* g : model_.globals) {
-        if (!g->abs) continue;
-        uint8_t* programMemory = nullptr;
-        if (g->owner)
-            for (const auto& prog : model_.programs)
-                if (prog.pou == g->owner) programMemory = prog.memory;
-        collectFbInits(g->type, g->abs, g->decl ? g->decl->type.get() : nullptr, 0, programMemory ? g->owner : nullptr,
-                       programMemory);
-    }
+    for (VarSym* g : model_.globals)
+        if (g->abs) collectFbInits(g->type, g->abs, g->decl ? g->decl->type.get() : nullptr, 0);
     for (auto& prog : model_.programs) collectFbInits(prog.pou->instanceType, prog.memory, nullptr, 0);
     // Temporaries of the FB_init calls (aggregate results) live in the frame they run in.
     model_.maxFrameSize = std::max(model_.maxFrameSize, (frameTop_ + 15) / 16 * 16);

@@ -1,6 +1,7 @@
 #include "interpreter/sema/fb_init_call.h"
 
 #include "interpreter/ast/ast_clone.h"
+#include "interpreter/ast/synthesized_expr.h"
 #include "interpreter/sema/types.h"
 
 namespace strun::sema {
@@ -9,11 +10,7 @@ ast::Expr implicitMethodCall(const char* name, const ast::Loc& loc) {
     ast::Expr call;
     call.kind = ast::ExprKind::Call;
     call.loc = loc;
-    auto callee = std::make_unique<ast::Expr>();
-    callee->kind = ast::ExprKind::Name;
-    callee->loc = loc;
-    callee->name = name;
-    call.kids.push_back(std::move(callee));
+    call.kids.push_back(ast::nameExpr(name, loc));
     return call;
 }
 
@@ -28,10 +25,7 @@ ast::Expr fbInitCall(const PouInfo& init, const ast::TypeSpec* declSpec, const a
             a.name = ev.name;
             a.value = ast::cloneExpr(*ev.value);
         } else {
-            a.value = std::make_unique<ast::Expr>();
-            a.value->kind = ast::ExprKind::Name;
-            a.value->loc = ev.loc;
-            a.value->name = ev.name;
+            a.value = ast::nameExpr(ev.name, ev.loc);
         }
         call.args.push_back(std::move(a));
     }
