@@ -342,6 +342,9 @@ private:
     std::map<std::string, std::map<std::string, std::string>> parameterAliases_;
     std::set<std::string> namespaces_;  // upper-case NAMESPACE paths and their prefixes ("A", "A.B")
     bool isNamespace(const ast::Expr& e) const;
+    // A POU by its name as written: `Lib.FB_Base` or `__SYSTEM.IQueryInterface`
+    // is found by its own name (namespaces are flattened); null if none.
+    PouInfo* pouNamed(const std::string& written) const;
     std::map<std::string, std::pair<const Type*, const Enumerator*>> enumValues_;  // unqualified, unique ones
     std::set<std::string> ambiguousEnumValues_;
     std::unordered_map<std::string, size_t> programIndex_;  // upper-case instance name -> model_.programs index

@@ -75,6 +75,13 @@ bool Checker::isNamespace(const ast::Expr& e) const {
     return false;
 }
 
+PouInfo* Checker::pouNamed(const std::string& written) const {
+    std::string key = upper(written);
+    auto it = pous_.find(key);
+    if (it == pous_.end() && key.rfind('.') != std::string::npos) it = pous_.find(key.substr(key.rfind('.') + 1));
+    return it == pous_.end() ? nullptr : it->second;
+}
+
 void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
     addNamespacePath(namespaces_, pou->nameSpace);
     auto info = std::make_unique<PouInfo>();
@@ -504,18 +511,13 @@ void Checker::layoutPou(PouInfo* pou) {
         if (!pou->ast->extends.empty() && pou->kind == ast::PouKind::FunctionBlock) {
             // EXTENDS Lib.Base: namespaces are flattened, as for type names.
             // EXTENDS FB_Base<100>: the specialisation for those values.
-            std::string base = upper(pou->ast->extends);
-            if (!pous_.count(base) && base.rfind('.') != std::string::npos) base = base.substr(base.rfind('.') + 1);
-            auto it = pous_.find(base);
-            PouInfo* baseInfo = it == pous_.end() ? nullptr : it->second;
-            if (!pou->ast->extendsGenericArgs.empty()) {
-                baseInfo = specialise(pou->ast->extends, pou->ast->extendsGenericArgs, pou->ast->loc);
-                if (baseInfo) layoutPou(baseInfo);
-            } else if (!baseInfo || baseInfo->kind != ast::PouKind::FunctionBlock) {
-                error(diag::E0102, pou->ast->loc, fmt::format("unknown function block '{}' in EXTENDS", pou->ast->extends));
-            } else {
+            const bool generic = !pou->ast->extendsGenericArgs.empty();
+            PouInfo* baseInfo = generic ? specialise(pou->ast->extends, pou->ast->extendsGenericArgs, pou->ast->loc)
+                                        : pouNamed(pou->ast->extends);
+            if (baseInfo && baseInfo->kind == ast::PouKind::FunctionBlock)
                 layoutPou(baseInfo);
-            }
+            else if (!generic)  // specialise reported its own error
+                error(diag::E0102, pou->ast->loc, fmt::format("unknown function block '{}' in EXTENDS", pou->ast->extends));
             if (baseInfo && baseInfo->kind == ast::PouKind::FunctionBlock && baseInfo->laidOut) {
                 pou->parent = baseInfo;
                 inst->parent = pou->parent->instanceType;

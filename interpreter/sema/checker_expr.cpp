@@ -1193,11 +1193,10 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         if (from->kind == TK::FunctionBlock && from->pou) {
             for (PouInfo* p = from->pou; p && !ok; p = p->parent)
                 for (const auto& n : p->ast->implements) {
-                    auto it = pous_.find(upper(n));
-                    if (it == pous_.end() && n.rfind('.') != std::string::npos) it = pous_.find(upper(n.substr(n.rfind('.') + 1)));
-                    if (it == pous_.end()) continue;
+                    PouInfo* itf = pouNamed(n);
+                    if (!itf) continue;
                     std::vector<PouInfo*> all;
-                    collectInterfaces(it->second, all);
+                    collectInterfaces(itf, all);
                     for (PouInfo* i : all) ok = ok || i == target->pou;
                 }
             if (ok && !e.isPlace) ok = false;

@@ -29,14 +29,11 @@ size_t genericConstantCount(const ast::Pou& pou) {
 
 PouInfo* Checker::specialise(const std::string& name, const std::vector<ast::ExprPtr>& args, const ast::Loc& loc) {
     if (declDepthExceeded_) return nullptr;  // reported: a block nesting itself with ever new values stops here
-    std::string key = upper(name);
-    if (!pous_.count(key) && key.rfind('.') != std::string::npos) key = key.substr(key.rfind('.') + 1);
-    auto it = pous_.find(key);
-    if (it == pous_.end() || it->second->kind != ast::PouKind::FunctionBlock || !it->second->ast) {
+    PouInfo* generic = pouNamed(name);
+    if (!generic || generic->kind != ast::PouKind::FunctionBlock || !generic->ast) {
         error(diag::E0102, loc, fmt::format("unknown function block '{}' (only a FUNCTION_BLOCK takes values in '<...>')", name));
         return nullptr;
     }
-    PouInfo* generic = it->second;
     const size_t expected = genericConstantCount(*generic->ast);
     if (expected == 0) {
         error(diag::E0407, loc, fmt::format("'{}' has no VAR_GENERIC CONSTANT to give the values in '<...>' to", generic->name));

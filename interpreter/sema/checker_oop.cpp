@@ -38,14 +38,12 @@ void Checker::collectInterfaces(PouInfo* itf, std::vector<PouInfo*>& out) {
     std::vector<std::string> bases = itf->ast->extendsList;
     if (bases.empty() && !itf->ast->extends.empty()) bases.push_back(itf->ast->extends);
     for (const auto& b : bases) {
-        auto it = pous_.find(upper(b));
-        // `EXTENDS __SYSTEM.IQueryInterface`: POUs are known by their own name.
-        if (it == pous_.end() && b.rfind('.') != std::string::npos) it = pous_.find(upper(b.substr(b.rfind('.') + 1)));
-        if (it == pous_.end() || it->second->kind != ast::PouKind::Interface) {
+        PouInfo* base = pouNamed(b);  // also `EXTENDS __SYSTEM.IQueryInterface`
+        if (!base || base->kind != ast::PouKind::Interface) {
             error(diag::E0405, itf->ast->loc, fmt::format("'{}' is not an interface", b));
             continue;
         }
-        collectInterfaces(it->second, out);
+        collectInterfaces(base, out);
     }
 }
 
@@ -95,14 +93,12 @@ void Checker::buildClasses() {
             else d.methods[static_cast<size_t>(m->slot)] = nullptr;
         }
         for (const auto& name : fb->ast->implements) {
-            auto it = pous_.find(upper(name));
-            // A namespace-qualified interface (`IMPLEMENTS __SYSTEM.IQueryInterface`): POUs are known by their own name.
-            if (it == pous_.end() && name.rfind('.') != std::string::npos) it = pous_.find(upper(name.substr(name.rfind('.') + 1)));
-            if (it == pous_.end() || it->second->kind != ast::PouKind::Interface) {
+            PouInfo* itf = pouNamed(name);  // also `IMPLEMENTS __SYSTEM.IQueryInterface`
+            if (!itf || itf->kind != ast::PouKind::Interface) {
                 error(diag::E0405, fb->ast->loc, fmt::format("'{}' in IMPLEMENTS is not an interface", name));
                 continue;
             }
-            collectInterfaces(it->second, fb->interfaces);
+            collectInterfaces(itf, fb->interfaces);
         }
         for (PouInfo* itf : fb->interfaces) {
             if (std::find(d.interfaces.begin(), d.interfaces.end(), itf) == d.interfaces.end()) d.interfaces.push_back(itf);
