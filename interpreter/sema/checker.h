@@ -315,10 +315,12 @@ private:
     PouInfo* specialise(const std::string& name, const std::vector<ast::ExprPtr>& args, const ast::Loc& loc);
     const Type* specialisedInstanceType(const ast::TypeSpec& spec);
     static constexpr size_t kMaxSpecialisations = 4096;  // above the nesting limit: self-nesting ends there
-    // The specialisation whose declarations or body are being checked (its name has '<'), or null.
+    // A generic block's specialisation: only those have '<' in their name (`FB_X<6>`).
+    static bool isSpecialisation(const PouInfo* p) { return p->name.find('<') != std::string::npos; }
+    // The specialisation whose declarations or body are being checked, or null.
     const PouInfo* specialisationBeingChecked() const {
         const PouInfo* p = pou_ && pou_->owner ? pou_->owner : pou_;
-        return p && !genericCopies_.empty() && p->name.find('<') != std::string::npos ? p : nullptr;
+        return p && !genericCopies_.empty() && isSpecialisation(p) ? p : nullptr;
     }
     std::vector<std::unique_ptr<ast::Pou>> genericCopies_;  // the specialisations' declarations
     bool specialisationLimitReported_ = false;

@@ -421,7 +421,7 @@ static bool isTestSuiteInstance(const Type* t) {
 void Checker::warnUnused() {
     for (PouInfo* p : pouOrder_) {
         if (libraryFiles_.count(p->ast->loc.file)) continue;
-        if (p->name.find('<') != std::string::npos) continue;  // a generic block's specialisation: warned on the block
+        if (isSpecialisation(p)) continue;  // warned on the generic block itself
         auto visit = [&](PouInfo* pou) {
             for (auto& v : pou->ownedVars) {
                 if (v->used || v.get() == pou->result || constantsUsedEarly_.count({pou, upper(v->name)})) continue;
