@@ -279,6 +279,8 @@ bool DapServer::launch(const json& args, std::string& error) {
         return false;
     }
     line_ = line;
+    // The debugger follows calls by their frames and depth: no call is inlined (decision 0317).
+    line_.compile.inlineCalls = false;
     if (line_.dump) event("output", {{"category", "console"}, {"output", "strun debug: --dump is ignored (stdout carries the protocol)\n"}});
     std::string usage;
     // The checker kept for evaluate reports into log_: it must live as long.

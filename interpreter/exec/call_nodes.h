@@ -46,7 +46,12 @@ struct PouCode {
     Body inlineBody;
     bool hasInlineBody = false;
     uint32_t frameSize = 0;
-    std::vector<uint8_t> frameInit;  // initial image of the frame (locals with their initial values), frameImageSize bytes
+    // The part of the frame a call initialises from `frameInit` (the POU's
+    // variables and its own temporaries). Above it, up to frameSize, lie the
+    // areas of the small FUNCTIONs inlined into this body (decision 0317),
+    // which each inlined call initialises itself.
+    uint32_t initSize = 0;
+    std::vector<uint8_t> frameInit;  // initial image of the frame (locals with their initial values), frameImageSize(initSize) bytes
     uint32_t resultOffset = 0;       // FUNCTION / METHOD result, in the frame
     bool library = false;            // declared in the embedded standard library
 };
@@ -60,8 +65,8 @@ inline uint8_t* pushFrame(Ctx& c, const PouCode& code, const Site& site) {
         reportCallDepth(c, site, code.name);
         return nullptr;
     }
-    if (code.frameSize <= kSmallFrame) std::memcpy(f, code.frameInit.data(), kSmallFrame);
-    else std::memcpy(f, code.frameInit.data(), code.frameSize);
+    if (code.initSize <= kSmallFrame) std::memcpy(f, code.frameInit.data(), kSmallFrame);
+    else std::memcpy(f, code.frameInit.data(), code.initSize);
     c.stackTop = f + code.frameSize;
     return f;
 }
@@ -163,9 +168,23 @@ struct ArgBind {
             case H::Bool: storeAs<uint8_t>(p, a.value->i(c) != 0); break;
             case H::F32: storeAs<float>(p, static_cast<float>(a.value->f(c))); break;
             case H::F64: storeAs<double>(p, a.value->f(c)); break;
+            default: __builtin_unreachable();  // every How is a case: no range check per argument
         }
     }
 }
+
+// A small leaf FUNCTION inlined at its call (decision 0317): its body was
+// checked a second time with its variables at `base` in the caller's frame,
+// so the call pushes no frame and switches no registers but the POU name.
+// `image` is the callee's initial frame with this call's constant arguments
+// already in place, so that only the other arguments are bound per call.
+struct InlinedCall {
+    Body body;
+    uint32_t base = 0;
+    bool onInstance = false;      // a METHOD: its body runs on the call's instance (self)
+    uint32_t size = 0;            // bytes of `image` copied per call
+    std::vector<uint8_t> image;   // frameImageSize(size) bytes
+};
 
 // FUNCTION call, or METHOD call (then `instance` gives the FB instance).
 // Inputs are stores into the new frame (places relative to Ctx::pending);
@@ -183,9 +202,16 @@ struct CallPou final : Expr {
     uint32_t resultSize = 0;         // aggregates: bytes copied to the caller's temporary
     uint32_t tempOffset = 0;         // aggregates: caller-frame temporary receiving the result
     int virtualSlot = -1;            // >= 0: the method is looked up in the instance's ClassDesc
+    InlinedCall* inlined = nullptr;  // set: the callee's body runs in the caller's frame
 
     // Runs the call; returns the (already popped) callee frame, or nullptr if it did not run.
-    uint8_t* run(Ctx& c) {
+    // Both forms are functions of their own: sharing one, the inlined form
+    // paid the general form's register saves (19 instructions a call).
+    [[gnu::always_inline]] uint8_t* run(Ctx& c) {
+        if (!inlined) return runFramed(c);
+        return inlined->onInstance ? runInlined<true>(c) : runInlined<false>(c);
+    }
+    [[gnu::noinline]] uint8_t* runFramed(Ctx& c) {
         uint8_t* inst = instance ? instance->addr(c) : c.self;
         PouCode* code = callee;
         if (virtualSlot >= 0) {
@@ -210,6 +236,35 @@ struct CallPou final : Expr {
         for (Stmt* s : outputs) s->exec(c);
         c.pending = savedPending;
         c.stackTop = f;
+        return f;
+    }
+    // The inlined form: the same depth rule as pushFrame (the callee is a leaf,
+    // so nothing inside it looks at the depth), the callee's variables
+    // initialised and its inputs bound in the caller's frame, and the POU name
+    // (and for a METHOD the instance) switched for the body, so that a
+    // watchdog or a test failure names the callee.
+    template <bool OnInstance>
+    [[gnu::noinline]] uint8_t* runInlined(Ctx& c) {
+        uint8_t* inst = nullptr;
+        if constexpr (OnInstance) inst = instance->addr(c);  // before the arguments, as in runFramed
+        if (__builtin_expect(c.depth >= kMaxCallDepth, 0)) {
+            reportCallDepth(c, site, callee->name);
+            return nullptr;
+        }
+        const InlinedCall& in = *inlined;
+        uint8_t* f = c.frame + in.base;
+        if (in.size <= kSmallFrame) std::memcpy(f, in.image.data(), kSmallFrame);
+        else std::memcpy(f, in.image.data(), in.size);
+        bindArgs(c, f, binds);
+        const Stmt* savedStmt = c.stmt;
+        const std::string* savedPou = c.pouName;
+        uint8_t* savedSelf = c.self;
+        if constexpr (OnInstance) c.self = inst;
+        c.pouName = &callee->name;
+        in.body.run(c);
+        if constexpr (OnInstance) c.self = savedSelf;
+        c.stmt = savedStmt;
+        c.pouName = savedPou;
         return f;
     }
     PouCode* dispatch(Ctx& c, uint8_t* inst);  // faults.cpp: NULL_POINTER when unbound

@@ -62,7 +62,7 @@ bool TaskRunner::runActivation() {
         const exec::PouCode& code = *inv.code;
         c.pouName = &code.name;
         c.stmt = nullptr;
-        if (code.frameSize) std::memcpy(c.frame, code.frameInit.data(), code.frameSize);
+        if (code.initSize) std::memcpy(c.frame, code.frameInit.data(), code.initSize);
         c.stackTop = c.frame + code.frameSize;
         // Every activation costs at least one statement of PLC time, so an
         // empty program cannot spin a freewheeling task at a standstill.

@@ -49,6 +49,7 @@ public:
     // The code first (decision 0298): error(diag::E0101, loc, "undeclared identifier 'x'").
     // In a generic block's specialisation the error says which one it is.
     Diagnostic& error(diag::Code code, const ast::Loc& loc, const std::string& message) {
+        if (silent_) return silenced();
         Diagnostic& d = log_.error(code, loc, message);
         if (const PouInfo* s = specialisationBeingChecked()) d.note("in the specialisation '" + s->name + "'");
         return d;
@@ -57,6 +58,7 @@ public:
     // never shown to users) or in a generic block's specialisation (the block
     // itself was warned about).
     Diagnostic& warning(diag::Code code, const ast::Loc& loc, const std::string& message) {
+        if (silent_) return silenced();
         if (!libraryFiles_.count(loc.file) && !specialisationBeingChecked()) return log_.warning(code, loc, message);
         discarded_ = Diagnostic{};
         return discarded_;
@@ -324,6 +326,32 @@ private:
     }
     std::vector<std::unique_ptr<ast::Pou>> genericCopies_;  // the specialisations' declarations
     bool specialisationLimitReported_ = false;
+    // ---- small leaf FUNCTIONs inlined at their calls (checker_inline.cpp, decision 0317)
+    struct InlineSite {
+        exec::CallPou* call;
+        PouInfo* callee;
+        PouInfo* caller;
+        bool onInstance;
+    };
+    // At the end of checkBody: whether `pou` may be inlined (a small, clean FUNCTION that calls nothing).
+    void noteInlinable(PouInfo* pou, size_t messagesBefore, uint64_t callsBefore);
+    // At a FUNCTION call, or a METHOD call on an instance of exactly known
+    // class (`onInstance`), in a body: remembered for inlineLeafCalls.
+    void noteInlineSite(exec::CallPou* call, PouInfo* fn, bool onInstance);
+    // After every body is checked: each remembered call of an inlinable FUNCTION
+    // gets the callee's body checked again in an area of the caller's frame.
+    void inlineLeafCalls();
+    std::vector<InlineSite> inlineSites_;
+    PouInfo* inlineCaller_ = nullptr;  // the POU whose body (not an initialiser) is being checked
+    uint64_t userCallsMade_ = 0;       // call nodes of user POUs made so far: a body that adds none is a leaf
+    uint32_t frameBias_ = 0;           // added to frame variables' offsets while a body is inlined
+    bool silent_ = false;              // while a body is inlined: diagnostics are counted, not reported
+    uint64_t silencedCount_ = 0;
+    Diagnostic& silenced() {
+        ++silencedCount_;
+        discarded_ = Diagnostic{};
+        return discarded_;
+    }
     // ---- __NEW, __DELETE, __QUERYPOINTER (checker_heap.cpp); handled false for other names
     Checked heapCall(const std::string& key, const ast::Expr& e, bool& handled);
     void heapInitStmts(const Type* t, exec::Expr* place, const ast::TypeSpec* declSpec, int depth, std::vector<exec::Stmt*>& out);

@@ -510,6 +510,7 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
     layoutPou(fn);
     std::vector<ArgBinding> bindings;
     bool ok = bindArguments(*this, fn, fn->name, fn->params, e, bindings);
+    ++userCallsMade_;
     auto* call = pool().make<exec::CallPou>();
     call->callee = fn->code;
     call->instance = instance;
@@ -584,6 +585,7 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
     }
     call->type = r.type;
     r.node = call;
+    if (!instance) noteInlineSite(call, fn, false);
     return r;
 }
 
@@ -594,6 +596,7 @@ exec::Stmt* Checker::callFunctionBlock(Checked inst, const ast::Expr& e) {
     std::vector<ArgBinding> bindings;
     std::vector<VarSym*> params = fb->params;
     bool ok = bindArguments(*this, fb, fb->name, params, e, bindings);
+    ++userCallsMade_;
     auto* call = pool().make<exec::CallFbStmt>();
     call->body = fb->code;
     call->instance = inst.node;

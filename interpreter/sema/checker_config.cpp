@@ -403,6 +403,7 @@ void Checker::run(std::vector<ast::CompilationUnit>& units) {
     sizeTaskInfoToTasks();
     checkBodies();
     if (log_.hasErrors()) return;
+    inlineLeafCalls();
     writeAllInstancePaths();
     buildFbInitCalls();
     warnUnused();

@@ -607,6 +607,7 @@ void Checker::layoutPou(PouInfo* pou) {
     }
     pou->frameSize = alignUp(frameOff, 16);
     pou->code->frameSize = pou->frameSize;
+    pou->code->initSize = pou->frameSize;
     pou->code->resultOffset = 0;
     pou->code->frameInit.assign(exec::frameImageSize(pou->frameSize), 0);
     for (auto& v : pou->ownedVars) {

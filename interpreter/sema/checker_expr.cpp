@@ -336,6 +336,8 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
     Checked::Direct d = v->storage == Storage::Self ? Checked::Direct::Self
                         : v->storage == Storage::Frame ? Checked::Direct::Frame
                                                        : Checked::Direct::Abs;
+    // A FUNCTION's body inlined into a caller: its frame is an area of the caller's.
+    const uint32_t offset = v->offset + (d == Checked::Direct::Frame ? frameBias_ : 0);
     if (d == Checked::Direct::Abs && !v->abs) {
         // A global of the list being declared, named in a later declaration's
         // type (`s : STRING(max)` with a plain VAR_GLOBAL max): it has no
@@ -344,11 +346,11 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
         return bad(loc);
     }
     if (v->byRef && v->type->flexible) {
-        exec::Expr* slot = directNode(pool(), d, v->offset, v->abs, types().elementary(TK::Void));
+        exec::Expr* slot = directNode(pool(), d, offset, v->abs, types().elementary(TK::Void));
         c.flexDesc = slot;
         c.node = pool().make<exec::RefSlotPlace>(slot, site(loc), 1u);
     } else if (v->byRef) {
-        exec::Expr* slot = directNode(pool(), d, v->offset, v->abs, types().elementary(TK::Void));
+        exec::Expr* slot = directNode(pool(), d, offset, v->abs, types().elementary(TK::Void));
         // A VAR_IN_OUT CONSTANT string may be bound to a shorter string (or a
         // literal's temporary) and is never written: only its first byte
         // must lie in the project's memory (decision 0286).
@@ -360,9 +362,9 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
         c.node = pool().make<exec::BitPlace<uint8_t>>(byte, v->bit);
     } else {
         c.direct = d;
-        c.directOffset = v->offset;
+        c.directOffset = offset;
         c.directAbs = v->abs;
-        c.node = directNode(pool(), d, v->offset, v->abs, v->type);
+        c.node = directNode(pool(), d, offset, v->abs, v->type);
     }
     c.node->type = v->type;
     return autoDeref(c);

@@ -148,6 +148,11 @@ Checked Checker::methodCall(Checked base, PouInfo* method, const ast::Expr& call
     auto* node = static_cast<exec::CallPou*>(r.node);
     const bool isProgram = method->owner && method->owner->kind == ast::PouKind::Program;
     if (!base.superRef && !isProgram) node->virtualSlot = method->slot;
+    // On a plain variable of a block nothing EXTENDS, the method the call
+    // dispatches to is known: it may be inlined (decision 0317).
+    if (!viaInterface && !base.superRef && base.var && !base.var->byRef && base.var->type == base.type && base.type->pou &&
+        !isExtended(base.type->pou))
+        noteInlineSite(node, method, true);
     if (!viaInterface && !isProgram && method->ast && method->ast->abstract && base.superRef)
         error(diag::E0405, call.loc, fmt::format("'{}' is ABSTRACT in the parent", method->name));
     return r;
@@ -208,6 +213,7 @@ Checked Checker::propertyAccess(Checked base, const std::string& key, const ast:
     if (getter) {
         layoutPou(getter);
         if (!getter->resultType) return bad(loc);  // the property's type did not resolve (reported there)
+        ++userCallsMade_;
         auto* call = pool().make<exec::CallPou>();
         call->callee = getter->code;
         call->instance = instance;
@@ -245,6 +251,7 @@ exec::Stmt* Checker::assignProperty(Checked target, Checked value, const ast::Lo
     VarSym* p = setter->params.front();
     Checked v = coerce(value, p->type, value.loc, "property value");
     if (!v.ok) return nullptr;
+    ++userCallsMade_;
     auto* call = pool().make<exec::CallPou>();
     call->callee = setter->code;
     call->instance = target.propertyInstance;

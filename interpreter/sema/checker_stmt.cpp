@@ -508,7 +508,12 @@ void Checker::checkBody(PouInfo* pou) {
     definedLabels_.clear();
     pendingJumps_.clear();
     assignedResult_ = false;
+    const size_t messagesBefore = log_.messages().size();
+    const uint64_t callsBefore = userCallsMade_;
+    PouInfo* savedCaller = inlineCaller_;
+    inlineCaller_ = pou;  // calls in the body proper (not in initialisers) run in this frame
     pou->code->body = checkBlock(pou->ast->body);
+    inlineCaller_ = savedCaller;
     if (!pou->frameAddressInits.empty()) {
         // `p : POINTER TO INT := ADR(local)` in a FUNCTION or METHOD: the address
         // is one of this call's frame, so the assignment runs first in every call.
@@ -529,6 +534,9 @@ void Checker::checkBody(PouInfo* pou) {
     if (!libraryFiles_.count(pou->ast->loc.file)) warnReadBeforeWrite(*pou, log_);
     uint32_t size = alignUp(frameTop_, 16);
     pou->code->frameSize = size;
+    pou->code->initSize = size;
+    pou->bodyName = currentPouName_;
+    noteInlinable(pou, messagesBefore, callsBefore);
     pou->code->frameInit.resize(exec::frameImageSize(size), 0);
     model_.maxFrameSize = std::max(model_.maxFrameSize, size);
     pou_ = nullptr;

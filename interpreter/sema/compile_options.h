@@ -24,6 +24,9 @@ struct CompileOptions {
     // TcUnit spells it -> ST literal), from --tcunit-param and a .plcproj;
     // they replace the defaults in the embedded stdlib/st/tcunit.st.
     std::map<std::string, std::string> tcunitParameters;
+    // Small leaf FUNCTIONs run inlined in their callers (decision 0317). The
+    // debugger turns it off: it follows calls by their frames and depth.
+    bool inlineCalls = true;
 };
 
 }  // namespace strun::sema

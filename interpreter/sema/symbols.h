@@ -95,6 +95,10 @@ struct PouInfo {
     const ast::Property* property = nullptr;  // property accessor (METHOD): the property
     bool isSetter = false;
     int slot = -1;                            // METHOD: project-wide method slot of its name
+    // FUNCTION: small, checked without any diagnostic and calling no POU, so
+    // that its calls may run its body inlined (decision 0317).
+    bool inlinable = false;
+    const std::string* bodyName = nullptr;    // the name fault sites in its body carry
     // Instance variables initialised at run time (an address, an earlier variable,
     // a call): assigned once per instance before the first cycle (checker_fb_init.cpp).
     std::vector<RuntimeInit> addressInits;

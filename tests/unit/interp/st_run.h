@@ -77,11 +77,13 @@ struct Compiled {
 };
 
 // `strict`: --strict (IEC typing; the default is CODESYS-compatible, decision 0090).
-inline std::unique_ptr<Compiled> compileSt(const std::string& source, bool strict = false) {
+// `inlineCalls`: small leaf FUNCTIONs inlined (decision 0317; off under the debugger).
+inline std::unique_ptr<Compiled> compileSt(const std::string& source, bool strict = false, bool inlineCalls = true) {
     auto c = std::make_unique<Compiled>();
     c->userFile = c->sources.add(kTestFile, source);
     sema::CompileOptions options;
     options.strict = strict;
+    options.inlineCalls = inlineCalls;
     c->model = project::compileProject(c->sources, {c->userFile}, c->log, options);
     return c;
 }

@@ -49,6 +49,7 @@ END_PROGRAM
 }
 
 TEST_CASE("calls bind scalar arguments directly and assign their result without a value node", "[fused]") {
+    // Not inlined (decision 0317), so that the call binds all four arguments.
     auto c = compileSt(R"(
 FUNCTION F : DINT
 VAR_INPUT a : DINT; b : REAL; c : BOOL; d : INT; END_VAR
@@ -63,7 +64,7 @@ VAR x : DINT; r : REAL; n : DINT; END_VAR
 x := F(7, r, TRUE, 3 + 4);
 n := G(x);
 END_PROGRAM
-)");
+)", false, false);
     REQUIRE(c->ok());
     auto body = bodyOf(*c, "Main");
     REQUIRE(body.size() == 2);

@@ -1,0 +1,126 @@
+// Small leaf FUNCTIONs inlined at their calls (decision 0317). A call costs
+// a frame push, register saves and restores and a depth count; for a FUNCTION
+// of a few statements that calls nothing that is most of what the call does.
+// Such a call instead runs a second copy of the callee's body, checked with
+// the callee's variables in an area of the caller's frame: the arguments are
+// stored there, the body runs on the caller's frame, and only the POU name
+// (for watchdog positions and test failures) changes for its duration.
+#include <algorithm>
+
+#include "interpreter/sema/checker.h"
+
+namespace strun::sema {
+
+namespace {
+constexpr size_t kMaxInlineStatements = 12;        // statements of an inlined body, nested ones counted
+constexpr uint32_t kMaxInlineFrame = 256;           // bytes of an inlined FUNCTION's frame
+constexpr uint32_t kMaxInlineBytesPerCaller = 4096; // a caller's frame grows by at most this much
+constexpr size_t kMaxInlinedCalls = 20000;          // in a project: bounds the extra checking and nodes
+
+uint32_t alignUp(uint32_t v, uint32_t a) { return (v + a - 1) / a * a; }
+
+// Writes a constant argument into the call's frame image, as bindArgs would
+// store it; false for the other kinds of argument.
+bool storeConstantArgument(std::vector<uint8_t>& image, const exec::ArgBind& b) {
+    using H = exec::ArgBind::How;
+    const size_t bytes = b.how == H::Const1 ? 1 : b.how == H::Const2 ? 2 : b.how == H::Const4 ? 4 : b.how == H::Const8 ? 8 : 0;
+    if (bytes == 0 || b.dst + bytes > image.size()) return false;
+    uint8_t* p = image.data() + b.dst;
+    switch (bytes) {
+        case 1: exec::storeAs<uint8_t>(p, static_cast<uint8_t>(b.bits)); break;
+        case 2: exec::storeAs<uint16_t>(p, static_cast<uint16_t>(b.bits)); break;
+        case 4: exec::storeAs<uint32_t>(p, static_cast<uint32_t>(b.bits)); break;
+        default: exec::storeAs<uint64_t>(p, b.bits); break;
+    }
+    return true;
+}
+
+// Statements of `list`, nested ones included; stops counting past `limit`.
+size_t countStatements(const ast::StmtList& list, size_t limit);
+size_t countStatement(const ast::Stmt& s, size_t limit) {
+    size_t n = 1;
+    for (const ast::StmtList& b : s.blocks) n += countStatements(b, limit);
+    if (s.elseBlock) n += countStatements(*s.elseBlock, limit);
+    for (const ast::CaseBranch& c : s.cases) n += countStatements(c.body, limit);
+    n += countStatements(s.body, limit);
+    return n;
+}
+size_t countStatements(const ast::StmtList& list, size_t limit) {
+    size_t n = 0;
+    for (const ast::StmtPtr& s : list) {
+        if (!s) continue;
+        if (s->kind == ast::StmtKind::Label || s->kind == ast::StmtKind::Jmp) return limit + 1;  // JMP needs the Block's labels
+        n += countStatement(*s, limit);
+        if (n > limit) return n;
+    }
+    return n;
+}
+}  // namespace
+
+void Checker::noteInlinable(PouInfo* pou, size_t messagesBefore, uint64_t callsBefore) {
+    const bool kind = pou->kind == ast::PouKind::Function ||
+                      (pou->kind == ast::PouKind::Method && !pou->property && pou->ast && !pou->ast->abstract);
+    pou->inlinable = options_.inlineCalls && kind && !pou->code->library && pou->ast &&
+                     userCallsMade_ == callsBefore &&                       // a leaf: calls no POU
+                     log_.messages().size() == messagesBefore &&            // checked without any diagnostic
+                     messagesBefore < CompileLog::kMaxMessages &&
+                     pou->frameAddressInits.empty() && pou->code->frameSize <= kMaxInlineFrame &&
+                     !pou->code->body->labels.size() && countStatements(pou->ast->body, kMaxInlineStatements) <= kMaxInlineStatements;
+}
+
+void Checker::noteInlineSite(exec::CallPou* call, PouInfo* fn, bool onInstance) {
+    // Only a call in a body proper (its frame is the caller's), with every
+    // input bound directly and no output, with a scalar result.
+    if (!options_.inlineCalls || !inlineCaller_ || fn->code->library) return;
+    if (fn->kind != (onInstance ? ast::PouKind::Method : ast::PouKind::Function)) return;
+    if (!call->directInputs || !call->outputs.empty() || call->resultSize != 0) return;
+    inlineSites_.push_back({call, fn, inlineCaller_, onInstance});
+}
+
+void Checker::inlineLeafCalls() {
+    size_t inlined = 0;
+    for (const InlineSite& site : inlineSites_) {
+        PouInfo* fn = site.callee;
+        exec::PouCode* caller = site.caller->code;
+        if (!fn->inlinable || inlined >= kMaxInlinedCalls) continue;
+        const uint32_t area = static_cast<uint32_t>(exec::frameImageSize(fn->code->frameSize));
+        const uint32_t base = alignUp(caller->frameSize, 16);
+        if (base + area - caller->initSize > kMaxInlineBytesPerCaller) continue;
+        // The callee's body once more, as if it were being checked for the
+        // first time, with its frame at `base` and new temporaries above it.
+        pou_ = fn;
+        currentPouName_ = fn->bodyName;
+        frameTop_ = base + area;
+        frameBias_ = base;
+        loopDepth_ = 0;
+        assignedResult_ = false;
+        ExprObserver* observer = observer_;
+        observer_ = nullptr;
+        silent_ = true;
+        const uint64_t silencedBefore = silencedCount_;
+        exec::Block* body = checkBlock(fn->ast->body);
+        const bool clean = silencedCount_ == silencedBefore && pendingJumps_.empty();
+        silent_ = false;
+        observer_ = observer;
+        frameBias_ = 0;
+        pou_ = nullptr;
+        currentPouName_ = nullptr;
+        pendingJumps_.clear();
+        if (!clean || !body) continue;
+        auto* in = pool().make<exec::InlinedCall>();
+        in->body = exec::Body(body);
+        in->base = base;
+        in->onInstance = site.onInstance;
+        in->size = fn->code->initSize;
+        in->image = fn->code->frameInit;
+        // Constant arguments are part of the image: stored once, here.
+        auto& binds = site.call->binds;
+        std::erase_if(binds, [&](const exec::ArgBind& b) { return storeConstantArgument(in->image, b); });
+        site.call->inlined = in;
+        caller->frameSize = alignUp(frameTop_, 16);
+        model_.maxFrameSize = std::max(model_.maxFrameSize, caller->frameSize);
+        ++inlined;
+    }
+}
+
+}  // namespace strun::sema

@@ -1,0 +1,197 @@
+// Small leaf FUNCTIONs inlined at their calls (decision 0317): which calls
+// the checker inlines, and that an inlined call behaves as the real one
+// (results, the CALL_DEPTH rule, fault locations). The conformance test
+// pous/inlined_leaf_functions checks the results through the CLI.
+#include <catch2/catch.hpp>
+
+#include "interpreter/exec/call_nodes.h"
+#include "tests/unit/interp/st_run.h"
+
+using namespace strun;
+using namespace strun::test;
+
+namespace {
+
+// The call of FUNCTION `callee` assigned by the `index`-th statement of Main.
+exec::CallPou* callIn(const Compiled& c, size_t index) {
+    for (const auto& code : c.model->codes)
+        if (sema::upper(code.name) == "MAIN" && code.body && index < code.body->stmts.size()) {
+            auto* assign = dynamic_cast<exec::AssignCallLocal<int32_t, false>*>(code.body->stmts[index]);
+            return assign ? assign->call : nullptr;
+        }
+    return nullptr;
+}
+
+const exec::PouCode& codeOf(const Compiled& c, const std::string& name) {
+    for (const auto& code : c.model->codes)
+        if (sema::upper(code.name) == sema::upper(name)) return code;
+    FAIL("no POU " << name);
+    return c.model->codes.front();
+}
+
+const char* kCalls = R"(
+FUNCTION Leaf : DINT
+VAR_INPUT a : DINT; b : DINT := 4; END_VAR
+Leaf := a * b;
+END_FUNCTION
+FUNCTION Caller : DINT
+VAR_INPUT a : DINT; END_VAR
+Caller := Leaf(a := a) + 1;
+END_FUNCTION
+FUNCTION Long : DINT
+VAR_INPUT a : DINT; END_VAR
+Long := a; Long := Long + 1; Long := Long + 1; Long := Long + 1; Long := Long + 1; Long := Long + 1; Long := Long + 1;
+Long := Long + 1; Long := Long + 1; Long := Long + 1; Long := Long + 1; Long := Long + 1; Long := Long + 1;
+END_FUNCTION
+FUNCTION WithOutput : DINT
+VAR_INPUT a : DINT; END_VAR
+VAR_OUTPUT twice : DINT; END_VAR
+twice := 2 * a;
+WithOutput := a;
+END_FUNCTION
+FUNCTION Jumps : DINT
+VAR_INPUT a : DINT; END_VAR
+IF a > 0 THEN JMP done; END_IF;
+Jumps := 1;
+done:
+END_FUNCTION
+PROGRAM Main
+VAR x, y, z, w, t, u, j : DINT; END_VAR
+x := Leaf(a := 3);
+y := Caller(3);
+z := Long(1);
+w := WithOutput(5, twice => t);
+u := Leaf(a := x, b := 2);
+j := Jumps(1);
+END_PROGRAM
+)";
+
+}  // namespace
+
+TEST_CASE("a small FUNCTION that calls nothing is inlined; the others keep their frame", "[inline]") {
+    auto c = compileSt(kCalls);
+    INFO(c->printed());
+    REQUIRE(c->ok());
+    REQUIRE(callIn(*c, 0));
+    CHECK(callIn(*c, 0)->inlined != nullptr);    // Leaf
+    CHECK(callIn(*c, 1)->inlined == nullptr);    // Caller calls Leaf: not a leaf
+    CHECK(callIn(*c, 2)->inlined == nullptr);    // Long: 13 statements, above the limit of 12
+    CHECK(callIn(*c, 3)->inlined == nullptr);    // an output connection (=>)
+    CHECK(callIn(*c, 4)->inlined != nullptr);    // formal arguments
+    CHECK(callIn(*c, 5)->inlined == nullptr);    // JMP needs the labels of a Block
+    // The constant argument is part of the call's frame image; the variable one is bound per call.
+    CHECK(callIn(*c, 0)->binds.empty());
+    CHECK(callIn(*c, 4)->binds.size() == 1);
+    // Main's frame holds the areas of its inlined calls; a call initialises only its own variables.
+    const exec::PouCode& main = codeOf(*c, "Main");
+    CHECK(main.frameSize > main.initSize);
+    // Caller's own call of Leaf is inlined too (into Caller's frame).
+    const exec::PouCode& caller = codeOf(*c, "Caller");
+    CHECK(caller.frameSize > caller.initSize);
+}
+
+TEST_CASE("without inlining (the debugger) every call keeps its frame, with the same results", "[inline]") {
+    auto c = compileSt(kCalls, false, false);
+    REQUIRE(c->ok());
+    for (size_t k = 0; k < 6; ++k) {
+        REQUIRE(callIn(*c, k));
+        CHECK(callIn(*c, k)->inlined == nullptr);
+    }
+    CHECK(codeOf(*c, "Main").frameSize == codeOf(*c, "Main").initSize);
+    auto r = runSt(kCalls);
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "x") == 12);
+    CHECK(r.var("Main", "y") == 13);
+    CHECK(r.var("Main", "z") == 13);
+    CHECK(r.var("Main", "w") == 5);
+    CHECK(r.var("Main", "t") == 10);
+    CHECK(r.var("Main", "u") == 24);
+    CHECK(r.var("Main", "j") == 0);
+}
+
+TEST_CASE("an inlined call keeps the CALL_DEPTH rule: the 17th nested call fails", "[inline][depth]") {
+    // Depth(n) nests n calls of itself and ends with one call of the leaf Last.
+    auto source = [](int n) {
+        return R"(
+FUNCTION Last : INT
+VAR_INPUT n : INT; END_VAR
+Last := n;
+END_FUNCTION
+FUNCTION Depth : INT
+VAR_INPUT n : INT; END_VAR
+IF n > 1 THEN Depth := Depth(n - 1) + 1; ELSE Depth := Last(1); END_IF;
+END_FUNCTION
+PROGRAM Main
+VAR r : INT := -1; END_VAR
+r := Depth()" + std::to_string(n) + R"();
+END_PROGRAM
+)";
+    };
+    auto ok = runSt(source(15));  // 15 calls of Depth and Last: 16 nested calls
+    REQUIRE(ok.ok());
+    CHECK(ok.state == rt::PlcState::Run);
+    CHECK(ok.var("Main", "r") == 15);
+    auto deep = runSt(source(16));  // Last is the 17th
+    REQUIRE(deep.ok());
+    CHECK(deep.state == rt::PlcState::Stop);
+    CHECK(deep.count(rt::DiagCode::CallDepth) == 1);
+}
+
+TEST_CASE("a fault inside an inlined call names the callee and its line", "[inline][faults]") {
+    auto r = runSt(R"(
+FUNCTION Ratio : DINT
+VAR_INPUT a : DINT; b : DINT; END_VAR
+Ratio := a / b;
+END_FUNCTION
+PROGRAM Main
+VAR q : DINT; after : BOOL; END_VAR
+q := Ratio(10, 0);
+after := TRUE;
+END_PROGRAM
+)");
+    REQUIRE(r.ok());
+    REQUIRE(r.count(rt::DiagCode::DivByZero) == 1);
+    CHECK(r.diagnostics[0].pou == "Ratio");
+    CHECK(r.diagnostics[0].line == 4);
+    CHECK(r.var("Main", "after") == true);
+}
+
+TEST_CASE("a small METHOD is inlined only where the call's class is known", "[inline][oop]") {
+    auto c = compileSt(R"(
+FUNCTION_BLOCK Counter
+VAR count : DINT; END_VAR
+METHOD Add : DINT
+VAR_INPUT n : DINT; END_VAR
+count := count + n;
+Add := count;
+END_METHOD
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Base
+METHOD Kind : DINT
+Kind := 1;
+END_METHOD
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Derived EXTENDS Base
+METHOD Kind : DINT
+Kind := 2;
+END_METHOD
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR a : Counter; d : Derived; b : Base; p : POINTER TO Counter; x, y, z, w : DINT; END_VAR
+x := a.Add(1);
+y := d.Kind();
+z := b.Kind();
+p := ADR(a);
+w := p^.Add(2);
+END_PROGRAM
+)");
+    INFO(c->printed());
+    REQUIRE(c->ok());
+    REQUIRE(callIn(*c, 0));
+    CHECK(callIn(*c, 0)->inlined != nullptr);  // a plain Counter: nothing extends Counter
+    CHECK(callIn(*c, 0)->inlined->onInstance);
+    CHECK(callIn(*c, 1)->inlined != nullptr);  // a plain Derived: nothing extends Derived
+    CHECK(callIn(*c, 2)->inlined == nullptr);  // Derived extends Base: the call keeps its dispatch
+    REQUIRE(callIn(*c, 4));
+    CHECK(callIn(*c, 4)->inlined == nullptr);  // through a pointer: the NULL_POINTER check of the dispatch stays
+}
