@@ -348,15 +348,50 @@ struct CallFbStmtOf final : Stmt {
     bool directInputs = false;
     std::vector<Stmt*> outputs;
     Site site;
-    Flow exec(Ctx& c) override {
-        uint8_t* inst;
+    InlinedCall* inlined = nullptr;  // a small leaf body run on the caller's frame (decision 0317)
+    [[gnu::always_inline]] uint8_t* bindInputs(Ctx& c) {
         if (directInputs) {
-            inst = instance->addr(c);
+            uint8_t* inst = instance->addr(c);
             bindArgs(c, inst, binds);
-        } else {
-            for (Stmt* s : inputs) s->exec(c);
-            inst = instance->addr(c);
+            return inst;
         }
+        for (Stmt* s : inputs) s->exec(c);
+        return instance->addr(c);
+    }
+    // The inlined form, as CallPou::runInlined: the block's VAR_TEMP in an
+    // area of the caller's frame, its body run on the instance.
+    [[gnu::noinline]] Flow runInlined(Ctx& c) {
+        uint8_t* inst = bindInputs(c);
+        if (__builtin_expect(c.depth >= kMaxCallDepth, 0)) {
+            reportCallDepth(c, site, body->name);
+            return Flow::Next;
+        }
+        const InlinedCall& in = *inlined;
+        uint8_t* f = c.frame + in.base;
+        if (in.size <= kSmallFrame) std::memcpy(f, in.image.data(), kSmallFrame);
+        else std::memcpy(f, in.image.data(), in.size);
+        const Stmt* savedStmt = c.stmt;
+        const std::string* savedPou = c.pouName;
+        uint8_t* savedSelf = c.self;
+        c.self = inst;
+        c.pouName = &body->name;
+        in.body.run(c);
+        c.self = savedSelf;
+        c.stmt = savedStmt;
+        c.pouName = savedPou;
+        if (c.aborting) return Flow::Abort;
+        for (Stmt* s : outputs) s->exec(c);
+        return Flow::Next;
+    }
+    // Each form a function of its own, as CallPou::run (the inlined one
+    // paid the framed one's register saves when they shared a function).
+    Flow exec(Ctx& c) override {
+        if constexpr (!Dispatch)
+            if (inlined) return runInlined(c);
+        return runFramed(c);
+    }
+    [[gnu::noinline]] Flow runFramed(Ctx& c) {
+        uint8_t* inst = bindInputs(c);
         const PouCode* code = body;
         if constexpr (Dispatch) {
             const ClassDesc* cls = loadAs<const ClassDesc*>(inst);

@@ -328,7 +328,8 @@ private:
     bool specialisationLimitReported_ = false;
     // ---- small leaf FUNCTIONs inlined at their calls (checker_inline.cpp, decision 0317)
     struct InlineSite {
-        exec::CallPou* call;
+        exec::CallPou* call;        // a FUNCTION or METHOD call, or
+        exec::CallFbStmt* fbCall;   // a function block's call statement
         PouInfo* callee;
         PouInfo* caller;
         bool onInstance;
@@ -338,6 +339,8 @@ private:
     // At a FUNCTION call, or a METHOD call on an instance of exactly known
     // class (`onInstance`), in a body: remembered for inlineLeafCalls.
     void noteInlineSite(exec::CallPou* call, PouInfo* fn, bool onInstance);
+    // At the call statement of an instance of exactly known type `fb`.
+    void noteInlineSite(exec::CallFbStmt* call, PouInfo* fb);
     // After every body is checked: each remembered call of an inlinable FUNCTION
     // gets the callee's body checked again in an area of the caller's frame.
     void inlineLeafCalls();

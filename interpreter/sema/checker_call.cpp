@@ -679,6 +679,7 @@ exec::Stmt* Checker::callFunctionBlock(Checked inst, const ast::Expr& e) {
         dispatch->site = call->site;
         return dispatch;
     }
+    if (exactType) noteInlineSite(call, fb);  // the body that runs is fb's own (decision 0317)
     return call;
 }
 

@@ -58,7 +58,7 @@ size_t countStatements(const ast::StmtList& list, size_t limit) {
 }  // namespace
 
 void Checker::noteInlinable(PouInfo* pou, size_t messagesBefore, uint64_t callsBefore) {
-    const bool kind = pou->kind == ast::PouKind::Function ||
+    const bool kind = pou->kind == ast::PouKind::Function || pou->kind == ast::PouKind::FunctionBlock ||
                       (pou->kind == ast::PouKind::Method && !pou->property && pou->ast && !pou->ast->abstract);
     pou->inlinable = options_.inlineCalls && kind && !pou->code->library && pou->ast &&
                      userCallsMade_ == callsBefore &&                       // a leaf: calls no POU
@@ -74,7 +74,12 @@ void Checker::noteInlineSite(exec::CallPou* call, PouInfo* fn, bool onInstance) 
     if (!options_.inlineCalls || !inlineCaller_ || fn->code->library) return;
     if (fn->kind != (onInstance ? ast::PouKind::Method : ast::PouKind::Function)) return;
     if (!call->directInputs || !call->outputs.empty() || call->resultSize != 0) return;
-    inlineSites_.push_back({call, fn, inlineCaller_, onInstance});
+    inlineSites_.push_back({call, nullptr, fn, inlineCaller_, onInstance});
+}
+
+void Checker::noteInlineSite(exec::CallFbStmt* call, PouInfo* fb) {
+    if (!options_.inlineCalls || !inlineCaller_ || fb->code->library || fb->kind != ast::PouKind::FunctionBlock) return;
+    inlineSites_.push_back({nullptr, call, fb, inlineCaller_, true});
 }
 
 void Checker::inlineLeafCalls() {
@@ -113,10 +118,14 @@ void Checker::inlineLeafCalls() {
         in->onInstance = site.onInstance;
         in->size = fn->code->initSize;
         in->image = fn->code->frameInit;
-        // Constant arguments are part of the image: stored once, here.
-        auto& binds = site.call->binds;
-        std::erase_if(binds, [&](const exec::ArgBind& b) { return storeConstantArgument(in->image, b); });
-        site.call->inlined = in;
+        if (site.call) {
+            // Constant arguments are part of the image: stored once, here.
+            auto& binds = site.call->binds;
+            std::erase_if(binds, [&](const exec::ArgBind& b) { return storeConstantArgument(in->image, b); });
+            site.call->inlined = in;
+        } else {
+            site.fbCall->inlined = in;  // its inputs are stored into the instance, not the frame
+        }
         caller->frameSize = alignUp(frameTop_, 16);
         model_.maxFrameSize = std::max(model_.maxFrameSize, caller->frameSize);
         ++inlined;

@@ -195,3 +195,28 @@ END_PROGRAM
     REQUIRE(callIn(*c, 4));
     CHECK(callIn(*c, 4)->inlined == nullptr);  // through a pointer: the NULL_POINTER check of the dispatch stays
 }
+
+TEST_CASE("a small function block body is inlined on a plain instance, not through an array element", "[inline][fb]") {
+    auto c = compileSt(R"(
+FUNCTION_BLOCK Count
+VAR_INPUT step : DINT; END_VAR
+VAR_OUTPUT total : DINT; END_VAR
+total := total + step;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR a : Count; many : ARRAY[1..2] OF Count; END_VAR
+a(step := 2);
+many[1](step := 3);
+END_PROGRAM
+)");
+    INFO(c->printed());
+    REQUIRE(c->ok());
+    const exec::PouCode& main = codeOf(*c, "Main");
+    REQUIRE(main.body->stmts.size() == 2);
+    auto* plain = dynamic_cast<exec::CallFbStmt*>(main.body->stmts[0]);
+    auto* element = dynamic_cast<exec::CallFbStmt*>(main.body->stmts[1]);
+    REQUIRE(plain);
+    REQUIRE(element);
+    CHECK(plain->inlined != nullptr);
+    CHECK(element->inlined == nullptr);
+}
