@@ -18,7 +18,10 @@ CLI::App* addCheckCommand(CLI::App& app, CommandLine& line) {
 int checkCommand(const CommandLine& line) {
     auto compiled = std::make_unique<Compiled>();
     compiled->keepAst = true;
-    compileCommandLine(line, *compiled);
+    // Nothing runs: inlining calls (decision 0317) would be work for nothing.
+    CommandLine checkLine = line;
+    checkLine.compile.inlineCalls = false;
+    compileCommandLine(checkLine, *compiled);
     const int exitCode = compiled->exitCode;
 #ifndef STRUN_SANITIZED
     (void)compiled.release();

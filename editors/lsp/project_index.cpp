@@ -111,7 +111,10 @@ ProjectIndex::ProjectIndex(std::unique_ptr<SourceSet> sources, std::vector<int> 
     for (auto& [file, unit] : userUnits_) extras.parsed[file] = unit.get();
     std::vector<size_t> libraryUsed;
     extras.libraryUnitsUsed = &libraryUsed;
-    if (auto compiled = project::compileProject(*sources_, userFiles_, log_, options, &library, nullptr, &extras)) model_ = std::move(compiled);
+    // Nothing runs here: no call is inlined (decision 0317).
+    sema::CompileOptions checkOnly = options;
+    checkOnly.inlineCalls = false;
+    if (auto compiled = project::compileProject(*sources_, userFiles_, log_, checkOnly, &library, nullptr, &extras)) model_ = std::move(compiled);
     // The units checked: the library's the project uses (they stay where
     // they are, in the server's ParsedLibrary), then the user's.
     std::vector<const ast::CompilationUnit*> units;
