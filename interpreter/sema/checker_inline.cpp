@@ -14,7 +14,7 @@ namespace strun::sema {
 namespace {
 constexpr size_t kMaxInlineStatements = 12;        // statements of an inlined body, nested ones counted
 constexpr uint32_t kMaxInlineFrame = 256;           // bytes of an inlined FUNCTION's frame
-constexpr uint32_t kMaxInlineBytesPerCaller = 4096; // a caller's frame grows by at most this much
+constexpr uint32_t kMaxInlineBytesPerCaller = 16384;  // a caller's frame grows by at most this much
 constexpr size_t kMaxInlinedCalls = 20000;          // in a project: bounds the extra checking and nodes
 
 uint32_t alignUp(uint32_t v, uint32_t a) { return (v + a - 1) / a * a; }
