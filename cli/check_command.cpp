@@ -1,4 +1,6 @@
 // strun check [options] FILE...: compile only; print diagnostics.
+#include <CLI/CLI.hpp>
+
 #include "cli/commands.h"
 #include "cli/compile_step.h"
 

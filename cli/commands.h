@@ -2,7 +2,7 @@
 // runs from the parsed CommandLine.
 #pragma once
 
-#include <CLI/CLI.hpp>
+#include "cli/cli11_fwd.h"
 
 #include "cli/command_line.h"
 #include "runtime/scheduler.h"
@@ -10,6 +10,9 @@
 namespace strun::cli {
 
 CLI::App* addRunCommand(CLI::App& app, CommandLine& line);
+// `strun run ARGUMENTS...` parsed into `line` (ARGUMENTS without "run"),
+// for the debugger's launch request; false with CLI11's message.
+bool parseRunArguments(const std::vector<std::string>& arguments, CommandLine& line, std::string& error);
 CLI::App* addCheckCommand(CLI::App& app, CommandLine& line);
 // Options that change compilation, shared by run and check (and test).
 void addCompileOptions(CLI::App& command, CommandLine& line);

@@ -1,4 +1,6 @@
 // Options and arguments more than one subcommand takes.
+#include <CLI/CLI.hpp>
+
 #include "cli/commands.h"
 #include "cli/option_types.h"
 #include "cli/warning_options.h"

@@ -6,10 +6,6 @@
 
 namespace strun::cli {
 
-CLI::App* addDebugCommand(CLI::App& app) {
-    return app.add_subcommand("debug", "a Debug Adapter Protocol adapter on stdin/stdout (docs/editors.md)");
-}
-
 int debugCommand() {
     editors::dap::DapServer server(stdin, stdout);
     return server.run();

@@ -2,6 +2,8 @@
 // docs/diagnostics/CODE.md), or the list of codes.
 #include <iostream>
 
+#include <CLI/CLI.hpp>
+
 #include "cli/commands.h"
 #include "cli/exit_codes.h"
 #include "interpreter/source/closest_name.h"

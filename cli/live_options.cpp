@@ -4,6 +4,8 @@
 #include <cctype>
 #include <iostream>
 
+#include <CLI/CLI.hpp>
+
 #include "cli/option_types.h"
 #include "cli/run_report.h"
 #include "live/control_plane.h"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
+#include "cli/cli11_fwd.h"
 #include <nlohmann/json.hpp>
 
 #include "interpreter/sema/program_model.h"

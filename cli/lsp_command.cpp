@@ -6,10 +6,6 @@
 
 namespace strun::cli {
 
-CLI::App* addLspCommand(CLI::App& app) {
-    return app.add_subcommand("lsp", "a Language Server Protocol server on stdin/stdout (docs/editors.md)");
-}
-
 int lspCommand() {
     editors::lsp::LspServer server(stdin, stdout);
     return server.run();

@@ -26,6 +26,20 @@
 #error "STRUN_VERSION comes from project(strun VERSION ...) in CMakeLists.txt"
 #endif
 
+namespace strun::cli {
+
+// strun lsp and strun debug have no options: registered here, so that
+// cli/lsp_command.cpp and cli/debug_command.cpp need not include CLI11 (issue 28).
+CLI::App* addLspCommand(CLI::App& app) {
+    return app.add_subcommand("lsp", "a Language Server Protocol server on stdin/stdout (docs/editors.md)");
+}
+
+CLI::App* addDebugCommand(CLI::App& app) {
+    return app.add_subcommand("debug", "a Debug Adapter Protocol adapter on stdin/stdout (docs/editors.md)");
+}
+
+}  // namespace strun::cli
+
 namespace {
 
 using namespace strun::cli;

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 #include "cli/exit_codes.h"
 
 namespace strun::cli {

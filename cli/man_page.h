@@ -5,7 +5,7 @@
 
 #include <ostream>
 
-#include <CLI/CLI.hpp>
+#include "cli/cli11_fwd.h"
 
 namespace strun::cli {
 

@@ -3,6 +3,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <CLI/CLI.hpp>
+
 #include "live/control_plane.h"
 #include "live/modbus_client.h"
 #include "live/modbus_plane.h"

@@ -8,7 +8,7 @@
 #include <ostream>
 #include <string>
 
-#include <CLI/CLI.hpp>
+#include "cli/cli11_fwd.h"
 
 #include "cli/command_line.h"
 #include "live/modbus_map.h"

@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
@@ -169,6 +170,21 @@ CLI::App* addRunCommand(CLI::App& app, CommandLine& line) {
     addLiveOptions(*run, line.live);
     addModbusOptions(*run, line);
     return run;
+}
+
+bool parseRunArguments(const std::vector<std::string>& arguments, CommandLine& line, std::string& error) {
+    CLI::App app{"strun", "strun"};
+    addRunCommand(app, line);
+    std::vector<std::string> argv{"run"};
+    argv.insert(argv.end(), arguments.begin(), arguments.end());
+    std::reverse(argv.begin(), argv.end());
+    try {
+        app.parse(argv);
+    } catch (const CLI::ParseError& e) {
+        error = e.what();
+        return false;
+    }
+    return true;
 }
 
 int runCommand(const CommandLine& line) {

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <iostream>
 
+#include <CLI/CLI.hpp>
+
 #include "cli/commands.h"
 #include "cli/diagnostic_render.h"
 #include "cli/exit_codes.h"

@@ -2,6 +2,8 @@
 
 #include <iostream>
 
+#include <CLI/CLI.hpp>
+
 #include "cli/exit_codes.h"
 #include "interpreter/source/closest_name.h"
 

@@ -2,7 +2,9 @@
 // names itself and the closest valid one; `strun help [COMMAND]`.
 #pragma once
 
-#include <CLI/CLI.hpp>
+#include <string>
+
+#include "cli/cli11_fwd.h"
 
 namespace strun::cli {
 

@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "cli/option_types.h"
 #include "interpreter/source/closest_name.h"
 #include "interpreter/source/diagnostic_codes.h"

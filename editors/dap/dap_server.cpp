@@ -6,8 +6,6 @@
 #include <filesystem>
 #include <sstream>
 
-#include <CLI/CLI.hpp>
-
 #include "cli/commands.h"
 #include "cli/diagnostic_render.h"
 #include "cli/run_report.h"
@@ -264,18 +262,13 @@ bool DapServer::launch(const json& args, std::string& error) {
         if (a.is_string()) options.push_back(a.get<std::string>());
     stopOnEntry_ = args.value("stopOnEntry", false);
     // The options are `run`'s, parsed by the same command-line definition.
-    CLI::App app{"strun", "strun"};
     cli::CommandLine line;
-    cli::addRunCommand(app, line);
-    std::vector<std::string> argv{"run"};
-    argv.insert(argv.end(), options.begin(), options.end());
-    argv.push_back("--");
-    argv.insert(argv.end(), programs.begin(), programs.end());
-    std::reverse(argv.begin(), argv.end());
-    try {
-        app.parse(argv);
-    } catch (const CLI::ParseError& e) {
-        error = std::string("bad \"args\": ") + e.what();
+    std::vector<std::string> arguments = options;
+    arguments.push_back("--");
+    arguments.insert(arguments.end(), programs.begin(), programs.end());
+    std::string parseError;
+    if (!cli::parseRunArguments(arguments, line, parseError)) {
+        error = "bad \"args\": " + parseError;
         return false;
     }
     line_ = line;

@@ -273,11 +273,11 @@ int main(int argc, char** argv) {
          "const std::vector<EmbeddedSource>& embeddedSources() {\n  static const std::vector<EmbeddedSource> sources = {\n";
     for (const Source& s : sources) o << "    {" << quoted(s.path) << ", " << rawLiteral(s.text) << ", " << quoted(s.library) << "},\n";
     o << "  };\n  return sources;\n}\n";
-    o << "static const LibraryInfo kLibraries[] = {\n";
+    o << "static constexpr LibraryInfo kLibraries[] = {\n";
     for (const Library& l : libraries)
         o << "    {" << quoted(l.name) << ", " << quoted(l.vendor) << ", " << quoted(l.status) << ", " << quoted(l.summary) << "},\n";
     o << "};\nstd::span<const LibraryInfo> libraries() { return kLibraries; }\n";
-    o << "static const LibraryName kNames[] = {\n";
+    o << "static constexpr LibraryName kNames[] = {\n";
     for (const Name& n : names)
         o << "    {" << quoted(n.upper) << ", " << quoted(n.written) << ", " << quoted(n.library) << ", '" << n.kind << "', " << n.file << "},\n";
     o << "};\nstd::span<const LibraryName> libraryNames() { return kNames; }\n";
