@@ -186,6 +186,30 @@ struct InlinedCall {
     std::vector<uint8_t> image;   // frameImageSize(size) bytes
 };
 
+// The area of an inlined call in the caller's frame, initialised from its image.
+[[gnu::always_inline]] inline uint8_t* initInlinedArea(Ctx& c, const InlinedCall& in) {
+    uint8_t* f = c.frame + in.base;
+    if (in.size <= kSmallFrame) std::memcpy(f, in.image.data(), kSmallFrame);
+    else std::memcpy(f, in.image.data(), in.size);
+    return f;
+}
+
+// Runs an inlined body with the POU name (and with `OnInstance` the
+// instance, self) switched for its duration, so that a watchdog or a test
+// failure names the callee; restores them and the caller's statement.
+template <bool OnInstance>
+[[gnu::always_inline]] inline void runInlinedBody(Ctx& c, const InlinedCall& in, const std::string& name, uint8_t* inst) {
+    const Stmt* savedStmt = c.stmt;
+    const std::string* savedPou = c.pouName;
+    uint8_t* savedSelf = c.self;
+    if constexpr (OnInstance) c.self = inst;
+    c.pouName = &name;
+    in.body.run(c);
+    if constexpr (OnInstance) c.self = savedSelf;
+    c.stmt = savedStmt;
+    c.pouName = savedPou;
+}
+
 // FUNCTION call, or METHOD call (then `instance` gives the FB instance).
 // Inputs are stores into the new frame (places relative to Ctx::pending);
 // outputs are stores from the frame into the caller's places, evaluated
@@ -240,9 +264,7 @@ struct CallPou final : Expr {
     }
     // The inlined form: the same depth rule as pushFrame (the callee is a leaf,
     // so nothing inside it looks at the depth), the callee's variables
-    // initialised and its inputs bound in the caller's frame, and the POU name
-    // (and for a METHOD the instance) switched for the body, so that a
-    // watchdog or a test failure names the callee.
+    // initialised and its inputs bound in the caller's frame, then its body.
     template <bool OnInstance>
     [[gnu::noinline]] uint8_t* runInlined(Ctx& c) {
         uint8_t* inst = nullptr;
@@ -252,19 +274,9 @@ struct CallPou final : Expr {
             return nullptr;
         }
         const InlinedCall& in = *inlined;
-        uint8_t* f = c.frame + in.base;
-        if (in.size <= kSmallFrame) std::memcpy(f, in.image.data(), kSmallFrame);
-        else std::memcpy(f, in.image.data(), in.size);
+        uint8_t* f = initInlinedArea(c, in);
         bindArgs(c, f, binds);
-        const Stmt* savedStmt = c.stmt;
-        const std::string* savedPou = c.pouName;
-        uint8_t* savedSelf = c.self;
-        if constexpr (OnInstance) c.self = inst;
-        c.pouName = &callee->name;
-        in.body.run(c);
-        if constexpr (OnInstance) c.self = savedSelf;
-        c.stmt = savedStmt;
-        c.pouName = savedPou;
+        runInlinedBody<OnInstance>(c, in, callee->name, inst);
         return f;
     }
     PouCode* dispatch(Ctx& c, uint8_t* inst);  // faults.cpp: NULL_POINTER when unbound
@@ -367,18 +379,8 @@ struct CallFbStmtOf final : Stmt {
             return Flow::Next;
         }
         const InlinedCall& in = *inlined;
-        uint8_t* f = c.frame + in.base;
-        if (in.size <= kSmallFrame) std::memcpy(f, in.image.data(), kSmallFrame);
-        else std::memcpy(f, in.image.data(), in.size);
-        const Stmt* savedStmt = c.stmt;
-        const std::string* savedPou = c.pouName;
-        uint8_t* savedSelf = c.self;
-        c.self = inst;
-        c.pouName = &body->name;
-        in.body.run(c);
-        c.self = savedSelf;
-        c.stmt = savedStmt;
-        c.pouName = savedPou;
+        initInlinedArea(c, in);
+        runInlinedBody<true>(c, in, body->name, inst);
         if (c.aborting) return Flow::Abort;
         for (Stmt* s : outputs) s->exec(c);
         return Flow::Next;

@@ -326,7 +326,7 @@ private:
     }
     std::vector<std::unique_ptr<ast::Pou>> genericCopies_;  // the specialisations' declarations
     bool specialisationLimitReported_ = false;
-    // ---- small leaf FUNCTIONs inlined at their calls (checker_inline.cpp, decision 0317)
+    // ---- small leaf FUNCTIONs, METHODs and block bodies inlined at their calls (checker_inline.cpp, decision 0317)
     struct InlineSite {
         exec::CallPou* call;        // a FUNCTION or METHOD call, or
         exec::CallFbStmt* fbCall;   // a function block's call statement
@@ -334,7 +334,8 @@ private:
         PouInfo* caller;
         bool onInstance;
     };
-    // At the end of checkBody: whether `pou` may be inlined (a small, clean FUNCTION that calls nothing).
+    // At the end of checkBody: whether `pou` may be inlined (a small FUNCTION, METHOD or block body,
+    // checked without a diagnostic, that calls nothing).
     void noteInlinable(PouInfo* pou, size_t messagesBefore, uint64_t callsBefore);
     // At a FUNCTION call, or a METHOD call on an instance of exactly known
     // class (`onInstance`), in a body: remembered for inlineLeafCalls.

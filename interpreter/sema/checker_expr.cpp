@@ -336,7 +336,7 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
     Checked::Direct d = v->storage == Storage::Self ? Checked::Direct::Self
                         : v->storage == Storage::Frame ? Checked::Direct::Frame
                                                        : Checked::Direct::Abs;
-    // A FUNCTION's body inlined into a caller: its frame is an area of the caller's.
+    // A body inlined into a caller (decision 0317): its frame is an area of the caller's.
     const uint32_t offset = v->offset + (d == Checked::Direct::Frame ? frameBias_ : 0);
     if (d == Checked::Direct::Abs && !v->abs) {
         // A global of the list being declared, named in a later declaration's

@@ -76,8 +76,9 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
     auto* instance = pool().make<exec::AbsVar<void>>(addr);
     instance->type = t;
     // The arguments on a declaration inside a block or program (reached
-    // through its instance by the walk above) may name that instance's variables (TcUnit: `logger : FB_Logger(TestResults);`): they
-    // are checked in its scope and run with it as THIS (decision 0313).
+    // through its instance by the walk above) may name that instance's
+    // variables (TcUnit: `logger : FB_Logger(TestResults);`): they are
+    // checked in its scope and run with it as THIS (decision 0313).
     const bool inEnclosing = enclosing && declSpec && (!declSpec->initArgs.empty() || !declSpec->enumValues.empty());
     PouInfo* savedPou = pou_;
     if (inEnclosing) pou_ = enclosing;

@@ -65,7 +65,7 @@ void Checker::noteInlinable(PouInfo* pou, size_t messagesBefore, uint64_t callsB
                      log_.messages().size() == messagesBefore &&            // checked without any diagnostic
                      messagesBefore < CompileLog::kMaxMessages &&
                      pou->frameAddressInits.empty() && pou->code->frameSize <= kMaxInlineFrame &&
-                     !pou->code->body->labels.size() && countStatements(pou->ast->body, kMaxInlineStatements) <= kMaxInlineStatements;
+                     countStatements(pou->ast->body, kMaxInlineStatements) <= kMaxInlineStatements;  // no label or JMP either
 }
 
 void Checker::noteInlineSite(exec::CallPou* call, PouInfo* fn, bool onInstance) {
@@ -104,13 +104,12 @@ void Checker::inlineLeafCalls() {
         silent_ = true;
         const uint64_t silencedBefore = silencedCount_;
         exec::Block* body = checkBlock(fn->ast->body);
-        const bool clean = silencedCount_ == silencedBefore && pendingJumps_.empty();
+        const bool clean = silencedCount_ == silencedBefore;
         silent_ = false;
         observer_ = observer;
         frameBias_ = 0;
         pou_ = nullptr;
         currentPouName_ = nullptr;
-        pendingJumps_.clear();
         if (!clean || !body) continue;
         auto* in = pool().make<exec::InlinedCall>();
         in->body = exec::Body(body);
