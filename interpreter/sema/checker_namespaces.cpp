@@ -29,8 +29,8 @@ struct Declared {
 
 // A name is contested within the user's files, or within the library's, when
 // it is declared under two different namespace paths (the top level counting
-// as one), or when a namespaced declaration is named like a builtin (CAA's
-// `FILE.Delete` beside the standard DELETE). A user declaration named like a
+// as one), or when a namespaced declaration is named like a builtin function
+// or an elementary type (CAA's `FILE.Delete` beside the standard DELETE). A user declaration named like a
 // library one is not contested: it replaces the library's, as it always did
 // (a project carrying TcUnit's own source).
 void Checker::noteContestedNames(std::vector<ast::CompilationUnit>& units) {
@@ -43,7 +43,8 @@ void Checker::noteContestedNames(std::vector<ast::CompilationUnit>& units) {
         for (auto& p : unit.pous) byName[upper(p->name)].push_back({&p->name, &p->nameSpace, library});
     }
     for (auto& [simple, decls] : byName) {
-        if (decls.size() < 2 && !hasBuiltin(simple)) continue;
+        const bool builtin = hasBuiltin(simple) || types().byName(simple);
+        if (decls.size() < 2 && !builtin) continue;
         for (const bool library : {false, true}) {
             std::set<std::string> spaces;
             bool namespaced = false;
@@ -52,7 +53,7 @@ void Checker::noteContestedNames(std::vector<ast::CompilationUnit>& units) {
                     spaces.insert(upper(*d.nameSpace));
                     namespaced = namespaced || !d.nameSpace->empty();
                 }
-            if (spaces.size() < 2 && !(namespaced && hasBuiltin(simple))) continue;
+            if (spaces.size() < 2 && !(namespaced && builtin)) continue;
             for (const Declared& d : decls) {
                 if (d.library != library || d.nameSpace->empty()) continue;
                 contested_[simple].insert(upper(*d.nameSpace));
