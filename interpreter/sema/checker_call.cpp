@@ -265,7 +265,10 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             }
             const Type* t = nullptr;
             const ast::Expr& a = *e.args[0].value;
-            if (a.kind == ast::ExprKind::Name && !lookupVar(upper(a.name))) {
+            if (a.kind == ast::ExprKind::Name && a.pointerTo) {
+                if (const Type* target = resolveNamedType(a.name, a.loc)) t = types().pointer(target);
+                else return bad(e.loc);
+            } else if (a.kind == ast::ExprKind::Name && !lookupVar(upper(a.name))) {
                 t = types().byName(upper(a.name));
                 const std::string typeKey = scopedKey(upper(a.name));
                 if (!t && (typeDecls_.count(typeKey) || pous_.count(typeKey))) t = resolveNamedType(a.name, a.loc);
