@@ -454,7 +454,14 @@ exec::Stmt* Checker::bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, co
         }
         return bind;
     }
-    if (!sameType(v.type, p->type) && !(isStringType(v.type->kind) && v.type->kind == p->type->kind) &&
+    // An enumeration variable for a VAR_IN_OUT of its base type (`eEnumSet : UINT`
+    // given an enumeration on UINT), as TwinCAT accepts it, also for a strict
+    // one: the same storage, passed by address (decision 0327).
+    const bool enumOnBase = v.type->kind == TK::Enum && v.type->base && sameType(v.type->base, p->type);
+    if (enumOnBase && !lenient(diag::W0001, loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}: passed as its base type", p->name,
+                                                             typeName(p->type), typeName(v.type))))
+        return nullptr;
+    if (!enumOnBase && !sameType(v.type, p->type) && !(isStringType(v.type->kind) && v.type->kind == p->type->kind) &&
         !isBlockOrExtends(v.type, p->type)) {
         error(diag::E0201, loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}", p->name, typeName(p->type), typeName(v.type)));
         return nullptr;
