@@ -420,6 +420,7 @@ private:
     std::string ambiguityOf(const std::string& upperWritten) const;
     // "A.B.F" (upper case) for a name or a chain of members; "" for anything else.
     static std::string writtenPath(const ast::Expr& e);
+    Checked inOutBinding(const VarSym* v, const ast::Loc& loc);
     // `A` of `A.B.C`: a local variable named like it makes the chain a member access.
     static const ast::Expr& chainRoot(const ast::Expr& e);
     std::map<std::string, std::pair<const Type*, const Enumerator*>> enumValues_;  // unqualified, unique ones

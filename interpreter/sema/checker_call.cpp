@@ -359,6 +359,10 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             Checked v = checkExpr(*e.args[0].value);
             suppressAutoDeref_ = saved;
             if (!v.ok) return v;
+            // A VAR_IN_OUT is a reference too: valid once it is bound (TwinCAT).
+            const ast::Expr& written = *e.args[0].value;
+            if (written.kind == ast::ExprKind::Name && v.var && v.var->byRef && !v.var->type->flexible)
+                v = inOutBinding(v.var, written.loc);
             if (v.type->kind != TK::Reference && v.type->kind != TK::Pointer && v.type->kind != TK::Interface) {
                 error(diag::E0201, e.args[0].value->loc, "__ISVALIDREF needs a REFERENCE");
                 return bad(e.loc);
