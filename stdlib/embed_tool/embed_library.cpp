@@ -110,7 +110,14 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
     Block block = Block::None;
     int structDepth = 0, parenDepth = 0;
     bool pendingQualified = false, qualified = false;  // enumeration values of a qualified_only TYPE are not names of their own
-    auto add = [&](const std::string& w, char kind) { out.push_back({upperOf(w), w, library, kind, file}); };
+    // The names inside a qualified_only NAMESPACE (CODESYS' "QualifiedOnly"
+    // libraries, such as CAA Types' CAA) are reached only through the
+    // namespace, so only its name selects the file: a project's own COUNT or
+    // HANDLE must not pull in CAA.COUNT (decision 0323).
+    int namespaceDepth = 0, qualifiedNamespaceDepth = 0;  // 0: not inside a qualified_only namespace
+    auto add = [&](const std::string& w, char kind) {
+        if (qualifiedNamespaceDepth == 0) out.push_back({upperOf(w), w, library, kind, file});
+    };
     auto at = [&](size_t k) -> const Token* { return k < tk.size() ? &tk[k] : nullptr; };
     auto isChar = [&](size_t k, char c) { const Token* t = at(k); return t && !t->word && t->text[0] == c; };
     for (size_t k = 0; k < tk.size(); ++k) {
@@ -127,6 +134,11 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
             continue;
         }
         const std::string u = upperOf(t.text);
+        if (u == "END_NAMESPACE") {
+            if (namespaceDepth == qualifiedNamespaceDepth) qualifiedNamespaceDepth = 0;
+            if (namespaceDepth > 0) --namespaceDepth;
+            continue;
+        }
         if (u == "END_TYPE" || u == "END_VAR") {
             block = Block::None;
             continue;
@@ -143,6 +155,11 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
                     ++j;
                 if (at(j) && at(j)->word) name = at(j)->text;
                 add(name, u == "FUNCTION_BLOCK" ? 'B' : u == "FUNCTION" ? 'F' : u == "INTERFACE" ? 'I' : u == "PROGRAM" ? 'P' : 'N');
+                if (u == "NAMESPACE") {
+                    ++namespaceDepth;
+                    if (pendingQualified && qualifiedNamespaceDepth == 0) qualifiedNamespaceDepth = namespaceDepth;
+                    pendingQualified = false;
+                }
                 k = j;
             }
             continue;
