@@ -379,6 +379,39 @@ private:
     // A POU by its name as written: `Lib.FB_Base` or `__SYSTEM.IQueryInterface`
     // is found by its own name (namespaces are flattened); null if none.
     PouInfo* pouNamed(const std::string& written) const;
+
+    // Namespace scoping (checker_namespaces.cpp, decision 0325). A name declared
+    // in two namespaces (or a namespaced library name that is also a builtin) is
+    // contested: its declarations are keyed by their qualified name, and a name
+    // written in code is found from the namespace of the code that writes it.
+    // Every other name stays flattened, as before.
+    std::map<std::string, std::set<std::string>> contested_;  // upper simple name -> namespaces keyed qualified
+    std::map<int, std::vector<std::string>> usingsByFile_;     // upper-case USING paths of each file
+    struct NameScope {
+        std::string nameSpace;  // upper-case NAMESPACE path of the code being checked, "" at top level
+        int file = -1;
+    };
+    NameScope nameScope_;
+    class NameScopeGuard {
+    public:
+        NameScopeGuard(Checker& c, const std::string& nameSpace, int file);
+        ~NameScopeGuard() { c_.nameScope_ = std::move(saved_); }
+        NameScopeGuard(const NameScopeGuard&) = delete;
+        NameScopeGuard& operator=(const NameScopeGuard&) = delete;
+    private:
+        Checker& c_;
+        NameScope saved_;
+    };
+    void noteContestedNames(std::vector<ast::CompilationUnit>& units);
+    // The declaration key (upper case) for a type or POU name as written in code.
+    std::string scopedKey(const std::string& upperWritten) const;
+    // "'A.X', 'B.X'" when a written simple name `X` is contested, declared in more
+    // than one namespace and in none in scope ("" when it is not ambiguous).
+    std::string ambiguityOf(const std::string& upperWritten) const;
+    // "A.B.F" (upper case) for a name or a chain of members; "" for anything else.
+    static std::string writtenPath(const ast::Expr& e);
+    // `A` of `A.B.C`: a local variable named like it makes the chain a member access.
+    static const ast::Expr& chainRoot(const ast::Expr& e);
     std::map<std::string, std::pair<const Type*, const Enumerator*>> enumValues_;  // unqualified, unique ones
     std::set<std::string> ambiguousEnumValues_;
     std::unordered_map<std::string, size_t> programIndex_;  // upper-case instance name -> model_.programs index

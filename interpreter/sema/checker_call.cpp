@@ -203,10 +203,12 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
     // the call resolves as F(...).
     ast::Expr unqualified;
     const ast::Expr* calleeName = &callee;
-    if (callee.kind == ast::ExprKind::Member && isNamespace(*callee.kids[0]) && !lookupVar(upper(callee.kids[0]->name))) {
+    if (callee.kind == ast::ExprKind::Member && isNamespace(*callee.kids[0]) && !lookupVar(upper(chainRoot(*callee.kids[0]).name))) {
         unqualified.kind = ast::ExprKind::Name;
         unqualified.loc = callee.nameLoc.line ? callee.nameLoc : callee.loc;
         unqualified.name = callee.name;
+        // A contested name (decision 0325) keeps its namespace: `FILE.Delete`.
+        if (std::string key = scopedKey(writtenPath(callee)); pous_.count(key)) unqualified.name = pous_.at(key)->name;
         calleeName = &unqualified;
     }
     if (isSuiteBuiltinCall(callee)) {
@@ -218,12 +220,13 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
     if (calleeName->kind == ast::ExprKind::Name) {
         const ast::Expr& callee = *calleeName;
         std::string key = upper(callee.name);
+        const std::string pouKey = scopedKey(key);
         VarSym* v = lookupVar(key);
-        if (v && pou_ && v == pou_->result && pous_.count(key)) v = nullptr;  // recursion: F(...) inside F
+        if (v && pou_ && v == pou_->result && pous_.count(pouKey)) v = nullptr;  // recursion: F(...) inside F
         // `max : INT` (a variable) and `MAX(a, b)` (the function) live side by side:
         // a call of a name that is a plain variable calls the function of that name.
         if (v && v->type->kind != TK::FunctionBlock && v->type->kind != TK::Pointer && v->type->kind != TK::Reference &&
-            v->type->kind != TK::Interface && (hasBuiltin(key) || (pous_.count(key) && pous_.at(key)->kind == ast::PouKind::Function)))
+            v->type->kind != TK::Interface && (hasBuiltin(key) || (pous_.count(pouKey) && pous_.at(pouKey)->kind == ast::PouKind::Function)))
             v = nullptr;
         if (v) {
             if (v->type->kind == TK::FunctionBlock) {
@@ -264,7 +267,8 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             const ast::Expr& a = *e.args[0].value;
             if (a.kind == ast::ExprKind::Name && !lookupVar(upper(a.name))) {
                 t = types().byName(upper(a.name));
-                if (!t && (typeDecls_.count(upper(a.name)) || pous_.count(upper(a.name)))) t = resolveNamedType(a.name, a.loc);
+                const std::string typeKey = scopedKey(upper(a.name));
+                if (!t && (typeDecls_.count(typeKey) || pous_.count(typeKey))) t = resolveNamedType(a.name, a.loc);
             }
             if (!t) {
                 bool saved = suppressAutoDeref_;
@@ -361,7 +365,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             r.node->type = r.type;
             return r;
         }
-        auto it = pous_.find(key);
+        auto it = pous_.find(pouKey);
         if (it != pous_.end() && it->second->kind == ast::PouKind::Function) {
             return callUserFunction(it->second, e, nullptr);
         }

@@ -269,7 +269,7 @@ void Checker::buildConfiguration() {
             task->calls.push_back({nullptr, g->type->pou->code, g->abs, pc->instance});
             continue;
         }
-        auto it = pous_.find(upper(pc->typeName));
+        auto it = pous_.find(scopedKey(upper(pc->typeName)));
         if (it == pous_.end() || it->second->kind != ast::PouKind::Program) {
             error(diag::E0107, pc->loc, fmt::format("'{}' is not a PROGRAM", pc->typeName));
             continue;
@@ -326,7 +326,7 @@ void Checker::buildConfiguration() {
 // one instance, called last by the first cyclic or freewheeling task declared,
 // or else by the target's task for programs without one.
 void Checker::addTestProgram(const std::string& name) {
-    auto it = pous_.find(upper(name));
+    auto it = pous_.find(scopedKey(upper(name)));
     if (it == pous_.end() || it->second->kind != ast::PouKind::Program) return;
     ConfiguredTask* host = nullptr;
     for (auto& t : model_.tasks)
@@ -390,6 +390,7 @@ void Checker::run(std::vector<ast::CompilationUnit>& units) {
     // for every library of the registry (decision 0220).
     namespaces_.insert("STANDARD");
     for (const stdlib::LibraryInfo& library : stdlib::libraries()) namespaces_.insert(upper(std::string(library.name)));
+    noteContestedNames(units);
     for (auto& u : units) collect(u);
     breakInheritanceCycles();
     // Types and enumerations first, so that enumeration values are known everywhere.

@@ -76,7 +76,7 @@ bool Checker::isNamespace(const ast::Expr& e) const {
 }
 
 PouInfo* Checker::pouNamed(const std::string& written) const {
-    std::string key = upper(written);
+    std::string key = scopedKey(upper(written));
     auto it = pous_.find(key);
     if (it == pous_.end() && key.rfind('.') != std::string::npos) it = pous_.find(key.substr(key.rfind('.') + 1));
     return it == pous_.end() ? nullptr : it->second;
@@ -148,7 +148,7 @@ void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
 // ---------------------------------------------------------------- types
 
 const Type* Checker::resolveNamedType(const std::string& name, const ast::Loc& loc) {
-    std::string key = upper(name);
+    std::string key = scopedKey(upper(name));
     auto dot = key.rfind('.');
     if (dot != std::string::npos && !typeDecls_.count(key) && !pous_.count(key)) key = key.substr(dot + 1);
     if (const Type* t = types().byName(key)) return t;
@@ -193,6 +193,10 @@ const Type* Checker::resolveNamedType(const std::string& name, const ast::Loc& l
         error(diag::E0107, loc, fmt::format("'{}' is a function, not a type", name));
         return nullptr;
     }
+    if (std::string candidates = ambiguityOf(key); !candidates.empty()) {
+        error(diag::E0102, loc, fmt::format("'{}' is declared in more than one namespace: write one of {}, or add a USING", name, candidates));
+        return nullptr;
+    }
     suggest(error(diag::E0102, loc, fmt::format("unknown type '{}'", name)), name, typeNames());
     return nullptr;
 }
@@ -207,6 +211,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
     }
     DeclDepthGuard depth(*this, decl->name, decl->nameLoc.line ? decl->nameLoc : decl->loc);
     if (!depth.ok()) return nullptr;
+    NameScopeGuard scope(*this, decl->nameSpace, decl->loc.file);
     resolvingTypes_.insert(key);
     const Type* result = nullptr;
     const ast::TypeSpec* spec = decl->spec.get();
@@ -419,7 +424,7 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
             // `fb : FB(a := 1)` parses like a typed enumeration: it is an FB
             // instance with FB_init arguments (see buildFbInitCalls).
             if (spec->elem && spec->elem->kind == ast::TypeSpecKind::Named) {
-                auto it = pous_.find(upper(spec->elem->name));
+                auto it = pous_.find(scopedKey(upper(spec->elem->name)));
                 if (it != pous_.end() && it->second->kind == ast::PouKind::FunctionBlock)
                     return spec->elem->genericArgs.empty() ? resolveNamedType(spec->elem->name, spec->loc)
                                                            : specialisedInstanceType(*spec->elem);
@@ -493,6 +498,7 @@ void Checker::layoutPou(PouInfo* pou) {
     DeclDepthGuard depth(*this, pou->name, pou->ast->nameLoc.line ? pou->ast->nameLoc : pou->ast->loc);
     if (!depth.ok()) return;
     pou->layingOut = true;
+    NameScopeGuard scope(*this, pou->ast->nameSpace, pou->ast->loc.file);
     PouInfo* savedPou = pou_;
     pou_ = pou;
     const bool hasInstance = pou->kind == ast::PouKind::Program || pou->kind == ast::PouKind::FunctionBlock;
@@ -550,7 +556,9 @@ void Checker::layoutPou(PouInfo* pou) {
             pou->resultType = resolveTypeSpec(resultSpec, pou->name);
             if (pou->resultType) {
                 auto v = std::make_unique<VarSym>();
-                v->name = pou->property ? pou->property->name : pou->name;
+                // A function renamed to its qualified name (decision 0325) still
+                // assigns its result by its own name.
+                v->name = pou->property ? pou->property->name : pou->name.substr(pou->name.rfind('.') + 1);
                 v->loc = pou->ast->loc;
                 v->type = pou->resultType;
                 v->section = ast::VarSection::Output;
@@ -866,6 +874,7 @@ void Checker::declareGlobals() {
         if (libraryFiles_.count(list->loc.file) && projectLists.count(upper(list->nameSpace))) continue;
         qualifiedOnlyList_ = hasAttribute(list->pragmas, "qualified_only") ? list->nameSpace : "";
         declaringList_ = list->nameSpace;
+        NameScopeGuard scope(*this, list->nameSpace, list->loc.file);
         declareBlocks(list->blocks);
         qualifiedOnlyList_.clear();
         declaringList_.clear();

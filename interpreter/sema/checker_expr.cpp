@@ -743,7 +743,7 @@ Checked Checker::partialAccess(Checked base, const std::string& key, const std::
 
 Checked Checker::checkMember(const ast::Expr& e) {
     const ast::Expr& baseExpr = *e.kids[0];
-    if (isNamespace(baseExpr) && !lookupVar(upper(baseExpr.name))) {
+    if (isNamespace(baseExpr) && !lookupVar(upper(chainRoot(baseExpr).name))) {
         ast::Expr plain;
         plain.kind = ast::ExprKind::Name;
         plain.loc = e.nameLoc.line ? e.nameLoc : e.loc;
@@ -760,6 +760,7 @@ Checked Checker::checkMember(const ast::Expr& e) {
     if (baseExpr.kind == ast::ExprKind::Name || qualifiedType) {
         std::string bkey = upper(baseExpr.name);
         if (qualifiedType || !lookupVar(bkey)) {
+            if (!qualifiedType) bkey = scopedKey(bkey);
             // Enum.Value
             if (typeDecls_.count(bkey)) {
                 const Type* t = resolveTypeDecl(bkey, baseExpr.loc);
@@ -779,6 +780,7 @@ Checked Checker::checkMember(const ast::Expr& e) {
             qualified = upper(p->name) + "." + qualified;
             if (p->kind == ast::ExprKind::Name) break;
         }
+        qualified = scopedKey(qualified);
         const std::string key = typeDecls_.count(qualified) ? qualified : bkey;
         if (typeDecls_.count(key)) {
             const Type* t = resolveTypeDecl(key, baseExpr.loc);
@@ -1195,6 +1197,7 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         if (from->kind == TK::FunctionBlock && from->pou) {
             for (PouInfo* p = from->pou; p && !ok; p = p->parent)
                 for (const auto& n : p->ast->implements) {
+                    NameScopeGuard scope(*this, p->ast->nameSpace, p->ast->loc.file);  // written in the block's namespace
                     PouInfo* itf = pouNamed(n);
                     if (!itf) continue;
                     std::vector<PouInfo*> all;

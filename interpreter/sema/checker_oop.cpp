@@ -35,6 +35,7 @@ PouInfo* Checker::findMethod(PouInfo* owner, const std::string& key) {
 void Checker::collectInterfaces(PouInfo* itf, std::vector<PouInfo*>& out) {
     if (std::find(out.begin(), out.end(), itf) != out.end()) return;
     out.push_back(itf);
+    NameScopeGuard scope(*this, itf->ast->nameSpace, itf->ast->loc.file);
     std::vector<std::string> bases = itf->ast->extendsList;
     if (bases.empty() && !itf->ast->extends.empty()) bases.push_back(itf->ast->extends);
     for (const auto& b : bases) {
@@ -66,6 +67,7 @@ void Checker::buildClasses() {
     std::function<void(PouInfo*)> build = [&](PouInfo* fb) {
         if (done.count(fb) || !fb->classDesc) return;
         done.insert(fb);
+        NameScopeGuard scope(*this, fb->ast->nameSpace, fb->ast->loc.file);
         exec::ClassDesc& d = *fb->classDesc;
         d.methods.assign(slots, nullptr);
         d.body = fb->code;

@@ -420,8 +420,9 @@ Checked Checker::makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& l
     // An integer compared with an enumeration value compares with the value's
     // integer (`UDINT_TO_INT(any.TypeClass) = IBaseLibrary.TypeClass.TYPE_INT`,
     // as TcUnit writes it; CODESYS/TwinCAT accept it): decision 0302. Not with --strict.
+    // Also a bit string, for an enumeration on WORD (`eStatus > WORD#16#8000`, SIMATIC AX).
     if (!options_.strict) {
-        auto isPlainInteger = [](const Type* t) { return isInteger(t->kind) && !t->isSubrange; };
+        auto isPlainInteger = [](const Type* t) { return (isInteger(t->kind) || isBitString(t->kind)) && !t->isSubrange; };
         if (a.type->kind == TK::Enum && a.type->base && isPlainInteger(b.type)) a = coerce(a, a.type->base, a.loc, "operand");
         else if (b.type->kind == TK::Enum && b.type->base && isPlainInteger(a.type)) b = coerce(b, b.type->base, b.loc, "operand");
         if (!a.ok || !b.ok) return bad(loc);

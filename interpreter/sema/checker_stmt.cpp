@@ -392,7 +392,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
             // A function-block instance called as a statement?
             bool maybeFb = callee.kind != ast::ExprKind::Name || lookupVar(upper(callee.name)) != nullptr;
             // Lib.F(...) / NS.F(...) as a statement: a function of a namespace or library, not an instance.
-            if (callee.kind == ast::ExprKind::Member && isNamespace(*callee.kids[0]) && !lookupVar(upper(callee.kids[0]->name)) &&
+            if (callee.kind == ast::ExprKind::Member && isNamespace(*callee.kids[0]) && !lookupVar(upper(chainRoot(*callee.kids[0]).name)) &&
                 !lookupVar(upper(callee.name)))
                 maybeFb = false;
             if (callee.kind == ast::ExprKind::Name) {
@@ -404,7 +404,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
             if (maybeFb) {
                 bool isMethod = false;
                 const bool qualifiedGlobal = callee.kind == ast::ExprKind::Member && isNamespace(*callee.kids[0]) &&
-                                             !lookupVar(upper(callee.kids[0]->name));  // GVL.fbInstance(...)
+                                             !lookupVar(upper(chainRoot(*callee.kids[0]).name));  // GVL.fbInstance(...)
                 if (callee.kind == ast::ExprKind::Member && !qualifiedGlobal) {
                     // inst.Method(...) vs. structVar.fbMember(...)
                     Checked base = checkMemberBase(*callee.kids[0]);
@@ -499,6 +499,7 @@ void Checker::checkBody(PouInfo* pou) {
         return;
     }
     pou->bodyChecked = true;
+    NameScopeGuard scope(*this, pou->ast->nameSpace, pou->ast->loc.file);
     pou_ = pou;
     model_.names.push_back(pou->code->name);
     currentPouName_ = &model_.names.back();

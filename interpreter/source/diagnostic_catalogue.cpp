@@ -78,7 +78,9 @@ const std::vector<CodeInfo> kCatalogue = {
     {"E0102", K::Error, "unknown type",
      "The type name is neither an elementary type (INT, REAL, TIME, ...), nor a TYPE declared in the project, nor a "
      "function block, nor a block of strun's library (TON, CTU, R_TRIG, ...). Check the spelling; strun suggests the "
-     "closest type name.\n\nVariables declared with an unknown type are not reported again where they are used.",
+     "closest type name.\n\nVariables declared with an unknown type are not reported again where they are used.\n\n"
+     "A name that two namespaces declare (and neither the code's own namespace, nor the top level, nor a USING "
+     "of the file) is reported with both qualified names: write one of them.",
      "VAR\n    t : TIM;\nEND_VAR", "VAR\n    t : TON;\nEND_VAR"},
     {"E0103", K::Error, "no such member",
      "The structure, function block, interface or value has no member (field, input, output, method or property) "
