@@ -32,7 +32,8 @@ namespace {
 struct Name {
     std::string upper, written, library;
     char kind;   // F function, B function block, I interface, P program, N namespace, T type,
-                 // E enumeration value, G global variable, X native function, U not provided
+                 // E enumeration value, G global variable, X native function, U not provided,
+                 // Q qualified_only namespace (selects only as `Q.x`)
     int file;    // index of the embedded source, -1 for X and U
 };
 
@@ -112,8 +113,9 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
     bool pendingQualified = false, qualified = false;  // enumeration values of a qualified_only TYPE are not names of their own
     // The names inside a qualified_only NAMESPACE (CODESYS' "QualifiedOnly"
     // libraries, such as CAA Types' CAA) are reached only through the
-    // namespace, so only its name selects the file: a project's own COUNT or
-    // HANDLE must not pull in CAA.COUNT (decision 0323).
+    // namespace, so only its name selects the file, as kind Q (selected only
+    // where the project writes `CAA.x`): a project's own COUNT or HANDLE must
+    // not pull in CAA.COUNT (decision 0323).
     int namespaceDepth = 0, qualifiedNamespaceDepth = 0;  // 0: not inside a qualified_only namespace
     auto add = [&](const std::string& w, char kind) {
         if (qualifiedNamespaceDepth == 0) out.push_back({upperOf(w), w, library, kind, file});
@@ -154,7 +156,8 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
                         upperOf(at(j)->text) == "INTERNAL"))
                     ++j;
                 if (at(j) && at(j)->word) name = at(j)->text;
-                add(name, u == "FUNCTION_BLOCK" ? 'B' : u == "FUNCTION" ? 'F' : u == "INTERFACE" ? 'I' : u == "PROGRAM" ? 'P' : 'N');
+                const bool qualifiedNamespace = u == "NAMESPACE" && pendingQualified;
+                add(name, u == "FUNCTION_BLOCK" ? 'B' : u == "FUNCTION" ? 'F' : u == "INTERFACE" ? 'I' : u == "PROGRAM" ? 'P' : qualifiedNamespace ? 'Q' : 'N');
                 if (u == "NAMESPACE") {
                     ++namespaceDepth;
                     if (pendingQualified && qualifiedNamespaceDepth == 0) qualifiedNamespaceDepth = namespaceDepth;
