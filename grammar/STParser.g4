@@ -348,6 +348,7 @@ unaryExpr
       | special=(THIS | SUPER | DIRECT_ADDRESS)
       | LPAREN inner=expression (ASSIGN assigned=expression)? RPAREN
       ) suffixes+=postfixOp*                                              # postfixExpression
+    | POINTER TO pointee=qualifiedName   # pointerTypeExpression   // __NEW(POINTER TO T, n) (TwinCAT)
     ;
 
 postfixOp

@@ -93,6 +93,7 @@ struct Expr {
     // Name / Member
     std::string name;
     Loc nameLoc;  // Member: the member name after the dot (errors about the member point here)
+    bool pointerTo = false;  // Name: `POINTER TO name`, a type only __NEW and SIZEOF take
     // Unary / Binary
     Op op = Op::Add;
     std::vector<ExprPtr> kids;

@@ -147,6 +147,12 @@ ExprPtr AstBuilder::unary(P::UnaryExprContext* c) {
     if (auto* p = exactly<P::PostfixExpressionContext>(c)) return postfix(p);
     if (auto* l = exactly<P::LiteralExpressionContext>(c)) return literal(l->value);
     const Loc at = loc(c);
+    if (auto* p = exactly<P::PointerTypeExpressionContext>(c)) {
+        auto e = makeExpr(ExprKind::Name, at);
+        if (p->pointee) e->name = text(p->pointee);
+        e->pointerTo = true;
+        return e;
+    }
     if (auto* u = exactly<P::UnaryExpressionContext>(c)) {
         DepthScope scope(exprDepth_);
         if (exprDepth_ > kMaxExpressionDepth) return tooComplex(at);

@@ -12,6 +12,7 @@ ExprPtr cloneExpr(const Expr& e) {
     out->valueText = e.valueText;
     out->name = e.name;
     out->nameLoc = e.nameLoc;
+    out->pointerTo = e.pointerTo;
     out->op = e.op;
     for (const auto& k : e.kids) out->kids.push_back(k ? cloneExpr(*k) : nullptr);
     for (const auto& a : e.args) out->args.push_back(cloneArg(a));

@@ -123,15 +123,19 @@ void addToString(Checker& ck, const std::string& name, const Type* from, bool wi
     });
 }
 
-void addFromString(Checker& ck, const std::string& name, bool wide, const Type* to) {
-    ck.addBuiltin(name, [wide, to](Checker& ck, CallArgs& call) -> Checked {
+// STRING_TO_X / WSTRING_TO_X; with `either`, the overloaded TO_X of a STRING or
+// a WSTRING (TO_LREAL(sValue)), whose numeric sources checkConversionCall takes.
+void addFromString(Checker& ck, const std::string& name, bool wide, const Type* to, bool either = false) {
+    ck.addBuiltin(name, [wide, to, either](Checker& ck, CallArgs& call) -> Checked {
         std::vector<Checked> a;
         if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
-        if (!isStringArg(a[0], wide)) return argError(ck, a[0], call.name, fmt::format("the input must be {}", wide ? "WSTRING" : "STRING"));
+        const bool wideSource = either ? isStringArg(a[0], true) : wide;
+        if (!isStringArg(a[0], wideSource))
+            return argError(ck, a[0], call.name, either ? "the input must be a number, a STRING or a WSTRING" : fmt::format("the input must be {}", wide ? "WSTRING" : "STRING"));
         ValueClass vc;
         valueClassOf(to, vc);
         TK view = sema::integerView(to->kind);
-        auto* n = ck.pool().make<FromStringNode>(a[0].node, wide, vc, sema::bitWidth(view), sema::isSignedInt(view));
+        auto* n = ck.pool().make<FromStringNode>(a[0].node, wideSource, vc, sema::bitWidth(view), sema::isSignedInt(view));
         return makeResult(ck, n, to, call, a);
     });
 }
@@ -216,6 +220,7 @@ void registerConvert(Checker& ck) {
         addToString(ck, name + "_TO_WSTRING", t, true);
         addFromString(ck, "STRING_TO_" + name, false, t);
         addFromString(ck, "WSTRING_TO_" + name, true, t);
+        addFromString(ck, "TO_" + name, false, t, true);
     }
     addToString(ck, "STRING_TO_WSTRING", types.elementary(TK::String), true);
     addToString(ck, "WSTRING_TO_STRING", types.elementary(TK::WString), false);

@@ -280,6 +280,7 @@ template <class T>
 struct ForStmt final : Stmt {
     Expr* var;
     Expr *from, *to, *by;  // by may be null (step 1)
+    bool descending = false;  // a negative constant step on an unsigned variable (decision 0326)
     Body body;
     Flow exec(Ctx& c) override {
         T end = static_cast<T>(to->i(c));
@@ -299,11 +300,12 @@ struct ForStmt final : Stmt {
             return Flow::Next;
         }
         T step = static_cast<T>(by->i(c));
+        const bool up = !descending && step >= T(0);
         uint8_t* p = var->addr(c);
         storeAs<T>(p, static_cast<T>(from->i(c)));
         for (;;) {
             T v = loadAs<T>(p);
-            if (step >= T(0) ? !(v <= end) : !(v >= end)) break;
+            if (up ? !(v <= end) : !(v >= end)) break;
             Flow f = body.run(c);
             if (f != Flow::Next) {
                 if (f == Flow::Exit) break;

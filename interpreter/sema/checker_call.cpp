@@ -265,7 +265,10 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             }
             const Type* t = nullptr;
             const ast::Expr& a = *e.args[0].value;
-            if (a.kind == ast::ExprKind::Name && !lookupVar(upper(a.name))) {
+            if (a.kind == ast::ExprKind::Name && a.pointerTo) {
+                if (const Type* target = resolveNamedType(a.name, a.loc)) t = types().pointer(target);
+                else return bad(e.loc);
+            } else if (a.kind == ast::ExprKind::Name && !lookupVar(upper(a.name))) {
                 t = types().byName(upper(a.name));
                 const std::string typeKey = scopedKey(upper(a.name));
                 if (!t && (typeDecls_.count(typeKey) || pous_.count(typeKey))) t = resolveNamedType(a.name, a.loc);
@@ -451,7 +454,14 @@ exec::Stmt* Checker::bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, co
         }
         return bind;
     }
-    if (!sameType(v.type, p->type) && !(isStringType(v.type->kind) && v.type->kind == p->type->kind) &&
+    // An enumeration variable for a VAR_IN_OUT of its base type (`eEnumSet : UINT`
+    // given an enumeration on UINT), as TwinCAT accepts it, also for a strict
+    // one: the same storage, passed by address (decision 0327).
+    const bool enumOnBase = v.type->kind == TK::Enum && v.type->base && sameType(v.type->base, p->type);
+    if (enumOnBase && !lenient(diag::W0001, loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}: passed as its base type", p->name,
+                                                             typeName(p->type), typeName(v.type))))
+        return nullptr;
+    if (!enumOnBase && !sameType(v.type, p->type) && !(isStringType(v.type->kind) && v.type->kind == p->type->kind) &&
         !isBlockOrExtends(v.type, p->type)) {
         error(diag::E0201, loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}", p->name, typeName(p->type), typeName(v.type)));
         return nullptr;

@@ -379,6 +379,10 @@ void Checker::ambiguousGlobal(const VarSym* v, const ast::Loc& loc, const std::s
 }
 
 Checked Checker::checkName(const ast::Expr& e) {
+    if (e.pointerTo) {
+        error(diag::E0107, e.loc, fmt::format("'POINTER TO {}' is a type, not a value: only __NEW and SIZEOF take it", e.name));
+        return bad(e.loc);
+    }
     std::string key = upper(e.name);
     if (qualifiedAccess_ && !qualifiedList_.empty()) {
         auto it = listGlobals_.find(qualifiedList_ + "." + key);

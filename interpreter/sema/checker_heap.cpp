@@ -91,6 +91,7 @@ Checked Checker::heapCall(const std::string& key, const ast::Expr& e, bool& hand
         }
         const Type* t = resolveNamedType(typeArg.name, typeArg.loc);
         if (!t) return bad(e.loc);
+        if (typeArg.pointerTo) t = types().pointer(t);  // __NEW(POINTER TO T, n): n pointers
         if (t->kind == TK::FunctionBlock && t->pou && t->pou->kind != ast::PouKind::FunctionBlock) {
             error(diag::E0107, typeArg.loc, fmt::format("'{}' is a PROGRAM; __NEW creates function blocks and data types", typeArg.name));
             return bad(e.loc);

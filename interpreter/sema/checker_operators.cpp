@@ -193,6 +193,18 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
     r.ok = true;
     r.loc = loc;
     r.hasCall = a.hasCall || b.hasCall;
+    // `(eModule - 1) * nOffset`: an enumeration without {attribute 'strict'} is
+    // its integer in arithmetic (CODESYS/TwinCAT), with the implicit-conversion
+    // warning; an error with --strict or on a strict enumeration (decision 0327).
+    auto enumAsInteger = [&](Checked& v, const Checked& other) {
+        const TK ko = other.type->kind;
+        if (v.type->kind != TK::Enum || !v.type->base || !(other.untypedInt || isInteger(ko) || isBitString(ko) || ko == TK::Enum)) return;
+        v = coerce(v, v.type->base, v.loc.line ? v.loc : loc, "operand");
+    };
+    enumAsInteger(a, b);
+    if (!a.ok) return bad(loc);
+    enumAsInteger(b, a);
+    if (!b.ok) return bad(loc);
     TK ka = a.type->kind, kb = b.type->kind;
     if ((op == ast::Op::Div || op == ast::Op::Mod) && b.isConst && (b.untypedInt || isInteger(kb) || isBitString(kb)) &&
         b.constInt == 0)

@@ -284,7 +284,20 @@ exec::Stmt* Checker::checkFor(const ast::Stmt& s) {
     }
     from = coerce(from, var.type, s.from->loc, "FOR start");
     to = coerce(to, var.type, s.to->loc, "FOR end");
-    if (s.by) by = coerce(by, var.type, s.by->loc, "FOR step");
+    // `FOR i := n TO 1 BY -1` on an unsigned i (TwinCAT accepts it): the step
+    // wraps to the variable's type, so adding it counts down, and the loop
+    // runs while i >= end (decision 0326).
+    bool descending = false;
+    const bool unsignedVar = !isSignedInt(integerView(var.type->kind));
+    if (s.by && by.isConst && by.constInt < 0 && unsignedVar && (by.untypedInt || isSignedInt(integerView(by.type->kind)))) {
+        if (!lenient(diag::W0001, s.by->loc,
+                     fmt::format("FOR step {} on the unsigned control variable '{}' ({}): it counts down", by.constInt, s.name, typeName(var.type))))
+            return nullptr;
+        by = constInt(by.constInt, var.type, s.by->loc);
+        descending = true;
+    } else if (s.by) {
+        by = coerce(by, var.type, s.by->loc, "FOR step");
+    }
     if (!from.ok || !to.ok || (s.by && !by.ok)) return nullptr;
     ++loopDepth_;
     exec::Block* body = checkBlock(s.body);
@@ -294,6 +307,7 @@ exec::Stmt* Checker::checkFor(const ast::Stmt& s) {
         n->from = from.node;
         n->to = to.node;
         n->by = s.by ? by.node : nullptr;
+        n->descending = descending;
         n->body = body;
         return n;
     };

@@ -239,6 +239,7 @@ struct Reader : XmlConversion {
 
         std::string head = std::string(keyword) + " " + name;
         if (kind == "function") head += " : " + (child(itf, "returnType") ? typeText(child(itf, "returnType")) : std::string("INT"));
+        if (kind == "functionBlock") head += inheritanceClause(itf);
         written(p, head);
         interfaceOf(itf);
         if (!hidden.empty()) {
@@ -300,6 +301,26 @@ struct Reader : XmlConversion {
                 collectProject(c, depth + 1);
             }
         }
+    }
+
+    // CODESYS keeps a block's EXTENDS and IMPLEMENTS in <interface><addData>
+    // <data name=".../pouinheritance"><Inheritance><Extends>B</Extends>
+    // <Implements>I</Implements>: " EXTENDS B IMPLEMENTS I, J" (decision 0327).
+    static std::string inheritanceClause(const pugi::xml_node& itf) {
+        std::string extends, implements;
+        for (pugi::xml_node data : children(child(itf, "addData"), "data"))
+            for (pugi::xml_node inh : children(data, "Inheritance")) {
+                for (pugi::xml_node e : children(inh, "Extends"))
+                    if (extends.empty()) extends = e.text().get();
+                for (pugi::xml_node i : children(inh, "Implements")) {
+                    const std::string names = i.text().get();
+                    if (!names.empty()) implements += (implements.empty() ? "" : ", ") + names;
+                }
+            }
+        std::string out;
+        if (!extends.empty()) out += " EXTENDS " + extends;
+        if (!implements.empty()) out += " IMPLEMENTS " + implements;
+        return out;
     }
 
     // CODESYS keeps methods in <addData><data name=".../method"><Method>.

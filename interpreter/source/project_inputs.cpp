@@ -25,7 +25,7 @@ std::string lowerExtension(const std::string& path) {
 
 bool isTwinCatObject(const std::string& path) {
     const std::string ext = lowerExtension(path);
-    return ext == ".tcpou" || ext == ".tcdut" || ext == ".tcgvl" || ext == ".tcio" || ext == ".tctto";
+    return ext == ".tcpou" || ext == ".tcdut" || ext == ".tcgvl" || ext == ".tcio" || ext == ".tctto" || ext == ".tctleo";
 }
 
 std::string lowerPath(const fs::path& path) {

@@ -129,7 +129,9 @@ struct Reader : XmlConversion {
             const std::string tag = n.name();
             if (tag == "POU") {
                 pou(n);
-            } else if (tag == "DUT") {
+            } else if (tag == "DUT" || tag == "EnumerationTextList") {
+                // An enumeration with a text list (.TcTLEO) declares its TYPE like a DUT;
+                // the texts (its XmlArchive) are for the HMI and not read.
                 copyText(n.child("Declaration"));
             } else if (tag == "GVL") {
                 // A named global variable list: GVL.var (decision 0094).

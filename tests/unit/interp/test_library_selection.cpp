@@ -113,12 +113,12 @@ TEST_CASE("a global constant, an enumeration value and a block select their file
 }
 
 TEST_CASE("the registry knows names of libraries strun does not provide", "[library]") {
-    CHECK(strun::stdlib::libraryHint("fb_mbreadregs").find("comes from library Tc2_ModbusSrv, which strun does not provide") != std::string::npos);
+    CHECK(strun::stdlib::libraryHint("modbusrtumasterv2_pccom").find("comes from library Tc2_ModbusRTU, which strun does not provide") != std::string::npos);
     CHECK(strun::stdlib::libraryHint("MC_Power") == "'MC_Power' comes from library Tc2_MC2");
     CHECK(strun::stdlib::libraryHint("NoSuchName").empty());
     CHECK(strun::stdlib::findLibrary("tc2_system") != nullptr);
     // Names of absent libraries select nothing.
-    CHECK(selectedPaths({"s : FB_MBReadRegs;"}).empty());
+    CHECK(selectedPaths({"s : ModbusRtuMasterV2_PcCOM;"}).empty());
 }
 
 TEST_CASE("values of a qualified_only enumeration select nothing by themselves", "[library]") {
