@@ -159,6 +159,9 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
         handled = false;  // TO_INT('12'): a STRING source is a stdlib conversion (interpreter/builtins)
         return bad(e.loc);
     }
+    // TO_DT(pValue), TO_LTIME(pValue): a pointer converts as its address, an
+    // unsigned integer of its width (TwinCAT; decision 0326).
+    if (!from) a = pointerAsAddress(a, types().elementary(TK::ULInt));
     if (truncate && !(isReal(a.type->kind) || a.untypedReal)) {
         error(diag::E0202, e.args[0].value->loc, fmt::format("{} needs a REAL or LREAL input, not {}", key, typeName(a.type)));
         return bad(e.loc);
