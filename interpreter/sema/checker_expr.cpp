@@ -780,7 +780,11 @@ Checked Checker::checkMember(const ast::Expr& e) {
     if (baseExpr.kind == ast::ExprKind::Name || qualifiedType) {
         std::string bkey = upper(baseExpr.name);
         if (qualifiedType || !lookupVar(bkey)) {
-            if (!qualifiedType) bkey = scopedKey(bkey);
+            if (!qualifiedType) {
+                bkey = scopedKey(bkey);
+            } else if (std::string scoped = scopedKey(writtenPath(baseExpr)); typeDecls_.count(scoped)) {
+                bkey = scoped;  // FILE.MODE.MREAD beside a project's own MODE (decision 0324)
+            }
             // Enum.Value
             if (typeDecls_.count(bkey)) {
                 const Type* t = resolveTypeDecl(bkey, baseExpr.loc);
