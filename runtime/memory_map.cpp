@@ -43,6 +43,11 @@ bool MemoryMap::containsSlow(uintptr_t a, size_t size) const {
     return false;
 }
 
+bool MemoryMap::isDynamic(const void* p, size_t size) const {
+    uintptr_t begin = 0, end = 0;
+    return dynamic_ && dynamic_(dynamicOwner_, reinterpret_cast<uintptr_t>(p), size, begin, end);
+}
+
 bool MemoryMap::isObject(const void* p) const {
     if (!sorted_) sort();
     return std::binary_search(objects_.begin(), objects_.end(), reinterpret_cast<uintptr_t>(p));

@@ -7,4 +7,7 @@ namespace strun::exec {
 // Block::exec inlined (call_nodes.h).
 void runBodyOutOfLine(Ctx& c, const PouCode& code, uint8_t* inst, uint8_t* f) { runBody(c, code, inst, f); }
 
+template struct CallFbStmtOf<false>;
+template struct CallFbStmtOf<true>;
+
 }  // namespace strun::exec

@@ -414,6 +414,11 @@ struct CallFbStmtOf final : Stmt {
 };
 using CallFbStmt = CallFbStmtOf<false>;
 using CallFbDispatchStmt = CallFbStmtOf<true>;
+// Compiled once, in call_nodes.cpp: instantiated implicitly, the copy the
+// linker kept came from whichever checker file made one, and GCC's inlining
+// there (the body's Block::exec) changed with unrelated edits to that file.
+extern template struct CallFbStmtOf<false>;
+extern template struct CallFbStmtOf<true>;
 
 // ARRAY[*] parameters (VAR_IN_OUT): the slot holds a descriptor
 // { address, lo0, hi0, lo1, hi1, ... } filled in at the call.

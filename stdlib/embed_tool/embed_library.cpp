@@ -156,7 +156,11 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
                         upperOf(at(j)->text) == "INTERNAL"))
                     ++j;
                 if (at(j) && at(j)->word) name = at(j)->text;
-                const bool qualifiedNamespace = u == "NAMESPACE" && pendingQualified;
+                // A dotted namespace (SIMATIC AX's System.Timer) is always written
+                // with its dot, in `USING System.Timer;` too: kind Q, so that the
+                // word "system" in a comment selects nothing.
+                const bool dotted = u == "NAMESPACE" && isChar(j + 1, '.');
+                const bool qualifiedNamespace = u == "NAMESPACE" && (pendingQualified || dotted);
                 add(name, u == "FUNCTION_BLOCK" ? 'B' : u == "FUNCTION" ? 'F' : u == "INTERFACE" ? 'I' : u == "PROGRAM" ? 'P' : qualifiedNamespace ? 'Q' : 'N');
                 if (u == "NAMESPACE") {
                     ++namespaceDepth;
