@@ -355,8 +355,10 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
         case ast::TypeSpecKind::String: {
             int64_t len = 80;
             if (spec->length && !constIntExpr(spec->length.get(), len, "a string length")) len = 80;
-            if (len < 1 || len > 65535) {
-                error(diag::E0407, spec->loc, fmt::format("string length {} outside 1..65535", len));
+            // STRING(0) (TwinCAT: one byte, always empty; Beckhoff's MQTT sample
+            // passes ADR of one as an empty payload) is accepted (decision 0329).
+            if (len < 0 || len > 65535) {
+                error(diag::E0407, spec->loc, fmt::format("string length {} outside 0..65535", len));
                 len = 80;
             }
             return types().string(static_cast<uint32_t>(len), spec->wide);
@@ -591,9 +593,10 @@ void Checker::layoutPou(PouInfo* pou) {
                 if (v->storage != Storage::Self || v->byRef) continue;
                 writeDefault(image.data() + v->offset, v->type);
                 if (isAddressInit(v.get())) { pou->addressInits.push_back({v.get(), nullptr, v->decl->init->expr.get()}); continue; }
-                // Only the block's own variables may be initialised at run time (a
-                // method's VAR_INST has no name an assignment could spell).
-                writeVarInitial(image.data() + v->offset, v.get(), owner == pou ? &pou->addressInits : nullptr);
+                // A method's VAR_INST too (TwinCAT collections: `fbView : FB_View :=
+                // (ipList := THIS^.fbList);` in a property's getter): its
+                // assignment is checked in the method's scope (addressInitStmt).
+                writeVarInitial(image.data() + v->offset, v.get(), &pou->addressInits);
             }
         };
         initialise(pou);
@@ -767,6 +770,10 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
 
 // A CONSTANT scalar with a constant initial value is folded into its uses.
 void Checker::foldConstant(VarSym& v, const ast::VarDecl& decl) {
+    if (decl.init->kind == ast::InitKind::Expr && v.type && isStringType(v.type->kind)) {
+        foldStringConstant(v, decl);
+        return;
+    }
     if (decl.init->kind != ast::InitKind::Expr || !(isIntRep(v.type) || isRealRep(v.type))) return;
     Checked c = checkExpr(*decl.init->expr);
     if (!c.ok || !c.isConst) return;
