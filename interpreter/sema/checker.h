@@ -305,6 +305,7 @@ private:
     void collectArrayFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth, PouInfo* enclosing,
                              uint8_t* enclosingAddr);
     bool holdsFbInit(const Type* t);
+    bool elementArgsAllowed_ = false;  // resolving the element type of an ARRAY (per-element FB_init arguments)
     static constexpr size_t kMaxFbInitCalls = 100000;
     std::map<const Type*, bool> holdsFbInit_;
     bool fbInitLimitReported_ = false;

@@ -350,6 +350,11 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
     if (!spec) return nullptr;
     switch (spec->kind) {
         case ast::TypeSpecKind::Named:
+            if (!spec->elementInitArgs.empty() && !elementArgsAllowed_) {
+                error(diag::E0407, spec->loc, fmt::format("'{}[(...), ...]' gives FB_init arguments per element: it needs ARRAY[...] OF before it",
+                                                  spec->name));
+                return nullptr;
+            }
             if (!spec->genericArgs.empty()) return specialisedInstanceType(*spec);
             return resolveNamedType(spec->name, spec->loc);
         case ast::TypeSpecKind::String: {
@@ -364,8 +369,17 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
             return types().string(static_cast<uint32_t>(len), spec->wide);
         }
         case ast::TypeSpecKind::Array: {
+            // `ARRAY[..] OF FB_X[(a := 1), (a := 2)]`: FB_init arguments per element (decision 0330).
+            const bool perElement = spec->elem && !spec->elem->elementInitArgs.empty();
+            elementArgsAllowed_ = perElement;
             const Type* elem = resolveTypeSpec(spec->elem.get(), context);
+            elementArgsAllowed_ = false;
             if (!elem) return nullptr;
+            if (perElement && elem->kind != TK::FunctionBlock) {
+                error(diag::E0407, spec->elem->loc, fmt::format("FB_init arguments per element need an array of function blocks, not of {}",
+                                                        typeName(elem)));
+                return nullptr;
+            }
             std::vector<ArrayDim> dims;
             bool flexible = false;
             // Bytes, counting a zero-size element (an empty STRUCT) as one byte so
