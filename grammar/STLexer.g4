@@ -199,8 +199,9 @@ DIRECT_ADDRESS : '%' (I | Q | M | S) (X | B | W | D | L)? ( [0-9]+ ('.' [0-9]+)*
 // x.%X3 (partial access of a bit string)
 PARTIAL_ACCESS : '%' (X | B | W | D | L) [0-9]+;
 
-fragment DEC_INT   : [0-9] ('_'? [0-9])*;
-fragment BASED_INT : ('2' | '8' | '10' | '16') '#' '_'? [0-9a-fA-F] ('_'? [0-9a-fA-F])*;
+// Underscores between digits, also several (`16#7f_ff__ff_ff`: TwinCAT accepts it).
+fragment DEC_INT   : [0-9] ('_'* [0-9])*;
+fragment BASED_INT : ('2' | '8' | '10' | '16') '#' '_'? [0-9a-fA-F] ('_'* [0-9a-fA-F])*;
 fragment REAL_FRAG : DEC_INT '.' DEC_INT EXPONENT? | DEC_INT EXPONENT;
 fragment EXPONENT  : E ('+' | '-')? DEC_INT;
 fragment SQ_STRING : '\'' ( ~['$\r\n] | '$' ~[\r\n] )* '\'';

@@ -35,6 +35,12 @@ public:
         if (a >= hot_.begin && a < hot_.end && size <= hot_.end - a) return true;
         return containsSlow(a, size);
     }
+    // True when [p, p + size) lies inside one block of the dynamic memory (the
+    // heap of __NEW), for Tc2_System's F_CheckMemoryArea. Not on a hot path.
+    bool isDynamic(const void* p, size_t size) const {
+        uintptr_t begin = 0, end = 0;
+        return dynamic_ && dynamic_(dynamicOwner_, reinterpret_cast<uintptr_t>(p), size, begin, end);
+    }
     // Objects that may be the target of a hidden pointer (class descriptors of FB instances).
     void addObject(const void* object);
     bool isObject(const void* p) const;

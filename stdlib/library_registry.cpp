@@ -33,6 +33,8 @@ const LibraryInfo* findLibrary(std::string_view name) {
 }
 
 std::string libraryHint(std::string_view name) {
+    // `FILE.DirOpen`: the library's own name after its namespace.
+    if (libraryNamesFor(name).empty() && name.rfind('.') != std::string_view::npos) name = name.substr(name.rfind('.') + 1);
     for (const LibraryName& n : libraryNamesFor(name)) {
         if (n.library.empty()) continue;
         const LibraryInfo* lib = findLibrary(n.library);

@@ -27,7 +27,8 @@ struct LibraryName {
     std::string_view written;  // as the library spells it
     std::string_view library;  // "" for the standard blocks of stdlib/st
     char kind;  // F function, B function block, I interface, P program, N namespace, T type,
-                // E enumeration value, G global variable, X native function, U not provided by strun
+                // E enumeration value, G global variable, X native function, U not provided by strun,
+                // Q a qualified_only namespace (its names are reached only as `Q.x`, decision 0323)
     int file;   // index into embeddedSources() (F B I P N T E G), -1 (X U)
 };
 

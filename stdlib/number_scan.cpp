@@ -39,9 +39,12 @@ DigitScan scanDigits(std::string_view text, size_t pos, unsigned base) {
     while (true) {
         if (isDigitOf(text, i, base)) {
             // consume the digit below
-        } else if (scan.digits > 0 && i < text.size() && text[i] == '_' &&
-                   isDigitOf(text, i + 1, base)) {
-            ++i;  // a single underscore between two digits
+        } else if (scan.digits > 0 && i < text.size() && text[i] == '_') {
+            // Underscores between two digits: one (IEC) or several (TwinCAT).
+            size_t j = i;
+            while (j < text.size() && text[j] == '_') ++j;
+            if (!isDigitOf(text, j, base)) break;
+            i = j;
         } else {
             break;
         }

@@ -208,23 +208,25 @@ private:
         return i - p;
     }
 
-    // Where `d ('_'? d)*` ends when its first digit ends at i.
+    // Where `d ('_'* d)*` ends when its first digit ends at i.
     template <typename IsDigit>
     size_t restOfDigits(size_t i, IsDigit isDigitOf) const {
         for (;;) {
-            if (isDigitOf(at(i)))
+            if (isDigitOf(at(i))) {
                 ++i;
-            else if (at(i) == '_' && isDigitOf(at(i + 1)))
-                i += 2;
-            else
-                return i;
+                continue;
+            }
+            size_t j = i;
+            while (at(j) == '_') ++j;
+            if (j == i || !isDigitOf(at(j))) return i;
+            i = j + 1;
         }
     }
 
-    // [0-9] ('_'? [0-9])*
+    // [0-9] ('_'* [0-9])*
     size_t decInt(size_t p) const { return isDigit(at(p)) ? restOfDigits(p + 1, isDigit) - p : 0; }
 
-    // ('2' | '8' | '10' | '16') '#' '_'? hex ('_'? hex)*
+    // ('2' | '8' | '10' | '16') '#' '_'? hex ('_'* hex)*
     size_t basedInt(size_t p) const {
         size_t base = 0;
         if (at(p) == '2' || at(p) == '8')

@@ -96,6 +96,9 @@ void addToString(Checker& ck, const std::string& name, const Type* from, bool wi
             }
         } else {
             x = ck.settle(x);
+            // TO_STRING(pValue): a pointer is its address, an unsigned integer of
+            // its width, as TwinCAT converts it (decision 0326).
+            x = Checker::pointerAsAddress(x, ck.types().elementary(TK::ULInt));
         }
         if (!from && x.type->kind == TK::Enum && x.type->enumToString) {
             const Type* t = stringResultType(ck, wide, 80);

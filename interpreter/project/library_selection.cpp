@@ -24,7 +24,8 @@ constexpr std::array<unsigned char, 256> kWordClass = [] {
     return table;
 }();
 
-// Calls f(word) for every identifier-shaped word of the text.
+// Calls f(word, end) for every identifier-shaped word of the text (end: the
+// offset just after it).
 template <typename F>
 void forEachWord(std::string_view text, F&& f) {
     const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
@@ -39,13 +40,21 @@ void forEachWord(std::string_view text, F&& f) {
         const size_t start = i;
         while (i < n && kWordClass[bytes[i]] != 0) ++i;
         // A digit run (16#FF, 2.5E3) is no name: skipped whole.
-        if (kind == 1) f(text.substr(start, i - start));
+        if (kind == 1) f(text.substr(start, i - start), i);
     }
 }
 
 // A registry row that selects something: a declaration in an embedded file
 // or a native function. Rows of names strun does not provide select nothing.
 bool selects(const stdlib::LibraryName& n) { return n.kind != 'U'; }
+
+// A qualified_only namespace (kind Q: CAA, FILE) is used only as `NS.x`, so
+// its name selects its file only where a '.' and a name follow it: "the
+// file" in a comment does not load CAA File (decision 0323).
+bool qualifiedUse(std::string_view text, size_t end) {
+    while (end < text.size() && (text[end] == ' ' || text[end] == '\t')) ++end;
+    return end + 1 < text.size() && text[end] == '.' && kWordClass[static_cast<unsigned char>(text[end + 1])] == 1;
+}
 
 // Bit L of [c]: some selecting name of length L (< 64) starts (ends) with
 // the letter c in either case. Most words of a program fail this test, and
@@ -97,7 +106,7 @@ LibrarySelection selectLibraries(const std::vector<std::string_view>& projectTex
     LibrarySelection out;
     std::string folded;
     auto scan = [&](std::string_view text) {
-        forEachWord(text, [&](std::string_view w) {
+        forEachWord(text, [&](std::string_view w, size_t end) {
             if (!masks.mayBeName(w)) return;
             folded.assign(w);
             sema::upperInPlace(folded);
@@ -109,6 +118,7 @@ LibrarySelection selectLibraries(const std::vector<std::string_view>& projectTex
                     continue;
                 }
                 if (!selects(*n) || n->file < 0) continue;
+                if (n->kind == 'Q' && !qualifiedUse(text, end)) continue;
                 const auto file = static_cast<size_t>(n->file);
                 if (file < selected.size() && !selected[file]) {
                     selected[file] = true;

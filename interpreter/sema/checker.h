@@ -77,6 +77,16 @@ public:
     Checked coerce(Checked e, const Type* target, const ast::Loc& loc, const char* what);
     // Explicit conversion (X_TO_Y / TO_Y): any elementary pair.
     Checked convert(Checked e, const Type* target, const ast::Loc& loc, bool truncate = false);
+    // A POINTER's value as its address, a ULINT (TO_STRING(pValue), TO_DT(pValue);
+    // decision 0326); anything else unchanged.
+    static Checked pointerAsAddress(Checked e, const Type* ulint) {
+        if (!e.ok || e.type->kind != TK::Pointer) return e;
+        e.type = ulint;
+        if (e.node) e.node->type = ulint;
+        e.isPlace = false;
+        e.var = nullptr;
+        return e;
+    }
     // The type two operands are brought to by an arithmetic/comparison operator; null if none.
     const Type* commonType(Checked& a, Checked& b, const ast::Loc& loc, bool reportError = true);
     // Fixes the type of an untyped literal (ANY_INT -> DINT/LINT, ANY_REAL -> LREAL).
@@ -414,6 +424,7 @@ private:
     std::string ambiguityOf(const std::string& upperWritten) const;
     // "A.B.F" (upper case) for a name or a chain of members; "" for anything else.
     static std::string writtenPath(const ast::Expr& e);
+    Checked inOutBinding(const VarSym* v, const ast::Loc& loc);
     // `A` of `A.B.C`: a local variable named like it makes the chain a member access.
     static const ast::Expr& chainRoot(const ast::Expr& e);
     std::map<std::string, std::pair<const Type*, const Enumerator*>> enumValues_;  // unqualified, unique ones

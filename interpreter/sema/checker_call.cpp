@@ -163,6 +163,9 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
         handled = false;  // TO_INT('12'): a STRING source is a stdlib conversion (interpreter/builtins)
         return bad(e.loc);
     }
+    // TO_DT(pValue), TO_LTIME(pValue): a pointer converts as its address, an
+    // unsigned integer of its width (TwinCAT; decision 0326).
+    if (!from) a = pointerAsAddress(a, types().elementary(TK::ULInt));
     if (truncate && !(isReal(a.type->kind) || a.untypedReal)) {
         error(diag::E0202, e.args[0].value->loc, fmt::format("{} needs a REAL or LREAL input, not {}", key, typeName(a.type)));
         return bad(e.loc);
@@ -360,6 +363,10 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             Checked v = checkExpr(*e.args[0].value);
             suppressAutoDeref_ = saved;
             if (!v.ok) return v;
+            // A VAR_IN_OUT is a reference too: valid once it is bound (TwinCAT).
+            const ast::Expr& written = *e.args[0].value;
+            if (written.kind == ast::ExprKind::Name && v.var && v.var->byRef && !v.var->type->flexible)
+                v = inOutBinding(v.var, written.loc);
             if (v.type->kind != TK::Reference && v.type->kind != TK::Pointer && v.type->kind != TK::Interface) {
                 error(diag::E0201, e.args[0].value->loc, "__ISVALIDREF needs a REFERENCE");
                 return bad(e.loc);

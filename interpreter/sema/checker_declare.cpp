@@ -826,6 +826,7 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     v->constant = block.constant;
     v->retain = block.retain || block.persistent;
     v->decl = &decl;
+    v->hidden = hasAttribute(decl.pragmas, "strun_hidden");  // a library's own helper global
     v->storage = Storage::Abs;
     model_.largestType = std::max(model_.largestType, t->size);
     if (!decl.address.empty() && decl.address.find('*') == std::string::npos) {

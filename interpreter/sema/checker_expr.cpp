@@ -377,6 +377,22 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
     return autoDeref(c);
 }
 
+// The address a VAR_IN_OUT is bound to (its slot's content, 0 while unbound),
+// as a POINTER TO its type: `__ISVALIDREF(inOut)` (TwinCAT; decision 0326).
+Checked Checker::inOutBinding(const VarSym* v, const ast::Loc& loc) {
+    const Checked::Direct d = v->storage == Storage::Self ? Checked::Direct::Self
+                              : v->storage == Storage::Frame ? Checked::Direct::Frame
+                                                             : Checked::Direct::Abs;
+    const uint32_t offset = v->offset + (d == Checked::Direct::Frame ? frameBias_ : 0);
+    Checked c;
+    c.ok = true;
+    c.loc = loc;
+    c.type = types().pointer(v->type);
+    c.node = directNode(pool(), d, offset, v->abs, c.type);
+    c.node->type = c.type;
+    return c;
+}
+
 // `x` declared by several named global lists: the error names every list.
 void Checker::ambiguousGlobal(const VarSym* v, const ast::Loc& loc, const std::string& written) {
     std::string lists;
@@ -771,7 +787,11 @@ Checked Checker::checkMember(const ast::Expr& e) {
     if (baseExpr.kind == ast::ExprKind::Name || qualifiedType) {
         std::string bkey = upper(baseExpr.name);
         if (qualifiedType || !lookupVar(bkey)) {
-            if (!qualifiedType) bkey = scopedKey(bkey);
+            if (!qualifiedType) {
+                bkey = scopedKey(bkey);
+            } else if (std::string scoped = scopedKey(writtenPath(baseExpr)); typeDecls_.count(scoped)) {
+                bkey = scoped;  // FILE.MODE.MREAD beside a project's own MODE (decision 0324)
+            }
             // Enum.Value
             if (typeDecls_.count(bkey)) {
                 const Type* t = resolveTypeDecl(bkey, baseExpr.loc);

@@ -10,7 +10,10 @@
 // declared, so everything keyed by a declaration's name works unchanged, and a
 // name written in code is mapped to one of those keys from the namespace of the
 // code that writes it (scopedKey).
+#include <algorithm>
+
 #include "interpreter/sema/checker.h"
+#include "stdlib/library_registry.h"
 
 namespace strun::sema {
 
@@ -25,6 +28,16 @@ struct Declared {
     const std::string* nameSpace;
     bool library;
 };
+
+// A namespace path whose outermost name is a qualified_only library
+// namespace (CAA File's FILE, CAA Types' CAA; registry kind Q).
+bool inQualifiedOnlyLibrary(const std::string& nameSpace) {
+    if (nameSpace.empty()) return false;
+    const std::string root = nameSpace.substr(0, nameSpace.find('.'));
+    for (const stdlib::LibraryName& n : stdlib::libraryNamesFor(root))
+        if (n.kind == 'Q') return true;
+    return false;
+}
 }  // namespace
 
 // A name is contested within the user's files, or within the library's, when
@@ -43,6 +56,16 @@ void Checker::noteContestedNames(std::vector<ast::CompilationUnit>& units) {
         for (auto& p : unit.pous) byName[upper(p->name)].push_back({&p->name, &p->nameSpace, library});
     }
     for (auto& [simple, decls] : byName) {
+        // A library declaration in a qualified_only namespace is reached only
+        // qualified (FILE.ERROR, CAA.SIZE): a user declaration of that name
+        // does not replace it; both stay, the library's under its qualified
+        // name (decision 0324).
+        const bool userDeclared = std::any_of(decls.begin(), decls.end(), [](const Declared& d) { return !d.library; });
+        for (const Declared& d : decls) {
+            if (!userDeclared || !d.library || !inQualifiedOnlyLibrary(*d.nameSpace)) continue;
+            contested_[simple].insert(upper(*d.nameSpace));
+            *d.name = *d.nameSpace + "." + *d.name;
+        }
         const bool builtin = hasBuiltin(simple) || types().byName(simple);
         if (decls.size() < 2 && !builtin) continue;
         for (const bool library : {false, true}) {
@@ -55,7 +78,7 @@ void Checker::noteContestedNames(std::vector<ast::CompilationUnit>& units) {
                 }
             if (spaces.size() < 2 && !(namespaced && builtin)) continue;
             for (const Declared& d : decls) {
-                if (d.library != library || d.nameSpace->empty()) continue;
+                if (d.library != library || d.nameSpace->empty() || d.name->find('.') != std::string::npos) continue;  // renamed above
                 contested_[simple].insert(upper(*d.nameSpace));
                 *d.name = *d.nameSpace + "." + *d.name;
             }

@@ -32,7 +32,8 @@ namespace {
 struct Name {
     std::string upper, written, library;
     char kind;   // F function, B function block, I interface, P program, N namespace, T type,
-                 // E enumeration value, G global variable, X native function, U not provided
+                 // E enumeration value, G global variable, X native function, U not provided,
+                 // Q qualified_only namespace (selects only as `Q.x`)
     int file;    // index of the embedded source, -1 for X and U
 };
 
@@ -110,7 +111,15 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
     Block block = Block::None;
     int structDepth = 0, parenDepth = 0;
     bool pendingQualified = false, qualified = false;  // enumeration values of a qualified_only TYPE are not names of their own
-    auto add = [&](const std::string& w, char kind) { out.push_back({upperOf(w), w, library, kind, file}); };
+    // The names inside a qualified_only NAMESPACE (CODESYS' "QualifiedOnly"
+    // libraries, such as CAA Types' CAA) are reached only through the
+    // namespace, so only its name selects the file, as kind Q (selected only
+    // where the project writes `CAA.x`): a project's own COUNT or HANDLE must
+    // not pull in CAA.COUNT (decision 0323).
+    int namespaceDepth = 0, qualifiedNamespaceDepth = 0;  // 0: not inside a qualified_only namespace
+    auto add = [&](const std::string& w, char kind) {
+        if (qualifiedNamespaceDepth == 0) out.push_back({upperOf(w), w, library, kind, file});
+    };
     auto at = [&](size_t k) -> const Token* { return k < tk.size() ? &tk[k] : nullptr; };
     auto isChar = [&](size_t k, char c) { const Token* t = at(k); return t && !t->word && t->text[0] == c; };
     for (size_t k = 0; k < tk.size(); ++k) {
@@ -127,6 +136,11 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
             continue;
         }
         const std::string u = upperOf(t.text);
+        if (u == "END_NAMESPACE") {
+            if (namespaceDepth == qualifiedNamespaceDepth) qualifiedNamespaceDepth = 0;
+            if (namespaceDepth > 0) --namespaceDepth;
+            continue;
+        }
         if (u == "END_TYPE" || u == "END_VAR") {
             block = Block::None;
             continue;
@@ -142,7 +156,13 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
                         upperOf(at(j)->text) == "INTERNAL"))
                     ++j;
                 if (at(j) && at(j)->word) name = at(j)->text;
-                add(name, u == "FUNCTION_BLOCK" ? 'B' : u == "FUNCTION" ? 'F' : u == "INTERFACE" ? 'I' : u == "PROGRAM" ? 'P' : 'N');
+                const bool qualifiedNamespace = u == "NAMESPACE" && pendingQualified;
+                add(name, u == "FUNCTION_BLOCK" ? 'B' : u == "FUNCTION" ? 'F' : u == "INTERFACE" ? 'I' : u == "PROGRAM" ? 'P' : qualifiedNamespace ? 'Q' : 'N');
+                if (u == "NAMESPACE") {
+                    ++namespaceDepth;
+                    if (pendingQualified && qualifiedNamespaceDepth == 0) qualifiedNamespaceDepth = namespaceDepth;
+                    pendingQualified = false;
+                }
                 k = j;
             }
             continue;

@@ -182,6 +182,23 @@ struct TaskIndexNode final : exec::Expr {
     int64_t i(Ctx& c) override { return c.m->handler ? c.m->handler->currentTaskIndex() : 0; }
 };
 
+// F_CheckMemoryArea(pData, nSize): E_TcMemoryArea Dynamic (2) for a block of
+// the __NEW heap, Static (1) for the project's other memory (its frames
+// included: strun does not tell them apart), Unknown (0) otherwise, for a
+// null address, or for a size of 0.
+struct MemoryAreaNode final : exec::Expr {
+    exec::Expr* data;
+    exec::Expr* size;
+    MemoryAreaNode(exec::Expr* d, exec::Expr* s) : data(d), size(s) {}
+    int64_t i(Ctx& c) override {
+        const auto* p = reinterpret_cast<const uint8_t*>(static_cast<intptr_t>(data->i(c)));
+        const auto n = static_cast<size_t>(static_cast<uint32_t>(size->i(c)));
+        if (!p || n == 0) return 0;
+        if (c.m->memory.isDynamic(p, n)) return 2;
+        return c.m->memory.contains(p, n) ? 1 : 0;
+    }
+};
+
 }  // namespace
 
 void registerTc2SystemNatives(Checker& ck) {
@@ -191,6 +208,14 @@ void registerTc2SystemNatives(Checker& ck) {
         std::vector<Checked> a;
         if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);
         return makeResult(ck, ck.pool().make<TaskIndexNode>(), ck.types().elementary(TK::Byte), call, a, false);
+    });
+    ck.addBuiltin("F_STRUN_MEMORYAREA", [](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (!bindFixed(ck, call, {{"PDATA"}, {"NSIZE"}}, a)) return ck.bad(call.loc);
+        Checked address = ck.coerce(a[0], ck.types().elementary(TK::ULInt), a[0].loc, call.name.c_str());
+        Checked size = ck.coerce(a[1], ck.types().elementary(TK::UDInt), a[1].loc, call.name.c_str());
+        if (!address.ok || !size.ok) return ck.bad(call.loc);
+        return makeResult(ck, ck.pool().make<MemoryAreaNode>(address.node, size.node), ck.types().elementary(TK::UDInt), call, a, false);
     });
     addAdsLog(ck, "ADSLOGSTR", LogArg::String);
     addAdsLog(ck, "ADSLOGDINT", LogArg::Dint);

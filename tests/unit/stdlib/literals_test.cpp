@@ -23,10 +23,13 @@ TEST_CASE("integer literals: decimal and based forms", "[literals]") {
     CHECK(parseIntegerLiteral("007").value() == 7);
     CHECK(parseIntegerLiteral("10#0").value() == 0);  // CODESYS/TwinCAT decimal base written out
     CHECK(parseIntegerLiteral("10#1_234").value() == 1234);
+    // Several underscores between digits, as TwinCAT accepts (decision 0326).
+    CHECK(parseIntegerLiteral("1__0").value() == 10);
+    CHECK(parseIntegerLiteral("16#7f_ff__ff").value() == 0x7fffff);
 }
 
 TEST_CASE("integer literals: errors", "[literals]") {
-    for (const char* bad : {"", "_1", "1_", "1__0", "16#", "16#_F", "16#F_", "16#G", "8#8", "2#102",
+    for (const char* bad : {"", "_1", "1_", "1__", "16#", "16#_F", "16#F_", "16#F__", "16#G", "8#8", "2#102",
                             "11#5", "#5", "1a", "12 ", "-1", "+1", "1.0"}) {
         INFO(bad);
         const Result<uint64_t> parsed = parseIntegerLiteral(bad);
@@ -36,7 +39,7 @@ TEST_CASE("integer literals: errors", "[literals]") {
     CHECK_FALSE(parseIntegerLiteral("18446744073709551616").ok());  // 2^64
     CHECK_FALSE(parseIntegerLiteral("16#1_0000_0000_0000_0000").ok());
     CHECK(parseIntegerLiteral("18446744073709551616").error().find("too large") != std::string::npos);
-    CHECK(parseIntegerLiteral("1__0").error().find("underscore") != std::string::npos);
+    CHECK(parseIntegerLiteral("1_").error().find("underscore") != std::string::npos);
     CHECK(parseIntegerLiteral("8#8").error().find("invalid digit") != std::string::npos);
 }
 
@@ -82,11 +85,12 @@ TEST_CASE("real literals", "[literals]") {
 }
 
 TEST_CASE("real literals: errors", "[literals]") {
-    for (const char* bad : {"", "1.", ".5", "1e", "1e+", "1.5x", "1__0.0", "1.0_", "e5", "-", "1,5",
+    for (const char* bad : {"", "1.", ".5", "1e", "1e+", "1.5x", "1__.0", "1.0_", "e5", "-", "1,5",
                             "inf", "nan", "1.0 "}) {
         INFO(bad);
         CHECK_FALSE(parseRealLiteral(bad).ok());
     }
+    CHECK(parseRealLiteral("1__0.0").value() == 10.0);  // several underscores between digits (decision 0326)
     CHECK_FALSE(parseRealLiteral("1E400").ok());
     CHECK(parseRealLiteral("1E400").error().find("range") != std::string::npos);
     CHECK_FALSE(parseRealLiteral("-1.0E309").ok());
