@@ -444,6 +444,13 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
                 if (it != pous_.end() && it->second->kind == ast::PouKind::FunctionBlock)
                     return spec->elem->genericArgs.empty() ? resolveNamedType(spec->elem->name, spec->loc)
                                                            : specialisedInstanceType(*spec->elem);
+                // A name that is no type at all (`ARRAY[..] OF UAHADataValue(ValueSize := n)`
+                // with a library strun lacks): an unknown block with FB_init
+                // arguments, not an enumeration on it; the unknown type is the
+                // one error (decision 0330).
+                const std::string key = scopedKey(upper(spec->elem->name));
+                if (!types().byName(upper(spec->elem->name)) && !typeDecls_.count(key) && it == pous_.end())
+                    return resolveNamedType(spec->elem->name, spec->elem->loc);
             }
             // Inline enumeration in a declaration: an anonymous enum type.
             static int counter = 0;
