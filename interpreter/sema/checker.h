@@ -92,6 +92,7 @@ public:
     // Fixes the type of an untyped literal (ANY_INT -> DINT/LINT, ANY_REAL -> LREAL).
     Checked settle(Checked e);
     Checked constInt(int64_t v, const Type* t, const ast::Loc& loc);
+    Checked constantString(std::vector<uint8_t> bytes, size_t len, bool wide, const ast::Loc& loc);
     Checked constReal(double v, const Type* t, const ast::Loc& loc);
     Checked bad(const ast::Loc& loc) { Checked c; c.loc = loc; return c; }
     exec::Site site(const ast::Loc& loc);

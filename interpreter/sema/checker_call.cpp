@@ -257,6 +257,21 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
                 }
             }
         }
+        if (key == "__POUNAME") {
+            // The name of the POU the call is written in (CODESYS, TwinCAT 4026):
+            // `FB.Method` in a method, `FB.Prop.Get` in an accessor, the list's
+            // name in a global list's declarations (decision 0332).
+            if (!e.args.empty()) {
+                error(diag::E0301, e.loc, "__POUNAME takes no arguments");
+                return bad(e.loc);
+            }
+            std::string name = declaringList_;
+            if (pou_ && pou_->property)
+                name = pou_->owner->name + "." + pou_->property->name + (pou_->isSetter ? ".Set" : ".Get");
+            else if (pou_)
+                name = pou_->owner ? pou_->owner->name + "." + pou_->name : pou_->name;
+            return constantString(std::vector<uint8_t>(name.begin(), name.end()), name.size(), false, e.loc);
+        }
         if (key == "ADR" || key == "REF") {
             if (e.args.size() != 1 || !e.args[0].value) {
                 error(diag::E0301, e.loc, fmt::format("{} takes one variable", key));

@@ -46,6 +46,20 @@ TK naturalIntKind(const Checked& c) {
 
 exec::Site Checker::site(const ast::Loc& loc) { return exec::Site{currentPouName_, loc.line, loc.file, loc.col}; }
 
+// A STRING(len) or WSTRING(len) constant of the text's bytes (its code units
+// for a WSTRING), zero-padded to the type's size.
+Checked Checker::constantString(std::vector<uint8_t> bytes, size_t len, bool wide, const ast::Loc& loc) {
+    Checked c;
+    c.ok = true;
+    c.isConst = true;
+    c.loc = loc;
+    c.type = types().string(static_cast<uint32_t>(std::max<size_t>(len, 1)), wide);
+    bytes.resize(c.type->size, 0);
+    c.node = pool().make<exec::ConstBytes>(std::move(bytes));
+    c.node->type = c.type;
+    return c;
+}
+
 Checked Checker::constInt(int64_t v, const Type* t, const ast::Loc& loc) {
     Checked c;
     c.ok = true;
@@ -138,15 +152,7 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
                 std::memcpy(bytes.data(), r.value().data(), len);
             }
             if (len > 65535) return fail(diag::E0007, "string literal longer than 65535 characters");
-            Checked c;
-            c.ok = true;
-            c.isConst = true;
-            c.loc = e.loc;
-            c.type = types().string(static_cast<uint32_t>(std::max<size_t>(len, 1)), wide);
-            bytes.resize(c.type->size, 0);
-            c.node = pool().make<exec::ConstBytes>(std::move(bytes));
-            c.node->type = c.type;
-            return c;
+            return constantString(std::move(bytes), len, wide, e.loc);
         }
         case ast::LitKind::Duration: {
             std::string u = upper(e.text);

@@ -7,14 +7,8 @@
 set -eu
 strun=$1
 src=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-mkdir "$tmp/box" "$tmp/outside"
-echo secret > "$tmp/outside/secret.txt"
-ln -s ../outside "$tmp/box/link"
-ln -s ../outside/secret.txt "$tmp/box/secret.txt"
+. "$src/sandbox_setup.sh"
 "$strun" run --virtual --cycles 3 --dump --files "$tmp/box" "$src/caa_files_symlinks.st" > "$tmp/dump.json"
-fail() { echo "FAIL: $1"; cat "$tmp/dump.json"; exit 1; }
 for v in openDirErr openFileErr sizeErr mkDirErr; do
     grep -q "\"$v\": *5114" "$tmp/dump.json" || fail "$v is not FILE_OPERATION_DENIED"
 done

@@ -7,15 +7,9 @@
 set -eu
 strun=$1
 src=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-mkdir "$tmp/box" "$tmp/outside"
-echo secret > "$tmp/outside/secret.txt"
+. "$src/sandbox_setup.sh"
 echo "inside line" > "$tmp/box/inside.txt"
-ln -s ../outside "$tmp/box/link"
-ln -s ../outside/secret.txt "$tmp/box/secret.txt"
 "$strun" run --virtual --cycles 12 --dump --files "$tmp/box" "$src/files_symlinks.st" > "$tmp/dump.json"
-fail() { echo "FAIL: $1"; cat "$tmp/dump.json"; exit 1; }
 grep -q '"linkDirErr": *1827' "$tmp/dump.json" || fail "a directory link was followed"
 grep -q '"linkFileErr": *1827' "$tmp/dump.json" || fail "a file link was followed"
 grep -q '"linkMkDirErr": *1827' "$tmp/dump.json" || fail "a directory was made through a link"
