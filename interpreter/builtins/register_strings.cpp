@@ -66,15 +66,8 @@ Checked foldedString(Checker& ck, Checked r, const std::vector<Checked>& a, uint
     exec::Ctx scratch;
     scratch.frame = frame.data();
     std::basic_string_view<Ch> text(reinterpret_cast<const Ch*>(r.node->addr(scratch)));
-    const Type* t = ck.types().string(static_cast<uint32_t>(std::max<size_t>(text.size(), 1)), sizeof(Ch) == 2);
-    std::vector<uint8_t> bytes(t->size, 0);
-    std::memcpy(bytes.data(), text.data(), text.size() * sizeof(Ch));
-    auto* node = ck.pool().make<exec::ConstBytes>(std::move(bytes));
-    node->type = t;
-    r.node = node;
-    r.type = t;
-    r.isConst = true;
-    return r;
+    const auto* first = reinterpret_cast<const uint8_t*>(text.data());
+    return ck.constantString(std::vector<uint8_t>(first, first + text.size() * sizeof(Ch)), text.size(), sizeof(Ch) == 2, r.loc);
 }
 
 Checked checkLen(Checker& ck, CallArgs& call) {
