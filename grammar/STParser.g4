@@ -164,11 +164,18 @@ genericArgument
     ;
 
 // After a type name: `INT (0..100)` (subrange), `INT (Red, Green)` (enumeration
-// with a base type), `FB(1, x)` / `R_TRIG()` (CODESYS FB_init arguments).
+// with a base type), `FB(1, x)` / `R_TRIG()` (CODESYS FB_init arguments),
+// `FB[(1), (2)]` (one argument list per element of an ARRAY OF FB).
 typeArguments
     : LPAREN lo=expression DOTDOT hi=expression RPAREN                       # subrangeArgs
     | LPAREN values+=enumValue (COMMA values+=enumValue)* RPAREN             # enumArgs
     | LPAREN args=argList? RPAREN                                            # instanceArgs
+    | LBRACK elements+=elementArgs (COMMA elements+=elementArgs)* RBRACK     # perElementArgs   // `ARRAY[1..2] OF FB_X[(a := 1), (a := 2)]`
+    ;
+
+// The FB_init arguments of one element of an array of blocks (decision 0330).
+elementArgs
+    : LPAREN args=argList? RPAREN
     ;
 
 // The result type of a FUNCTION or METHOD: the forms of typeSpec that fit

@@ -139,6 +139,7 @@ struct TypeSpec {
     std::vector<EnumValue> enumValues; // Enum
     std::vector<VarDecl> fields;       // Struct
     std::vector<Arg> initArgs;         // Named: CODESYS `fb : FB(1, x := 2)` — arguments of FB_init
+    std::vector<std::vector<Arg>> elementInitArgs;  // Named, as an array's element: `ARRAY[1..2] OF FB[(a := 1), (a := 2)]`
     std::vector<ExprPtr> genericArgs;  // Named: `FB_X<6, (2 * c)>` — values of the block's VAR_GENERIC CONSTANTs
     bool isUnion = false;              // Struct written UNION ... END_UNION (CODESYS): members overlap
 };

@@ -194,6 +194,10 @@ TypeSpecPtr AstBuilder::typeSpec(P::TypeSpecContext* c) {
         } else if (auto* ia = exactly<P::InstanceArgsContext>(arguments)) {
             out->name = text(n->name);
             out->initArgs = args(ia->args);
+        } else if (auto* pe = exactly<P::PerElementArgsContext>(arguments)) {
+            out->name = text(n->name);
+            for (auto* element : pe->elements)
+                out->elementInitArgs.push_back(element->args ? args(element->args) : std::vector<Arg>{});
         }
         // `FB_X<4>(a := 1)` arrives as an enumeration on FB_X: the values go with the name.
         if (n->generic) (out->elem ? out->elem->genericArgs : out->genericArgs) = genericArguments(n->generic);

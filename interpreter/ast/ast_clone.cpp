@@ -75,6 +75,10 @@ TypeSpecPtr cloneTypeSpec(const TypeSpec& t) {
     for (const EnumValue& v : t.enumValues) out->enumValues.push_back(EnumValue{v.loc, v.name, cloneExprOrNull(v.value)});
     for (const VarDecl& f : t.fields) out->fields.push_back(cloneVarDecl(f));
     for (const Arg& a : t.initArgs) out->initArgs.push_back(cloneArg(a));
+    for (const auto& element : t.elementInitArgs) {
+        out->elementInitArgs.emplace_back();
+        for (const Arg& a : element) out->elementInitArgs.back().push_back(cloneArg(a));
+    }
     for (const ExprPtr& g : t.genericArgs) out->genericArgs.push_back(cloneExprOrNull(g));
     out->isUnion = t.isUnion;
     return out;

@@ -40,11 +40,42 @@ bool integerInputs(Checker& ck, CallArgs& call, std::initializer_list<Checked*> 
 
 const Type* intResult(Checker& ck) { return ck.types().elementary(TK::Int); }
 
+// Arguments that are STRING/WSTRING CONSTANTs with a known value (decision
+// 0331) read as that value when every argument is a constant, so that the
+// call folds (below); otherwise they stay reads of the variable.
+void constantArguments(std::vector<Checked>& a) {
+    std::vector<Checked> folded = a;
+    for (Checked& v : folded)
+        if (v.var && v.var->constText && v.type == v.var->type && !allConst({v})) {
+            v.node = v.var->constText;
+            v.isConst = true;
+        }
+    if (allConst(folded)) a = std::move(folded);
+}
+
+// A call on constant strings and integers is itself a constant (decision
+// 0331): `cTopic : STRING(100) := CONCAT(CONCAT(cMain, cType), cDevice);` in a
+// VAR_GLOBAL CONSTANT list, as CODESYS and TwinCAT accept it. The node runs
+// once, now, on a scratch frame that holds its result temporary (at `off`);
+// the value becomes a literal of its own length, so assigning it warns only
+// when its text is too long.
+template <class Ch>
+Checked foldedString(Checker& ck, Checked r, const std::vector<Checked>& a, uint32_t off) {
+    if (!r.ok || a.empty() || !allConst(a)) return r;
+    std::vector<uint8_t> frame(off + r.type->size, 0);
+    exec::Ctx scratch;
+    scratch.frame = frame.data();
+    std::basic_string_view<Ch> text(reinterpret_cast<const Ch*>(r.node->addr(scratch)));
+    const auto* first = reinterpret_cast<const uint8_t*>(text.data());
+    return ck.constantString(std::vector<uint8_t>(first, first + text.size() * sizeof(Ch)), text.size(), sizeof(Ch) == 2, r.loc);
+}
+
 Checked checkLen(Checker& ck, CallArgs& call) {
     std::vector<Checked> a;
     if (!bindFixed(ck, call, {{"IN|STR"}}, a)) return ck.bad(call.loc);
     bool wide = false;
     if (!stringInputs(ck, call, {&a[0]}, wide)) return ck.bad(call.loc);
+    constantArguments(a);
     exec::Expr* n = wide ? static_cast<exec::Expr*>(ck.pool().make<LenNode<char16_t>>(a[0].node)) : ck.pool().make<LenNode<char>>(a[0].node);
     return makeResult(ck, n, intResult(ck), call, a);
 }
@@ -54,6 +85,7 @@ Checked checkFind(Checker& ck, CallArgs& call) {
     if (!bindFixed(ck, call, {{"IN1|STR1"}, {"IN2|STR2"}}, a)) return ck.bad(call.loc);
     bool wide = false;
     if (!stringInputs(ck, call, {&a[0], &a[1]}, wide)) return ck.bad(call.loc);
+    constantArguments(a);
     exec::Expr* n = wide ? static_cast<exec::Expr*>(ck.pool().make<FindNode<char16_t>>(a[0].node, a[1].node))
                          : ck.pool().make<FindNode<char>>(a[0].node, a[1].node);
     return makeResult(ck, n, intResult(ck), call, a);
@@ -84,8 +116,11 @@ Checked checkConcat(Checker& ck, CallArgs& call) {
     for (const auto& v : a)
         if (v.type->kind != a[0].type->kind) return argError(ck, v, call.name, fmt::format("the inputs must all be {}", wide ? "WSTRING" : "STRING"));
     const Type* t = stringResultType(ck, wide, total);
+    constantArguments(a);
     exec::Expr* n = wide ? concatNode<char16_t>(ck, a, t) : concatNode<char>(ck, a, t);
-    return makeResult(ck, n, t, call, a);
+    Checked r = makeResult(ck, n, t, call, a);
+    const uint32_t off = wide ? static_cast<ConcatNode<char16_t>*>(n)->off : static_cast<ConcatNode<char>*>(n)->off;
+    return wide ? foldedString<char16_t>(ck, r, a, off) : foldedString<char>(ck, r, a, off);
 }
 
 template <class Ch, StrFn F>
@@ -104,8 +139,12 @@ template <StrFn F>
 Checked finishEdit(Checker& ck, CallArgs& call, bool wide, int64_t maxLen, const std::vector<Checked>& a, exec::Expr* s1,
                    exec::Expr* s2, exec::Expr* l, exec::Expr* p) {
     const Type* t = stringResultType(ck, wide, maxLen);
-    exec::Expr* n = wide ? editNode<char16_t, F>(ck, t, s1, s2, l, p) : editNode<char, F>(ck, t, s1, s2, l, p);
-    return makeResult(ck, n, t, call, a);
+    if (wide) {
+        auto* n = editNode<char16_t, F>(ck, t, s1, s2, l, p);
+        return foldedString<char16_t>(ck, makeResult(ck, n, t, call, a), a, static_cast<StrEditNode<char16_t, F>*>(n)->off);
+    }
+    auto* n = editNode<char, F>(ck, t, s1, s2, l, p);
+    return foldedString<char>(ck, makeResult(ck, n, t, call, a), a, static_cast<StrEditNode<char, F>*>(n)->off);
 }
 
 template <StrFn F>
@@ -114,6 +153,7 @@ Checked checkLeftRight(Checker& ck, CallArgs& call) {
     if (!bindFixed(ck, call, {{"IN|STR"}, {"L|SIZE"}}, a)) return ck.bad(call.loc);
     bool wide = false;
     if (!stringInputs(ck, call, {&a[0]}, wide) || !integerInputs(ck, call, {&a[1]})) return ck.bad(call.loc);
+    constantArguments(a);
     return finishEdit<F>(ck, call, wide, a[0].type->maxLen, a, a[0].node, nullptr, a[1].node, nullptr);
 }
 
@@ -122,6 +162,7 @@ Checked checkMid(Checker& ck, CallArgs& call) {
     if (!bindFixed(ck, call, {{"IN|STR"}, {"L|LEN"}, {"P|POS"}}, a)) return ck.bad(call.loc);
     bool wide = false;
     if (!stringInputs(ck, call, {&a[0]}, wide) || !integerInputs(ck, call, {&a[1], &a[2]})) return ck.bad(call.loc);
+    constantArguments(a);
     return finishEdit<StrFn::Mid>(ck, call, wide, a[0].type->maxLen, a, a[0].node, nullptr, a[1].node, a[2].node);
 }
 
@@ -130,6 +171,7 @@ Checked checkInsert(Checker& ck, CallArgs& call) {
     if (!bindFixed(ck, call, {{"IN1|STR1"}, {"IN2|STR2"}, {"P|POS"}}, a)) return ck.bad(call.loc);
     bool wide = false;
     if (!stringInputs(ck, call, {&a[0], &a[1]}, wide) || !integerInputs(ck, call, {&a[2]})) return ck.bad(call.loc);
+    constantArguments(a);
     int64_t maxLen = int64_t(a[0].type->maxLen) + a[1].type->maxLen;
     return finishEdit<StrFn::Insert>(ck, call, wide, maxLen, a, a[0].node, a[1].node, nullptr, a[2].node);
 }
@@ -139,6 +181,7 @@ Checked checkDelete(Checker& ck, CallArgs& call) {
     if (!bindFixed(ck, call, {{"IN|STR"}, {"L|LEN"}, {"P|POS"}}, a)) return ck.bad(call.loc);
     bool wide = false;
     if (!stringInputs(ck, call, {&a[0]}, wide) || !integerInputs(ck, call, {&a[1], &a[2]})) return ck.bad(call.loc);
+    constantArguments(a);
     return finishEdit<StrFn::Delete>(ck, call, wide, a[0].type->maxLen, a, a[0].node, nullptr, a[1].node, a[2].node);
 }
 
@@ -147,6 +190,7 @@ Checked checkReplace(Checker& ck, CallArgs& call) {
     if (!bindFixed(ck, call, {{"IN1|STR1"}, {"IN2|STR2"}, {"L"}, {"P"}}, a)) return ck.bad(call.loc);
     bool wide = false;
     if (!stringInputs(ck, call, {&a[0], &a[1]}, wide) || !integerInputs(ck, call, {&a[2], &a[3]})) return ck.bad(call.loc);
+    constantArguments(a);
     int64_t maxLen = int64_t(a[0].type->maxLen) + a[1].type->maxLen;
     return finishEdit<StrFn::Replace>(ck, call, wide, maxLen, a, a[0].node, a[1].node, a[2].node, a[3].node);
 }

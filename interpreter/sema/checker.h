@@ -134,6 +134,7 @@ private:
                      std::vector<Field>* instanceFields, bool instOnly = false);
     void declareGlobals();
     void foldConstant(VarSym& v, const ast::VarDecl& decl);
+    void foldStringConstant(VarSym& v, const ast::VarDecl& decl);  // checker_constant_strings.cpp
     VarSym* addGlobal(const ast::VarDecl& decl, size_t nameIndex, const ast::VarBlock& block, uint32_t& listSize);
     bool constIntExpr(const ast::Expr* e, int64_t& out, const char* what);
     bool isAddressInit(const VarSym* v) const;
@@ -312,7 +313,10 @@ private:
     // variables the FB_init arguments on the declaration may name.
     void collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth,
                         PouInfo* enclosing = nullptr, uint8_t* enclosingAddr = nullptr);
+    void collectArrayFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth, PouInfo* enclosing,
+                             uint8_t* enclosingAddr);
     bool holdsFbInit(const Type* t);
+    bool elementArgsAllowed_ = false;  // resolving the element type of an ARRAY (per-element FB_init arguments)
     static constexpr size_t kMaxFbInitCalls = 100000;
     std::map<const Type*, bool> holdsFbInit_;
     bool fbInitLimitReported_ = false;

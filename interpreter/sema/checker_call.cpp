@@ -102,6 +102,10 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
                 continue;
             }
         }
+        // `x =>` with nothing after it leaves the output unconnected (TwinCAT/CODESYS
+        // accept it, even naming the same output twice): it binds nothing, so it
+        // neither counts as the output's binding nor clashes with one (decision 0328).
+        if (a.output && !a.value) continue;
         if (seen.count(param)) {
             ck.error(diag::E0302, a.loc, fmt::format("parameter '{}' given twice", param->name));
             ok = false;

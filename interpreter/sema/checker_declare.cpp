@@ -350,20 +350,36 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
     if (!spec) return nullptr;
     switch (spec->kind) {
         case ast::TypeSpecKind::Named:
+            if (!spec->elementInitArgs.empty() && !elementArgsAllowed_) {
+                error(diag::E0407, spec->loc, fmt::format("'{}[(...), ...]' gives FB_init arguments per element: it needs ARRAY[...] OF before it",
+                                                  spec->name));
+                return nullptr;
+            }
             if (!spec->genericArgs.empty()) return specialisedInstanceType(*spec);
             return resolveNamedType(spec->name, spec->loc);
         case ast::TypeSpecKind::String: {
             int64_t len = 80;
             if (spec->length && !constIntExpr(spec->length.get(), len, "a string length")) len = 80;
-            if (len < 1 || len > 65535) {
-                error(diag::E0407, spec->loc, fmt::format("string length {} outside 1..65535", len));
+            // STRING(0) (TwinCAT: one byte, always empty; Beckhoff's MQTT sample
+            // passes ADR of one as an empty payload) is accepted (decision 0329).
+            if (len < 0 || len > 65535) {
+                error(diag::E0407, spec->loc, fmt::format("string length {} outside 0..65535", len));
                 len = 80;
             }
             return types().string(static_cast<uint32_t>(len), spec->wide);
         }
         case ast::TypeSpecKind::Array: {
+            // `ARRAY[..] OF FB_X[(a := 1), (a := 2)]`: FB_init arguments per element (decision 0330).
+            const bool perElement = spec->elem && !spec->elem->elementInitArgs.empty();
+            elementArgsAllowed_ = perElement;
             const Type* elem = resolveTypeSpec(spec->elem.get(), context);
+            elementArgsAllowed_ = false;
             if (!elem) return nullptr;
+            if (perElement && elem->kind != TK::FunctionBlock) {
+                error(diag::E0407, spec->elem->loc, fmt::format("FB_init arguments per element need an array of function blocks, not of {}",
+                                                        typeName(elem)));
+                return nullptr;
+            }
             std::vector<ArrayDim> dims;
             bool flexible = false;
             // Bytes, counting a zero-size element (an empty STRUCT) as one byte so
@@ -428,6 +444,13 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
                 if (it != pous_.end() && it->second->kind == ast::PouKind::FunctionBlock)
                     return spec->elem->genericArgs.empty() ? resolveNamedType(spec->elem->name, spec->loc)
                                                            : specialisedInstanceType(*spec->elem);
+                // A name that is no type at all (`ARRAY[..] OF UAHADataValue(ValueSize := n)`
+                // with a library strun lacks): an unknown block with FB_init
+                // arguments, not an enumeration on it; the unknown type is the
+                // one error (decision 0330).
+                const std::string key = scopedKey(upper(spec->elem->name));
+                if (!types().byName(upper(spec->elem->name)) && !typeDecls_.count(key) && it == pous_.end())
+                    return resolveNamedType(spec->elem->name, spec->elem->loc);
             }
             // Inline enumeration in a declaration: an anonymous enum type.
             static int counter = 0;
@@ -591,9 +614,10 @@ void Checker::layoutPou(PouInfo* pou) {
                 if (v->storage != Storage::Self || v->byRef) continue;
                 writeDefault(image.data() + v->offset, v->type);
                 if (isAddressInit(v.get())) { pou->addressInits.push_back({v.get(), nullptr, v->decl->init->expr.get()}); continue; }
-                // Only the block's own variables may be initialised at run time (a
-                // method's VAR_INST has no name an assignment could spell).
-                writeVarInitial(image.data() + v->offset, v.get(), owner == pou ? &pou->addressInits : nullptr);
+                // A method's VAR_INST too (TwinCAT collections: `fbView : FB_View :=
+                // (ipList := THIS^.fbList);` in a property's getter): its
+                // assignment is checked in the method's scope (addressInitStmt).
+                writeVarInitial(image.data() + v->offset, v.get(), &pou->addressInits);
             }
         };
         initialise(pou);
@@ -767,6 +791,10 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
 
 // A CONSTANT scalar with a constant initial value is folded into its uses.
 void Checker::foldConstant(VarSym& v, const ast::VarDecl& decl) {
+    if (decl.init->kind == ast::InitKind::Expr && v.type && isStringType(v.type->kind)) {
+        foldStringConstant(v, decl);
+        return;
+    }
     if (decl.init->kind != ast::InitKind::Expr || !(isIntRep(v.type) || isRealRep(v.type))) return;
     Checked c = checkExpr(*decl.init->expr);
     if (!c.ok || !c.isConst) return;

@@ -344,6 +344,13 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
                                                        : Checked::Direct::Abs;
     // A body inlined into a caller (decision 0317): its frame is an area of the caller's.
     const uint32_t offset = v->offset + (d == Checked::Direct::Frame ? frameBias_ : 0);
+    if (d == Checked::Direct::Abs && !v->abs && v->constText) {
+        // A STRING CONSTANT of the list being declared, named in a later
+        // constant's initial value (`cTopic := CONCAT(cMain, cDevice)`): its value (decision 0331).
+        c.isConst = true;
+        c.node = v->constText;
+        return c;
+    }
     if (d == Checked::Direct::Abs && !v->abs) {
         // A global of the list being declared, named in a later declaration's
         // type (`s : STRING(max)` with a plain VAR_GLOBAL max): it has no

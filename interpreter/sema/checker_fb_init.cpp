@@ -6,6 +6,7 @@
 // instances before the instance that contains them (docs/decisions/0079).
 #include <fmt/format.h>
 
+#include "interpreter/ast/ast_clone.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/fb_init_call.h"
 #include "interpreter/sema/instance_search.h"
@@ -31,7 +32,7 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
     if (!t || depth > kMaxNesting || !holdsFbInit(t)) return;
     if (t->kind == TK::Array) {
         if (t->elem && (t->elem->kind == TK::FunctionBlock || t->elem->kind == TK::Struct || t->elem->kind == TK::Array))
-            for (uint64_t k = 0; k < t->elemCount && !fbInitLimitReported_; ++k) collectFbInits(t->elem, addr + k * t->elem->size, nullptr, depth + 1);
+            collectArrayFbInits(t, addr, declSpec, depth, enclosing, enclosingAddr);
         return;
     }
     if (t->kind == TK::Struct) {
@@ -88,6 +89,35 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
     exec::Stmt* run = pool().make<exec::EvalStmt>(c.node, exec::EvalStmt::Rep::Int);
     if (inEnclosing) run = pool().make<exec::WithSelf>(enclosingAddr, run);
     model_.initCalls.push_back(run);
+}
+
+// The elements of an array, with the FB_init arguments written after its
+// element type (decision 0330): `ARRAY[1..2] OF FB_X(a := 1)` gives every
+// element the same arguments, `ARRAY[1..2] OF FB_X[(a := 1), (a := 2)]` one
+// list per element in storage order (row-major for several dimensions).
+// Like those of a single instance, they are checked and run in the scope of
+// the block or program that declares the array.
+void Checker::collectArrayFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth, PouInfo* enclosing,
+                                  uint8_t* enclosingAddr) {
+    const ast::TypeSpec* elemSpec = declSpec && declSpec->kind == ast::TypeSpecKind::Array ? declSpec->elem.get() : nullptr;
+    const auto* perElement = elemSpec && !elemSpec->elementInitArgs.empty() ? &elemSpec->elementInitArgs : nullptr;
+    if (perElement && perElement->size() != t->elemCount) {
+        error(diag::E0402, elemSpec->loc,
+              fmt::format("{} FB_init argument list(s) for an array of {} element(s): write one per element", perElement->size(), t->elemCount));
+        return;
+    }
+    for (uint64_t k = 0; k < t->elemCount && !fbInitLimitReported_; ++k) {
+        ast::TypeSpec one;  // this element's own arguments, as on a single declaration
+        const ast::TypeSpec* spec = elemSpec;
+        if (perElement) {
+            one.kind = ast::TypeSpecKind::Named;
+            one.loc = elemSpec->loc;
+            one.name = elemSpec->name;
+            for (const ast::Arg& a : (*perElement)[k]) one.initArgs.push_back(ast::cloneArg(a));
+            spec = &one;
+        }
+        collectFbInits(t->elem, addr + k * t->elem->size, spec, depth + 1, spec ? enclosing : nullptr, spec ? enclosingAddr : nullptr);
+    }
 }
 
 void Checker::buildFbInitCalls() {

@@ -97,7 +97,13 @@ exec::Stmt* Checker::addressInitStmt(const RuntimeInit& init) {
     st.loc = init.target || !v->decl || !v->decl->init ? init.value->loc : v->decl->init->loc;
     st.target = init.target ? ast::cloneExpr(*init.target) : ast::nameExpr(v->name, v->loc);
     st.expr = ast::cloneExpr(*init.value);
-    return checkStmt(st);
+    // A method's VAR_INST lives in the block's instance but is named only in
+    // the method, whose THIS^ is the same instance: check it there.
+    PouInfo* savedPou = pou_;
+    if (v->owner && pou_ && v->owner != pou_ && v->owner->owner == pou_) pou_ = v->owner;
+    exec::Stmt* out = checkStmt(st);
+    pou_ = savedPou;
+    return out;
 }
 
 }  // namespace strun::sema

@@ -68,6 +68,10 @@ struct VarSym {
     bool hasConstValue = false;
     int64_t constInt = 0;
     double constReal = 0;
+    // A STRING/WSTRING CONSTANT whose initial value is known at compile time:
+    // that value (an exec::ConstBytes of the variable's type). Uses still read
+    // the variable; only the string functions fold over it (decision 0331).
+    exec::Expr* constText = nullptr;
 };
 
 struct PouInfo {

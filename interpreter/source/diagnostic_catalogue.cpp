@@ -195,7 +195,7 @@ const std::vector<CodeInfo> kCatalogue = {
     {"E0407", K::Error, "wrong type declaration",
      "A type is declared in a way ST does not allow: an array whose upper bound is below its lower bound, ARRAY[*] "
      "outside VAR_IN_OUT, a subrange or enumeration on a base type that is not an integer, a string length outside "
-     "1..65535, EXTENDS on a type that is not a structure, an enumeration value without an explicit value after "
+     "0..65535, EXTENDS on a type that is not a structure, an enumeration value without an explicit value after "
      "the largest LINT, values in '<...>' after a block whose VAR_GENERIC CONSTANTs they do not match in number.",
      "VAR a : ARRAY[10..1] OF INT; END_VAR", "VAR a : ARRAY[1..10] OF INT; END_VAR"},
     {"E0408", K::Error, "bad direct address",
