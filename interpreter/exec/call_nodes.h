@@ -522,3 +522,26 @@ struct BindAddress final : Stmt {
 };
 
 }  // namespace strun::exec
+
+namespace strun::exec {
+
+// A function call with EN/ENO (IEC 61131-3 6.6.1.7; Beremiz writes them for
+// LD rungs): EN is evaluated once into a temporary, ENO receives it, and the
+// function runs only when it is TRUE; otherwise the call's value is 0
+// (decision 0333).
+struct EnEnoCall final : Expr {
+    Stmt* storeEn;   // temp := EN
+    Expr* en;        // reads the temp
+    Expr* call;
+    Stmt* storeEno;  // ENO := temp; null without ENO
+    EnEnoCall(Stmt* s, Expr* e, Expr* f, Stmt* o) : storeEn(s), en(e), call(f), storeEno(o) {}
+    bool enabled(Ctx& c) {
+        storeEn->exec(c);
+        if (storeEno) storeEno->exec(c);
+        return en->i(c) != 0;
+    }
+    int64_t i(Ctx& c) override { return enabled(c) ? call->i(c) : 0; }
+    double f(Ctx& c) override { return enabled(c) ? call->f(c) : 0.0; }
+};
+
+}  // namespace strun::exec

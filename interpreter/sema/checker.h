@@ -426,6 +426,10 @@ private:
     // "A.B.F" (upper case) for a name or a chain of members; "" for anything else.
     static std::string writtenPath(const ast::Expr& e);
     Checked inOutBinding(const VarSym* v, const ast::Loc& loc);
+    // EN/ENO on a function call (checker_en_eno.cpp, decision 0333).
+    static bool hasEnEno(const ast::Expr& call);
+    Checked checkEnEnoCall(const ast::Expr& e, bool statement);
+    std::vector<ast::ExprPtr> enEnoCalls_;
     // `A` of `A.B.C`: a local variable named like it makes the chain a member access.
     static const ast::Expr& chainRoot(const ast::Expr& e);
     std::map<std::string, std::pair<const Type*, const Enumerator*>> enumValues_;  // unqualified, unique ones

@@ -206,6 +206,13 @@ bool Checker::isSuiteBuiltinCall(const ast::Expr& callee) {
 
 Checked Checker::checkCall(const ast::Expr& e, bool statement) {
     const ast::Expr& callee = *e.kids[0];
+    // EN/ENO on a FUNCTION (not a block instance, whose EN/ENO would be its own variables).
+    if (hasEnEno(e) && callee.kind == ast::ExprKind::Name) {
+        const VarSym* v = lookupVar(upper(callee.name));  // `ge : BOOL` beside GE(...) still calls GE
+        if (!v || !v->type || (v->type->kind != TK::FunctionBlock && v->type->kind != TK::Pointer && v->type->kind != TK::Reference &&
+                               v->type->kind != TK::Interface))
+            return checkEnEnoCall(e, statement);
+    }
     // Lib.F(...): namespaces are flattened (names are unique in the project), so
     // the call resolves as F(...).
     ast::Expr unqualified;
