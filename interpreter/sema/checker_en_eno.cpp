@@ -7,19 +7,14 @@
 
 #include "interpreter/ast/ast_clone.h"
 #include "interpreter/sema/checker.h"
+#include "stdlib/number_scan.h"
 
 namespace strun::sema {
 
 namespace {
 // Without building an upper-case copy: checkCall asks this of every argument.
-bool named(const std::string& name, std::string_view upperWord) {
-    if (name.size() != upperWord.size()) return false;
-    for (size_t k = 0; k < name.size(); ++k)
-        if ((name[k] & ~0x20) != upperWord[k]) return false;
-    return true;
-}
-bool isEn(const ast::Arg& a) { return !a.output && named(a.name, "EN"); }
-bool isEno(const ast::Arg& a) { return a.output && named(a.name, "ENO"); }
+bool isEn(const ast::Arg& a) { return !a.output && stdlib::equalsIgnoreCase(a.name, "EN"); }
+bool isEno(const ast::Arg& a) { return a.output && stdlib::equalsIgnoreCase(a.name, "ENO"); }
 }  // namespace
 
 bool Checker::hasEnEno(const ast::Expr& call) {
