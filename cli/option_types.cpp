@@ -84,4 +84,9 @@ CLI::Validator readableFileValidator(bool allowStdin) {
         "", "FILE");
 }
 
+int64_t validatedDuration(const std::string& text) {
+    std::string unused;
+    return parseDuration(text, unused).value_or(0);
+}
+
 }  // namespace strun::cli

@@ -15,6 +15,8 @@ namespace strun::cli {
 // An IEC duration (`T#1s500ms`, `TIME#20ms`), a bare one (`150ms`) or a bare
 // `0`. Nanoseconds, or nullopt with `error` set.
 std::optional<int64_t> parseDuration(std::string_view text, std::string& error);
+// The nanoseconds of a text that already passed durationValidator().
+int64_t validatedDuration(const std::string& text);
 
 // Validators (they rewrite the option's text to its trimmed form).
 CLI::Validator durationValidator();       // DURATION, >= 0

@@ -22,6 +22,7 @@
 #include "cli/modbus_options.h"
 #include "cli/run_report.h"
 #include "cli/stimulus_args.h"
+#include "cli/usage_errors.h"
 #include "interpreter/project/stimulus_build.h"
 #include "interpreter/source/closest_name.h"
 #include "interpreter/project/vcd_signals.h"
@@ -43,17 +44,6 @@ namespace strun::cli {
 namespace {
 
 extern "C" void onStopSignal(int) { rt::Scheduler::requestStop(); }
-
-// The text already passed durationValidator().
-int64_t validatedDuration(const std::string& text) {
-    std::string unused;
-    return parseDuration(text, unused).value_or(0);
-}
-
-int usage(const std::string& message) {
-    std::cerr << "strun: " << message << "\n";
-    return kExitUsage;
-}
 
 // The files the run reads: no output may name one of them.
 std::vector<std::string> runInputs(const SourceSet& sources, const std::vector<std::string>& stimulusFiles) {

@@ -12,6 +12,7 @@
 #include "cli/exit_codes.h"
 #include "cli/option_types.h"
 #include "cli/stimulus_args.h"
+#include "cli/usage_errors.h"
 #include "cli/test_parallel.h"
 #include "interpreter/project/stimulus_build.h"
 #include "interpreter/source/project_inputs.h"
@@ -49,17 +50,6 @@ void explainOwnTcUnit(const sema::ProgramModel& model, const SourceSet& sources)
 namespace {
 
 constexpr int64_t kDefaultTimeout = 10'000'000'000LL;  // T#10s (contract)
-
-int usage(const std::string& message) {
-    std::cerr << "strun: " << message << "\n";
-    return kExitUsage;
-}
-
-// The text already passed durationValidator().
-int64_t validatedDuration(const std::string& text) {
-    std::string unused;
-    return parseDuration(text, unused).value_or(0);
-}
 
 // --shard K/N: 1 <= K <= N.
 CLI::Validator shardValidator() {

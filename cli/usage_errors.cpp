@@ -93,4 +93,9 @@ int printHelp(const CLI::App& app, const std::string& topic) {
     return unknownCommand(app, topic);
 }
 
+int usage(const std::string& message) {
+    std::cerr << "strun: " << message << "\n";
+    return kExitUsage;
+}
+
 }  // namespace strun::cli

@@ -1,8 +1,6 @@
 #include "live/modbus_client.h"
 
 #include <modbus/modbus.h>
-#include <sys/resource.h>
-#include <sys/syscall.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -10,14 +8,14 @@
 #include <chrono>
 #include <string>
 
+#include "live/network_thread.h"
+
 namespace strun::live {
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr int64_t kMaxBackoffNs = 5'000'000'000;
-
-void lowerThreadPriority() { setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 10); }
 
 // A request carries at most this many items (the protocol's limits); longer ranges go in several.
 size_t chunkLimit(DeviceTable table, bool write) {

@@ -4,9 +4,7 @@
 #include <modbus/modbus.h>
 #include <netinet/in.h>
 #include <poll.h>
-#include <sys/resource.h>
 #include <sys/socket.h>
-#include <sys/syscall.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -16,6 +14,7 @@
 #include <vector>
 
 #include "live/modbus_map.h"
+#include "live/network_thread.h"
 
 namespace strun::live {
 
@@ -23,11 +22,6 @@ namespace {
 
 using Area = rt::DirectAddress::Area;
 using Clock = std::chrono::steady_clock;
-
-// Network threads yield the processor to the scan: nice +10 for this thread
-// only (Linux applies setpriority to a thread id). A --realtime scan runs
-// under SCHED_FIFO and is ahead of them anyway.
-void lowerThreadPriority() { setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 10); }
 
 uint16_t be16(const uint8_t* p) { return uint16_t((p[0] << 8) | p[1]); }
 

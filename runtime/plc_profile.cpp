@@ -1,7 +1,8 @@
 #include "runtime/plc_profile.h"
 
-#include <cctype>
 #include <string>
+
+#include "stdlib/number_scan.h"
 
 namespace strun::rt {
 
@@ -182,14 +183,6 @@ constexpr PlcProfile makeXgi() {
 
 constexpr PlcProfile kProfiles[] = {makeGeneric(), makeBaosky(), makeAx3(), makeM340(), makeM241(), makeXgi()};
 
-bool equalsIgnoreCase(std::string_view a, std::string_view b) {
-    if (a.size() != b.size()) return false;
-    for (size_t i = 0; i < a.size(); ++i)
-        if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i])))
-            return false;
-    return true;
-}
-
 }  // namespace
 
 const FixedTask* PlcProfile::fixedTask(std::string_view name) const {
@@ -199,7 +192,7 @@ const FixedTask* PlcProfile::fixedTask(std::string_view name) const {
 
 int PlcProfile::fixedTaskIndex(std::string_view name) const {
     for (size_t i = 0; i < fixedTasks.size(); ++i)
-        if (equalsIgnoreCase(fixedTasks[i].name, name)) return int(i);
+        if (stdlib::equalsIgnoreCase(fixedTasks[i].name, name)) return int(i);
     return -1;
 }
 
@@ -209,7 +202,7 @@ std::span<const PlcProfile> allProfiles() { return kProfiles; }
 
 const PlcProfile* findProfile(std::string_view id) {
     for (const PlcProfile& profile : kProfiles)
-        if (equalsIgnoreCase(profile.id, id)) return &profile;
+        if (stdlib::equalsIgnoreCase(profile.id, id)) return &profile;
     return nullptr;
 }
 
@@ -236,7 +229,7 @@ const PlcProfile* profileWithTaskCycleFunctions() {
 
 std::optional<InputAlias> findInputAlias(const PlcProfile& profile, std::string_view name) {
     for (const InputAlias& alias : profile.inputAliases)
-        if (equalsIgnoreCase(alias.name, name)) return alias;
+        if (stdlib::equalsIgnoreCase(alias.name, name)) return alias;
     return std::nullopt;
 }
 

@@ -1,7 +1,6 @@
 #include "runtime/scheduler.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cstring>
 #include <iostream>
 #include <numeric>
@@ -14,6 +13,7 @@
 #include "runtime/realtime.h"
 #include "runtime/system_area.h"
 #include "runtime/time_event.h"
+#include "stdlib/number_scan.h"
 
 namespace strun::rt {
 
@@ -28,12 +28,6 @@ constexpr PlcTime kMaxIdleSleep = 20 * kMillisecond;
 // SCHED_FIFO priorities for --realtime: the timer must preempt the PLC thread.
 constexpr int kPlcThreadPriority = 80;
 constexpr int kTimerThreadPriority = 90;
-
-bool equalsIgnoreCase(std::string_view a, std::string_view b) {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-           });
-}
 
 // Start-up order among tasks of equal priority released at the same moment
 // (seed 000, 4.6.1.5): event-like tasks, then cyclic ones by shorter period,
@@ -71,7 +65,7 @@ const char* plcStateName(PlcState state) {
 }
 
 bool Scheduler::hasTask(const std::vector<TaskSpec>& tasks, std::string_view name) {
-    return std::any_of(tasks.begin(), tasks.end(), [&](const TaskSpec& t) { return equalsIgnoreCase(t.name, name); });
+    return std::any_of(tasks.begin(), tasks.end(), [&](const TaskSpec& t) { return stdlib::equalsIgnoreCase(t.name, name); });
 }
 
 Scheduler::Scheduler(Machine& machine, std::vector<TaskSpec> tasks, std::vector<TaskBody*> bodies, RunOptions options)
@@ -108,7 +102,7 @@ Scheduler::Scheduler(Machine& machine, std::vector<TaskSpec> tasks, std::vector<
         if (tasks_.empty()) throw std::invalid_argument("--cycles: the project has no task");
         const std::string& name = options_.cyclesTask.empty() ? tasks_.front().spec.name : options_.cyclesTask;
         for (TaskRun& run : tasks_)
-            if (equalsIgnoreCase(run.spec.name, name)) {
+            if (stdlib::equalsIgnoreCase(run.spec.name, name)) {
                 cyclesTask_ = &run;
                 break;
             }

@@ -8,17 +8,13 @@
 #include <fmt/format.h>
 
 #include "grammar/STLexer.h"
+#include "stdlib/number_scan.h"
 
 namespace strun::ast {
 
 using L = strun_grammar::STLexer;
 
 namespace {
-
-std::string upper(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char ch) { return std::toupper(ch); });
-    return s;
-}
 
 StmtPtr makeStmt(StmtKind kind, const Loc& at) {
     auto s = std::make_unique<Stmt>();
@@ -201,7 +197,7 @@ StmtPtr AstBuilder::exprStmt(P::ExprStmtContext* c) {
         kind = StmtKind::TryAssign;
     } else if (c->setOperator != nullptr) {
         // `x S= y` lexes as x, S, =, y: the word before '=' names the operator.
-        const std::string op = upper(text(c->setOperator));
+        const std::string op = stdlib::upperAscii(text(c->setOperator));
         if (op == "S") kind = StmtKind::SetAssign;
         else if (op == "R") kind = StmtKind::ResetAssign;
         else if (op == "REF") kind = StmtKind::RefAssign;

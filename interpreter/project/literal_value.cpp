@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "stdlib/literals.h"
+#include "stdlib/number_scan.h"
 #include "stdlib/time_literals.h"
 
 namespace strun::project {
@@ -14,9 +15,6 @@ using sema::TK;
 using sema::Type;
 
 namespace {
-
-// One case folding for the whole checker (sema/types.h).
-std::string upper(std::string_view s) { return sema::upper(std::string(s)); }
 
 // Drops a type prefix (`INT#`, `Color#`) but not a base (`16#`).
 std::string_view withoutTypePrefix(std::string_view text) {
@@ -105,9 +103,9 @@ bool encodeString(const Type* t, std::string_view text, std::vector<uint8_t>& by
 }
 
 bool encodeEnum(const Type* t, std::string_view text, std::vector<uint8_t>& bytes, std::string& error) {
-    std::string name = upper(withoutTypePrefix(text));
+    std::string name = stdlib::upperAscii(withoutTypePrefix(text));
     for (const auto& e : t->enumerators)
-        if (upper(e.name) == name) {
+        if (stdlib::upperAscii(e.name) == name) {
             putInt(bytes, t->size, uint64_t(e.value));
             return true;
         }
@@ -151,7 +149,7 @@ bool encodeLiteral(const Type* t, std::string_view rawText, std::vector<uint8_t>
     if (text.empty()) return error = "no value given", false;
     switch (t->kind) {
         case TK::Bool: {
-            std::string v = upper(withoutTypePrefix(text));
+            std::string v = stdlib::upperAscii(withoutTypePrefix(text));
             if (v == "TRUE" || v == "1") bytes[0] = 1;
             else if (v != "FALSE" && v != "0") return error = "'" + std::string(text) + "' is not a BOOL (TRUE, FALSE, 1, 0)", false;
             return true;

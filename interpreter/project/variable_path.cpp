@@ -4,6 +4,7 @@
 
 #include "interpreter/source/closest_name.h"
 #include "stdlib/literals.h"
+#include "stdlib/number_scan.h"
 
 namespace strun::project {
 
@@ -12,15 +13,11 @@ using sema::Type;
 
 namespace {
 
-
-// One case folding for the whole checker (sema/types.h).
-std::string upper(std::string_view s) { return sema::upper(std::string(s)); }
-
 // "; did you mean 'X'?" for a mistyped name among `names` (any case, as ST), or "".
 std::string didYouMean(const std::string& typed, const std::vector<std::string>& names) {
     std::vector<std::string> keys;
-    for (const auto& n : names) keys.push_back(upper(n));
-    const std::string best = closestName(upper(typed), keys);
+    for (const auto& n : names) keys.push_back(stdlib::upperAscii(n));
+    const std::string best = closestName(stdlib::upperAscii(typed), keys);
     for (size_t i = 0; i < keys.size(); ++i)
         if (!best.empty() && keys[i] == best) return "; did you mean '" + names[i] + "'?";
     return {};
@@ -130,7 +127,7 @@ bool descend(VariableRef& ref, const std::vector<Step>& steps, size_t from, std:
             error = "'" + ref.path + "' has no members ('" + step.name + "')";
             return false;
         }
-        const sema::Field* field = t->findField(upper(step.name));
+        const sema::Field* field = t->findField(stdlib::upperAscii(step.name));
         if (!field) {
             std::vector<std::string> names;
             for (const auto& f : t->fields) names.push_back(f.name);
@@ -138,7 +135,7 @@ bool descend(VariableRef& ref, const std::vector<Step>& steps, size_t from, std:
             return false;
         }
         if (t->kind == TK::FunctionBlock)
-            if (const sema::VarSym* v = memberVar(t, upper(step.name)); v && v->constant) ref.constant = true;
+            if (const sema::VarSym* v = memberVar(t, stdlib::upperAscii(step.name)); v && v->constant) ref.constant = true;
         ref.addr += field->offset;
         ref.type = field->type;
         ref.path += "." + field->name;
@@ -159,14 +156,14 @@ uint8_t* programVarAddress(const sema::ProgramInstance& inst, const sema::VarSym
 std::optional<VariableRef> resolveVariablePath(const sema::ProgramModel& model, std::string_view path, std::string& error) {
     std::vector<Step> steps;
     if (!splitPath(path, steps, error)) return std::nullopt;
-    std::string first = upper(steps[0].name);
+    std::string first = stdlib::upperAscii(steps[0].name);
     for (const auto& inst : model.programs) {
-        if (upper(inst.name) != first) continue;
+        if (stdlib::upperAscii(inst.name) != first) continue;
         if (steps.size() < 2 || steps[1].name.empty()) {
             error = "'" + std::string(path) + "' names the program instance '" + inst.name + "', not one of its variables";
             return std::nullopt;
         }
-        auto it = inst.pou->vars.find(upper(steps[1].name));
+        auto it = inst.pou->vars.find(stdlib::upperAscii(steps[1].name));
         const sema::VarSym* v = it == inst.pou->vars.end() ? nullptr : it->second;
         if (!v || v->section == ast::VarSection::Temp || v->byRef || !programVarAddress(inst, *v)) {
             std::vector<std::string> names;
@@ -181,11 +178,11 @@ std::optional<VariableRef> resolveVariablePath(const sema::ProgramModel& model, 
     }
     // A global, by its name (skip 0) or after a global list's name (skip 1).
     for (size_t skip = 0; skip < 2 && skip < steps.size() && !steps[skip].name.empty(); ++skip) {
-        std::string name = upper(steps[skip].name);
+        std::string name = stdlib::upperAscii(steps[skip].name);
         for (const sema::VarSym* g : model.globals) {
-            if (upper(g->name) != name || g->byRef || !g->abs) continue;
+            if (stdlib::upperAscii(g->name) != name || g->byRef || !g->abs) continue;
             // A name two global lists declare needs its list: GVL_A.x (decision 0096).
-            if (g->sharedName && (skip == 0 || upper(g->listName) != upper(steps[0].name))) continue;
+            if (g->sharedName && (skip == 0 || stdlib::upperAscii(g->listName) != stdlib::upperAscii(steps[0].name))) continue;
             VariableRef ref{g->globalKey(), g->type, g->abs, g->bit, g->constant, nullptr};
             if (!descend(ref, steps, skip + 1, error)) return std::nullopt;
             return ref;

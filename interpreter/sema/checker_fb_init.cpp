@@ -14,7 +14,7 @@
 namespace strun::sema {
 
 namespace {
-constexpr int kMaxNesting = 64;  // instances inside instances: far beyond real programs
+constexpr int kMaxFbInitNesting = 64;  // instances inside instances: far beyond real programs
 }
 
 // Whether a value of type `t` holds any instance that needs start-up code (an
@@ -29,7 +29,7 @@ bool Checker::holdsFbInit(const Type* t) {
 
 void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth, PouInfo* enclosing,
                              uint8_t* enclosingAddr) {
-    if (!t || depth > kMaxNesting || !holdsFbInit(t)) return;
+    if (!t || depth > kMaxFbInitNesting || !holdsFbInit(t)) return;
     if (t->kind == TK::Array) {
         if (t->elem && (t->elem->kind == TK::FunctionBlock || t->elem->kind == TK::Struct || t->elem->kind == TK::Array))
             collectArrayFbInits(t, addr, declSpec, depth, enclosing, enclosingAddr);
@@ -48,7 +48,7 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
                 collectFbInits(v->type, addr + v->offset, v->decl ? v->decl->type.get() : nullptr, depth + 1, fb, addr);
     // Run-time initialisers of this instance (its base blocks' first, then its own), before its FB_init.
     std::vector<PouInfo*> chain;
-    for (PouInfo* p = fb; p && chain.size() <= static_cast<size_t>(kMaxNesting); p = p->parent) chain.insert(chain.begin(), p);
+    for (PouInfo* p = fb; p && chain.size() <= static_cast<size_t>(kMaxFbInitNesting); p = p->parent) chain.insert(chain.begin(), p);
     for (PouInfo* p : chain) {
         if (p->addressInits.empty()) continue;
         if (!p->addressInitCode) {

@@ -13,7 +13,7 @@
 namespace strun::sema {
 
 namespace {
-constexpr int kMaxNesting = 64;            // instances inside instances, as for FB_init at start-up
+constexpr int kMaxHeapInitNesting = 64;            // instances inside instances, as for FB_init at start-up
 constexpr size_t kMaxInitStmts = 10000;    // start-up statements of one __NEW instance
 }  // namespace
 
@@ -22,7 +22,7 @@ constexpr size_t kMaxInitStmts = 10000;    // start-up statements of one __NEW i
 // address known only at run time. Embedded instances first, then the
 // instance's run-time initialisers (base blocks' first), then its FB_init.
 void Checker::heapInitStmts(const Type* t, exec::Expr* place, const ast::TypeSpec* declSpec, int depth, std::vector<exec::Stmt*>& out) {
-    if (!t || depth > kMaxNesting || !holdsFbInit(t) || out.size() > kMaxInitStmts) return;
+    if (!t || depth > kMaxHeapInitNesting || !holdsFbInit(t) || out.size() > kMaxInitStmts) return;
     auto at = [&](uint64_t offset, const Type* type) {
         auto* p = pool().make<exec::OffsetPlace>(place, static_cast<uint32_t>(offset));
         p->type = type;
@@ -46,7 +46,7 @@ void Checker::heapInitStmts(const Type* t, exec::Expr* place, const ast::TypeSpe
             if (v->storage == Storage::Self && !v->byRef)
                 heapInitStmts(v->type, at(v->offset, v->type), v->decl ? v->decl->type.get() : nullptr, depth + 1, out);
     std::vector<PouInfo*> chain;
-    for (PouInfo* p = fb; p && chain.size() <= static_cast<size_t>(kMaxNesting); p = p->parent) chain.insert(chain.begin(), p);
+    for (PouInfo* p = fb; p && chain.size() <= static_cast<size_t>(kMaxHeapInitNesting); p = p->parent) chain.insert(chain.begin(), p);
     for (PouInfo* p : chain) {
         if (p->addressInits.empty()) continue;
         // Built here, not shared with start-up's cached block: its temporaries

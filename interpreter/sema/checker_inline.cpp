@@ -17,7 +17,7 @@ constexpr uint32_t kMaxInlineFrame = 256;           // bytes of an inlined FUNCT
 constexpr uint32_t kMaxInlineBytesPerCaller = 16384;  // a caller's frame grows by at most this much
 constexpr size_t kMaxInlinedCalls = 20000;          // in a project: bounds the extra checking and nodes
 
-uint32_t alignUp(uint32_t v, uint32_t a) { return (v + a - 1) / a * a; }
+uint32_t alignInlineBase(uint32_t v, uint32_t a) { return (v + a - 1) / a * a; }
 
 // Writes a constant argument into the call's frame image, as bindArgs would
 // store it; false for the other kinds of argument.
@@ -89,7 +89,7 @@ void Checker::inlineLeafCalls() {
         exec::PouCode* caller = site.caller->code;
         if (!fn->inlinable || inlined >= kMaxInlinedCalls) continue;
         const uint32_t area = static_cast<uint32_t>(exec::frameImageSize(fn->code->frameSize));
-        const uint32_t base = alignUp(caller->frameSize, 16);
+        const uint32_t base = alignInlineBase(caller->frameSize, 16);
         if (base + area - caller->initSize > kMaxInlineBytesPerCaller) continue;
         // The callee's body once more, as if it were being checked for the
         // first time, with its frame at `base` and new temporaries above it.
@@ -125,7 +125,7 @@ void Checker::inlineLeafCalls() {
         } else {
             site.fbCall->inlined = in;  // its inputs are stored into the instance, not the frame
         }
-        caller->frameSize = alignUp(frameTop_, 16);
+        caller->frameSize = alignInlineBase(frameTop_, 16);
         model_.maxFrameSize = std::max(model_.maxFrameSize, caller->frameSize);
         ++inlined;
     }

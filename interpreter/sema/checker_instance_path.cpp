@@ -16,7 +16,7 @@ namespace strun::sema {
 
 namespace {
 
-constexpr int kMaxNesting = 64;                   // as for FB_init
+constexpr int kMaxInstancePathNesting = 64;                   // as for FB_init
 constexpr uint64_t kMaxPathWrites = 100000;       // instance paths per project (docs/limits.md)
 constexpr const char* kProjectName = "strun";     // _AppInfo.ProjectName (stdlib/libraries/Tc2_System/system_info.st)
 
@@ -47,7 +47,7 @@ bool Checker::holdsInstancePath(const Type* t) {
 }
 
 void Checker::writeInstancePaths(const Type* t, uint8_t* addr, const std::string& path, int depth) {
-    if (!t || depth > kMaxNesting || instancePathWrites_ >= kMaxPathWrites || !holdsInstancePath(t)) return;
+    if (!t || depth > kMaxInstancePathNesting || instancePathWrites_ >= kMaxPathWrites || !holdsInstancePath(t)) return;
     if (t->kind == TK::Array) {
         for (uint64_t k = 0; k < t->elemCount && instancePathWrites_ < kMaxPathWrites; ++k)
             writeInstancePaths(t->elem, addr + k * t->elem->size, path + subscripts(t, k), depth + 1);

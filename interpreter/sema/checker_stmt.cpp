@@ -11,7 +11,7 @@
 namespace strun::sema {
 
 namespace {
-uint32_t alignUp(uint32_t v, uint32_t a) { return a <= 1 ? v : (v + a - 1) / a * a; }
+uint32_t alignFrameTop(uint32_t v, uint32_t a) { return a <= 1 ? v : (v + a - 1) / a * a; }
 
 template <class T, bool FRAME>
 exec::Stmt* makeLocal(exec::NodePool& pool, uint32_t off, exec::Expr* v) {
@@ -49,7 +49,7 @@ exec::Stmt* assignBitTyped(exec::NodePool& pool, exec::Expr* place, exec::Expr* 
 }  // namespace
 
 uint32_t Checker::allocTemp(uint32_t size) {
-    frameTop_ = alignUp(frameTop_, 8);
+    frameTop_ = alignFrameTop(frameTop_, 8);
     uint32_t off = frameTop_;
     frameTop_ += std::max<uint32_t>(size, 1);
     return off;
@@ -547,7 +547,7 @@ void Checker::checkBody(PouInfo* pou) {
     if (pou->kind == ast::PouKind::Function && pou->result && !assignedResult_ && !libraryFiles_.count(pou->ast->loc.file))
         log_.warning(diag::W0004, pou->ast->loc, fmt::format("function '{}' never assigns its result", pou->name));
     if (!libraryFiles_.count(pou->ast->loc.file)) warnReadBeforeWrite(*pou, log_);
-    uint32_t size = alignUp(frameTop_, 16);
+    uint32_t size = alignFrameTop(frameTop_, 16);
     pou->code->frameSize = size;
     pou->code->initSize = size;
     pou->bodyName = currentPouName_;

@@ -1,16 +1,11 @@
 // Lookup and the two page formats of the catalogue.
 #include "interpreter/source/diagnostic_codes.h"
 
+#include "stdlib/number_scan.h"
+
 namespace strun::diagnostics {
 
 namespace {
-
-std::string upper(std::string_view s) {
-    std::string out(s);
-    for (char& c : out)
-        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-    return out;
-}
 
 const char* kindWord(Kind k) {
     switch (k) {
@@ -33,7 +28,7 @@ std::string indent(std::string_view text, const char* prefix) {
 }  // namespace
 
 const CodeInfo* find(std::string_view code) {
-    const std::string wanted = upper(code);
+    const std::string wanted = stdlib::upperAscii(code);
     for (const CodeInfo& info : catalogue())
         if (info.code == wanted) return &info;
     return nullptr;

@@ -17,15 +17,11 @@
 
 #include "interpreter/source/plcopen_graphical.h"
 #include "interpreter/source/plcopen_xml.h"
+#include "stdlib/number_scan.h"
 
 namespace strun::source::plcopen {
 
 namespace {
-
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
 
 enum class Kind { InVar, OutVar, InOutVar, Block, Connector, Continuation, Label, Jump, Return, LeftRail, RightRail, Contact, Coil, ActionBlock };
 
@@ -86,7 +82,7 @@ const std::set<std::string>& standardBlocks() {
 
 // Output types of the standard function blocks, for a function temporary fed by one.
 std::string standardBlockOutputType(const std::string& type, const std::string& pin) {
-    const std::string t = upper(type), p = upper(pin);
+    const std::string t = stdlib::upperAscii(type), p = stdlib::upperAscii(pin);
     if (p == "Q" || p == "Q1" || p == "QU" || p == "QD") return "BOOL";
     if (p == "ET") return t.find("LTIME") != std::string::npos ? "LTIME" : "TIME";
     if (p == "CV") {
@@ -100,7 +96,7 @@ std::string standardBlockOutputType(const std::string& type, const std::string& 
 // The declared type of an expression of a variable block (a name, a member,
 // an element, a literal), as far as it can be told without the checker.
 std::string literalType(const std::string& e) {
-    const std::string u = upper(e);
+    const std::string u = stdlib::upperAscii(e);
     if (u == "TRUE" || u == "FALSE") return "BOOL";
     size_t hash = u.find('#');
     if (hash != std::string::npos) {
@@ -239,7 +235,7 @@ struct Network {
                 for (pugi::xml_node a : children(n, "action")) {
                     const std::string name = child(a, "reference").attribute("name").value();
                     if (name.empty()) continue;
-                    auto [it, added] = actionBlockOf.emplace(upper(name), e.id);
+                    auto [it, added] = actionBlockOf.emplace(stdlib::upperAscii(name), e.id);
                     if (!added && it->second != e.id) {
                         conv.error(a, where() + "action '" + name + "' is used by action blocks " + std::to_string(it->second) + " and " +
                                           std::to_string(e.id) + "; in LD/FBD an action may be used by one action block only");
@@ -269,7 +265,7 @@ struct Network {
                 continue;
             }
             byId[e.id] = static_cast<int>(els.size());
-            if (e.kind == Kind::Connector) connectors[upper(e.text)] = static_cast<int>(els.size());
+            if (e.kind == Kind::Connector) connectors[stdlib::upperAscii(e.text)] = static_cast<int>(els.size());
             els.push_back(std::move(e));
         }
     }
@@ -299,13 +295,13 @@ struct Network {
                             failed = true;
                             continue;
                         }
-                        ++uses[{src, upper(c.param)}];
+                        ++uses[{src, stdlib::upperAscii(c.param)}];
                         parent[root(src)] = root(static_cast<int>(i));
                     }
             };
             check(e.ins);
             check(e.inouts);
-            if (e.kind == Kind::Continuation && !connectors.count(upper(e.text))) {
+            if (e.kind == Kind::Continuation && !connectors.count(stdlib::upperAscii(e.text))) {
                 conv.error(e.node, where() + "continuation '" + e.text + "' has no connector of that name");
                 failed = true;
             }
@@ -340,7 +336,7 @@ struct Network {
     void classify() {
         for (Element& e : els) {
             if (e.kind != Kind::Block) continue;
-            const std::string t = upper(e.text);
+            const std::string t = stdlib::upperAscii(e.text);
             e.fb = !e.instance.empty() || standardBlocks().count(t) || ctx.project->blockOutputs.count(t);
             e.stdFunction = !e.fb && !ctx.project->functionResults.count(t);
         }
@@ -349,11 +345,11 @@ struct Network {
             if (e.kind == Kind::Block && !e.fb) {
                 bool en = false;
                 for (const PinIn& p : e.ins)
-                    if (upper(p.name) == "EN" && !p.conns.empty() && !fromRailOnly(p)) en = true;
+                    if (stdlib::upperAscii(p.name) == "EN" && !p.conns.empty() && !fromRailOnly(p)) en = true;
                 int results = 0;
                 for (const auto& [key, count] : uses)
                     if (key.first == static_cast<int>(i) && key.second != "ENO") {
-                        bool isResult = key.second.empty() || key.second == "OUT" || (e.outs.size() >= 1 && upper(e.outs[0].name) == key.second);
+                        bool isResult = key.second.empty() || key.second == "OUT" || (e.outs.size() >= 1 && stdlib::upperAscii(e.outs[0].name) == key.second);
                         results += isResult ? count : 1000;
                     }
                 e.materialized = en || results > 1;
@@ -392,7 +388,7 @@ struct Network {
         std::vector<PinIn> all = e.ins;
         all.insert(all.end(), e.inouts.begin(), e.inouts.end());
         if (e.kind == Kind::Continuation) {
-            auto it = connectors.find(upper(e.text));
+            auto it = connectors.find(stdlib::upperAscii(e.text));
             if (it != connectors.end()) all.push_back({"", false, "", {{els[it->second].id, ""}}});
         }
         return all;
@@ -471,7 +467,7 @@ struct Network {
                 return e.negated ? negate(v) : v;
             }
             case Kind::Continuation: {
-                auto it = connectors.find(upper(e.text));
+                auto it = connectors.find(stdlib::upperAscii(e.text));
                 if (it == connectors.end()) return "FALSE";
                 bool connected = false;
                 std::string v = inputValue(els[it->second].ins[0], connected);
@@ -510,15 +506,15 @@ struct Network {
     }
 
     bool pinIsResult(const Element& e, const std::string& pin) const {
-        const std::string p = upper(pin);
+        const std::string p = stdlib::upperAscii(pin);
         if (p.empty() || p == "OUT") return true;
-        return !e.outs.empty() && upper(e.outs[0].name) == p && !e.fb;
+        return !e.outs.empty() && stdlib::upperAscii(e.outs[0].name) == p && !e.fb;
     }
 
     std::string enValue(int i, bool& hasEn) {
         hasEn = false;
         for (const PinIn& p : els[i].ins)
-            if (upper(p.name) == "EN") {
+            if (stdlib::upperAscii(p.name) == "EN") {
                 bool connected = false;
                 std::string v = inputValue(p, connected);
                 if (connected) {
@@ -531,10 +527,10 @@ struct Network {
 
     std::string blockOutput(int i, const std::string& pin) {
         Element& e = els[i];
-        const std::string p = upper(pin);
+        const std::string p = stdlib::upperAscii(pin);
         bool negated = false;
         for (const PinOut& o : e.outs)
-            if (upper(o.name) == p || (p.empty() && &o == &e.outs.front())) negated = o.negated;
+            if (stdlib::upperAscii(o.name) == p || (p.empty() && &o == &e.outs.front())) negated = o.negated;
         std::string v;
         if (p == "ENO") {
             bool hasEn = false;
@@ -576,12 +572,12 @@ struct Network {
     // A function block written as an operator or a call (its inputs in XML order).
     std::string callText(int i) {
         Element& e = els[i];
-        const std::string t = upper(e.text);
+        const std::string t = stdlib::upperAscii(e.text);
         std::vector<std::string> args;
         std::vector<std::string> names;
         for (size_t k = 0; k < e.ins.size(); ++k) {
             const PinIn& p = e.ins[k];
-            if (upper(p.name) == "EN") continue;
+            if (stdlib::upperAscii(p.name) == "EN") continue;
             bool connected = false;
             std::string v = argument(i, p, k, connected);
             if (!connected) {
@@ -629,12 +625,12 @@ struct Network {
         if (dot == std::string::npos) return type;
         // inst.OUT of a function block instance
         std::string member = text.substr(dot + 1);
-        auto fb = ctx.project->blockOutputs.find(upper(type));
+        auto fb = ctx.project->blockOutputs.find(stdlib::upperAscii(type));
         if (fb != ctx.project->blockOutputs.end()) {
-            auto o = fb->second.find(upper(member));
+            auto o = fb->second.find(stdlib::upperAscii(member));
             if (o != fb->second.end()) return o->second;
         }
-        if (standardBlocks().count(upper(type))) return standardBlockOutputType(type, member);
+        if (standardBlocks().count(stdlib::upperAscii(type))) return standardBlockOutputType(type, member);
         return "";
     }
 
@@ -649,7 +645,7 @@ struct Network {
             case Kind::Contact:
             case Kind::Coil: return "BOOL";
             case Kind::Continuation: {
-                auto it = connectors.find(upper(e.text));
+                auto it = connectors.find(stdlib::upperAscii(e.text));
                 if (it == connectors.end() || els[it->second].ins[0].conns.empty()) return "";
                 return connectionType(els[it->second].ins[0].conns[0], depth + 1);
             }
@@ -660,11 +656,11 @@ struct Network {
 
     std::string blockType(int i, const std::string& pin, int depth) {
         Element& e = els[i];
-        const std::string t = upper(e.text), p = upper(pin);
+        const std::string t = stdlib::upperAscii(e.text), p = stdlib::upperAscii(pin);
         if (p == "ENO") return "BOOL";
         if (e.fb) {
             std::string type = e.instance.empty() ? e.text : ctx.typeOf(e.instance);
-            auto fb = ctx.project->blockOutputs.find(upper(type));
+            auto fb = ctx.project->blockOutputs.find(stdlib::upperAscii(type));
             if (fb != ctx.project->blockOutputs.end() && fb->second.count(p)) return fb->second.at(p);
             return standardBlockOutputType(type.empty() ? e.text : type, pin);
         }
@@ -682,7 +678,7 @@ struct Network {
         size_t first = (t == "SEL" || t == "MUX" || t == "LIMIT") ? 1 : 0;
         size_t n = 0;
         for (const PinIn& in : e.ins) {
-            if (upper(in.name) == "EN") continue;
+            if (stdlib::upperAscii(in.name) == "EN") continue;
             if (n++ < first || in.conns.empty()) continue;
             std::string type = connectionType(in.conns[0], depth + 1);
             if (!type.empty()) return type;
@@ -835,7 +831,7 @@ struct Network {
             std::string s;
             for (size_t k = 0; k < e.ins.size(); ++k) {
                 const PinIn& p = e.ins[k];
-                if (upper(p.name) == "EN") continue;
+                if (stdlib::upperAscii(p.name) == "EN") continue;
                 bool connected = false;
                 std::string v = argument(i, p, k, connected);
                 if (connected) s += (s.empty() ? "" : ", ") + p.name + " := " + v;
@@ -940,7 +936,7 @@ void translateChartConditions(XmlConversion& conv, const pugi::xml_node& sfc, Po
 }
 
 std::string PouContext::typeOf(const std::string& name) const {
-    const std::string u = upper(name);
+    const std::string u = stdlib::upperAscii(name);
     auto it = variables.find(u);
     if (it != variables.end()) return it->second;
     auto g = project->globals.find(u);

@@ -49,7 +49,7 @@ std::string durationLiteral(std::string text) {
     return text;
 }
 
-struct Reader : XmlConversion {
+struct PlcopenReader : XmlConversion {
     using XmlConversion::XmlConversion;
 
     void written(const pugi::xml_node& n, const std::string& st) {
@@ -434,7 +434,7 @@ bool isPlcOpenProject(const std::string& xml) {
 }
 
 Converted readPlcOpen(const std::string& xml) {
-    Reader r(xml);
+    PlcopenReader r(xml);
     r.run();
     return std::move(r.result);
 }

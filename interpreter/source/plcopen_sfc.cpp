@@ -11,15 +11,11 @@
 #include "interpreter/source/plcopen_graphical.h"
 #include "interpreter/source/plcopen_xml.h"
 #include "interpreter/source/sfc_chart.h"
+#include "stdlib/number_scan.h"
 
 namespace strun::source::plcopen {
 
 namespace {
-
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
 
 using FailAt = std::function<void(const pugi::xml_node&, const std::string&)>;
 
@@ -51,7 +47,7 @@ std::string sfcDurationText(const std::string& d) {
 // after `fail` when the action is wrong.
 bool readAction(XmlConversion& conv, const pugi::xml_node& a, PouContext& ctx, const std::string& owner, SfcChart::Association& as,
                 SfcChart::Action& act, Translation& out, const FailAt& fail) {
-    as.qualifier = upper(a.attribute("qualifier").value());
+    as.qualifier = stdlib::upperAscii(a.attribute("qualifier").value());
     if (as.qualifier.empty()) as.qualifier = "N";
     as.duration = a.attribute("duration").value();
     static const std::set<std::string> known = {"N", "R", "S", "L", "D", "P", "P1", "P0", "SD", "DS", "SL"};
@@ -69,7 +65,7 @@ bool readAction(XmlConversion& conv, const pugi::xml_node& a, PouContext& ctx, c
     if (pugi::xml_node ref = child(a, "reference")) {
         act.name = ref.attribute("name").value();
         act.label = "action '" + act.name + "'";
-        act.isVariable = !ctx.actions.count(upper(act.name));
+        act.isVariable = !ctx.actions.count(stdlib::upperAscii(act.name));
         if (act.isVariable && ctx.typeOf(act.name).empty()) {
             fail(a, "action '" + act.name + "' of " + owner + " is neither an action of '" + ctx.pouName + "' nor a variable");
             return false;
@@ -197,11 +193,11 @@ struct Chart {
             byId[id] = n;
             if (k == "step") {
                 std::string name = n.attribute("name").value();
-                if (name.empty() || stepByName.count(upper(name))) {
+                if (name.empty() || stepByName.count(stdlib::upperAscii(name))) {
                     fail(n, name.empty() ? "a step has no name" : "two steps are named '" + name + "'");
                     continue;
                 }
-                stepByName[upper(name)] = static_cast<int>(steps.size());
+                stepByName[stdlib::upperAscii(name)] = static_cast<int>(steps.size());
                 stepIndex[id] = static_cast<int>(steps.size());
                 steps.push_back(n);
             } else if (k == "transition") {
@@ -261,7 +257,7 @@ struct Chart {
         m.exit = exits[0];
         macroEntries.insert(m.entry);
         // A jump to the macro enters it.
-        const std::string name = upper(m.node.attribute("name").value());
+        const std::string name = stdlib::upperAscii(m.node.attribute("name").value());
         if (!name.empty() && !stepByName.count(name)) stepByName[name] = m.entry;
     }
 
@@ -297,7 +293,7 @@ struct Chart {
             } else if (k == "selectionConvergence" || k == "simultaneousDivergence") {
                 stepsAfter(idOf(r), t, into, depth + 1);
             } else if (k == "jumpStep") {
-                auto s = stepByName.find(upper(r.attribute("targetName").value()));
+                auto s = stepByName.find(stdlib::upperAscii(r.attribute("targetName").value()));
                 if (s == stepByName.end()) fail(r, "jump to step '" + std::string(r.attribute("targetName").value()) + "', which the chart does not have");
                 else into.push_back(s->second);
             } else if (k != "actionBlock") {
@@ -325,7 +321,7 @@ struct Chart {
                     model.actions.push_back(act);
                     continue;
                 }
-                auto [it, added] = byName.emplace(upper(act.name), static_cast<int>(model.actions.size()));
+                auto [it, added] = byName.emplace(stdlib::upperAscii(act.name), static_cast<int>(model.actions.size()));
                 if (added) model.actions.push_back(act);
                 model.actions[static_cast<size_t>(it->second)].uses.push_back(as);
             }
@@ -340,14 +336,14 @@ struct Chart {
         const std::string label = transitionLabel(t);
         if (pugi::xml_node ref = child(cond, "reference")) {
             std::string name = ref.attribute("name").value();
-            auto it = ctx.transitions.find(upper(name));
+            auto it = ctx.transitions.find(stdlib::upperAscii(name));
             if (it != ctx.transitions.end()) {
                 // A named transition: its body (ST assigning the name, or an LD/FBD network writing it) runs first.
                 pugi::xml_node body = firstElement(child(it->second, "body"));
                 const std::string k = body ? localName(body) : "";
-                if (ctx.typeOf(name).empty() && !declaredTransitions.count(upper(name))) {
+                if (ctx.typeOf(name).empty() && !declaredTransitions.count(stdlib::upperAscii(name))) {
                     declare(it->second, name + " : BOOL;", "transition '" + name + "'");
-                    declaredTransitions.insert(upper(name));
+                    declaredTransitions.insert(stdlib::upperAscii(name));
                 }
                 if (k == "ST") {
                     copyStText(conv, body, "transition '" + name + "'", pre);
@@ -383,9 +379,9 @@ struct Chart {
                 fail(in, label + ": an inline " + k + " condition needs a name (<inline name=\"...\">) that its network writes");
                 return;
             }
-            if (ctx.typeOf(name).empty() && !declaredTransitions.count(upper(name))) {
+            if (ctx.typeOf(name).empty() && !declaredTransitions.count(stdlib::upperAscii(name))) {
                 declare(in, name + " : BOOL;", label);
-                declaredTransitions.insert(upper(name));
+                declaredTransitions.insert(stdlib::upperAscii(name));
             }
             Translation net;
             translateNetwork(conv, body, k == "LD", ctx, net);

@@ -18,15 +18,11 @@
 
 #include "interpreter/source/sfc_chart.h"
 #include "interpreter/source/st_assembler.h"
+#include "stdlib/number_scan.h"
 
 namespace strun::source {
 
 namespace {
-
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
 
 struct Token {
     std::string text, up;  // as written; upper case
@@ -79,7 +75,7 @@ std::vector<Token> tokenize(const std::string& s) {
             e = i + 2;
         }
         t.text = s.substr(i, e - i);
-        t.up = upper(t.text);
+        t.up = stdlib::upperAscii(t.text);
         t.end = e;
         out.push_back(std::move(t));
         advance(e);
@@ -226,9 +222,9 @@ struct Reader {
                     while (k < e && at(k).up != "END_TRANSITION") ++k;
                     if (k > cb) t.before.push_back({src.substr(at(cb).begin, at(k - 1).end - at(cb).begin), at(cb).line, at(cb).col, t.label, true});
                     t.expr = name;
-                    if (!declaredNames.count(upper(name))) {
+                    if (!declaredNames.count(stdlib::upperAscii(name))) {
                         tr.declarations.push_back({"    " + std::string(plcopen::kHiddenPragma) + name + " : BOOL;", kw.line, kw.col, t.label, false});
-                        declaredNames.insert(upper(name));
+                        declaredNames.insert(stdlib::upperAscii(name));
                     }
                 } else {
                     fail(at(k), "expected ':=' and the condition, or ':' and a body");
@@ -255,11 +251,11 @@ struct Reader {
         }
         std::map<std::string, int> byName;
         for (auto& [name, as] : uses) {
-            auto [it, added] = byName.emplace(upper(name), static_cast<int>(chart.actions.size()));
+            auto [it, added] = byName.emplace(stdlib::upperAscii(name), static_cast<int>(chart.actions.size()));
             if (added) {
                 SfcChart::Action a;
                 a.name = name;
-                a.isVariable = !actions.count(upper(name));
+                a.isVariable = !actions.count(stdlib::upperAscii(name));
                 a.label = "action '" + name + "'";
                 a.at = chart.steps[static_cast<size_t>(as.step)].at;
                 chart.actions.push_back(a);

@@ -14,7 +14,7 @@ namespace strun::source {
 
 namespace {
 
-struct Reader : XmlConversion {
+struct TwincatReader : XmlConversion {
     using XmlConversion::XmlConversion;
 
     // The text of an element (its CDATA or plain text child), copied with its position.
@@ -154,7 +154,7 @@ struct Reader : XmlConversion {
 }  // namespace
 
 Converted readTwinCat(const std::string& xml) {
-    Reader r(xml);
+    TwincatReader r(xml);
     r.run();
     return std::move(r.result);
 }

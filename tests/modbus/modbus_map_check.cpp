@@ -1,7 +1,6 @@
 // The Modbus address table, the --modbus-client mapping validator, and the
 // server and client threads over a plain image (no scheduler): libmodbus on
 // both sides of a loopback connection.
-#define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
 #include <modbus/modbus.h>

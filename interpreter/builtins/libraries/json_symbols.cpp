@@ -46,17 +46,6 @@ constexpr int64_t kInvalidSize = 0x705;
 constexpr int64_t kInvalidData = 0x706;
 constexpr int64_t kSymbolNotFound = 0x710;
 
-template <typename T>
-T load(const uint8_t* p) {
-    T v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-}
-template <typename T>
-void store(uint8_t* p, T v) {
-    std::memcpy(p, &v, sizeof v);
-}
-
 bool included(const Type* t) {
     return t && t->kind != TK::Pointer && t->kind != TK::Reference && t->kind != TK::Interface && t->kind != TK::FunctionBlock &&
            t->kind != TK::Void;
@@ -85,22 +74,22 @@ void structToJson(const Type* t, const uint8_t* p, Json& out) {
 Json toJson(const Type* t, const uint8_t* p) {
     switch (t->kind) {
         case TK::Bool: return Json(p[0] != 0);
-        case TK::SInt: return Json(load<int8_t>(p));
-        case TK::Int: return Json(load<int16_t>(p));
-        case TK::DInt: return Json(load<int32_t>(p));
-        case TK::LInt: return Json(load<int64_t>(p));
-        case TK::USInt: case TK::Byte: case TK::Char: return Json(load<uint8_t>(p));
-        case TK::UInt: case TK::Word: case TK::WChar: return Json(load<uint16_t>(p));
-        case TK::UDInt: case TK::DWord: return Json(load<uint32_t>(p));
-        case TK::ULInt: case TK::LWord: return Json(load<uint64_t>(p));
+        case TK::SInt: return Json(exec::loadAs<int8_t>(p));
+        case TK::Int: return Json(exec::loadAs<int16_t>(p));
+        case TK::DInt: return Json(exec::loadAs<int32_t>(p));
+        case TK::LInt: return Json(exec::loadAs<int64_t>(p));
+        case TK::USInt: case TK::Byte: case TK::Char: return Json(exec::loadAs<uint8_t>(p));
+        case TK::UInt: case TK::Word: case TK::WChar: return Json(exec::loadAs<uint16_t>(p));
+        case TK::UDInt: case TK::DWord: return Json(exec::loadAs<uint32_t>(p));
+        case TK::ULInt: case TK::LWord: return Json(exec::loadAs<uint64_t>(p));
         case TK::Time: case TK::LTime: case TK::Date: case TK::Tod: case TK::Dt: case TK::LDate: case TK::LTod: case TK::LDt:
-            return t->size == 4 ? Json(load<uint32_t>(p)) : Json(load<int64_t>(p));
+            return t->size == 4 ? Json(exec::loadAs<uint32_t>(p)) : Json(exec::loadAs<int64_t>(p));
         case TK::Real: {
-            const double v = load<float>(p);
+            const double v = exec::loadAs<float>(p);
             return std::isfinite(v) ? Json(v) : Json();
         }
         case TK::LReal: {
-            const double v = load<double>(p);
+            const double v = exec::loadAs<double>(p);
             return std::isfinite(v) ? Json(v) : Json();
         }
         case TK::String:
@@ -108,7 +97,7 @@ Json toJson(const Type* t, const uint8_t* p) {
         case TK::WString: {
             std::u16string s;
             for (uint32_t k = 0; k < t->maxLen; ++k) {
-                const char16_t ch = load<char16_t>(p + 2 * k);
+                const char16_t ch = exec::loadAs<char16_t>(p + 2 * k);
                 if (!ch) break;
                 s.push_back(ch);
             }
@@ -150,9 +139,9 @@ void structFromJson(const Type* t, uint8_t* p, const Json& j) {
 
 template <typename T>
 void storeInteger(uint8_t* p, const Json& j) {
-    if (j.is_number_integer()) store<T>(p, static_cast<T>(j.is_number_unsigned() ? static_cast<int64_t>(j.get<uint64_t>()) : j.get<int64_t>()));
-    else if (j.is_number_float() && std::isfinite(j.get<double>()) && std::fabs(j.get<double>()) < 9.2e18) store<T>(p, static_cast<T>(static_cast<int64_t>(j.get<double>())));
-    else if (j.is_boolean()) store<T>(p, static_cast<T>(j.get<bool>() ? 1 : 0));
+    if (j.is_number_integer()) exec::storeAs<T>(p, static_cast<T>(j.is_number_unsigned() ? static_cast<int64_t>(j.get<uint64_t>()) : j.get<int64_t>()));
+    else if (j.is_number_float() && std::isfinite(j.get<double>()) && std::fabs(j.get<double>()) < 9.2e18) exec::storeAs<T>(p, static_cast<T>(static_cast<int64_t>(j.get<double>())));
+    else if (j.is_boolean()) exec::storeAs<T>(p, static_cast<T>(j.get<bool>() ? 1 : 0));
 }
 
 void fromJson(const Type* t, uint8_t* p, const Json& j) {
@@ -170,12 +159,12 @@ void fromJson(const Type* t, uint8_t* p, const Json& j) {
             else storeInteger<uint64_t>(p, j);
             break;
         case TK::Real:
-            if (j.is_number()) store<float>(p, static_cast<float>(j.get<double>()));
-            else if (j.is_null()) store<float>(p, std::nanf(""));
+            if (j.is_number()) exec::storeAs<float>(p, static_cast<float>(j.get<double>()));
+            else if (j.is_null()) exec::storeAs<float>(p, std::nanf(""));
             break;
         case TK::LReal:
-            if (j.is_number()) store<double>(p, j.get<double>());
-            else if (j.is_null()) store<double>(p, std::nan(""));
+            if (j.is_number()) exec::storeAs<double>(p, j.get<double>());
+            else if (j.is_null()) exec::storeAs<double>(p, std::nan(""));
             break;
         case TK::String:
             if (j.is_string()) {
@@ -192,7 +181,7 @@ void fromJson(const Type* t, uint8_t* p, const Json& j) {
                 const std::u16string& w = wide.value();
                 const size_t n = std::min<size_t>(w.size(), t->maxLen);
                 std::memcpy(p, w.data(), 2 * n);
-                store<char16_t>(p + 2 * n, 0);
+                exec::storeAs<char16_t>(p + 2 * n, 0);
             }
             break;
         case TK::Enum: fromJson(t->base, p, j); break;

@@ -19,13 +19,6 @@ using exec::Ctx;
 // E_ArgType (format_string.st).
 enum ArgType : int { kByte = 1, kWord, kDword, kReal, kLreal, kSint, kInt, kDint, kUsint, kUint, kUdint, kString, kBool, kBig, kUlarge, kUhuge, kLarge, kHuge, kLword };
 
-template <typename T>
-T load(const uint8_t* p) {
-    T v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-}
-
 std::string formatOne(std::string_view spec, int type, const uint8_t* data) {
     const std::string bad = "\x01";
     if (spec.size() < 2 || spec.front() != '%' || spec.size() > 32) return bad;
@@ -41,14 +34,14 @@ std::string formatOne(std::string_view spec, int type, const uint8_t* data) {
     int64_t si = 0;
     uint64_t ui = 0;
     switch (type) {
-        case kByte: case kUsint: case kBool: ui = load<uint8_t>(data); si = static_cast<int64_t>(ui); break;
-        case kWord: case kUint: ui = load<uint16_t>(data); si = static_cast<int64_t>(ui); break;
-        case kDword: case kUdint: ui = load<uint32_t>(data); si = static_cast<int64_t>(ui); break;
-        case kLword: case kUlarge: ui = load<uint64_t>(data); si = static_cast<int64_t>(ui); break;
-        case kSint: si = load<int8_t>(data); ui = static_cast<uint64_t>(si); break;
-        case kInt: si = load<int16_t>(data); ui = static_cast<uint64_t>(si); break;
-        case kDint: si = load<int32_t>(data); ui = static_cast<uint64_t>(si); break;
-        case kLarge: si = load<int64_t>(data); ui = static_cast<uint64_t>(si); break;
+        case kByte: case kUsint: case kBool: ui = exec::loadAs<uint8_t>(data); si = static_cast<int64_t>(ui); break;
+        case kWord: case kUint: ui = exec::loadAs<uint16_t>(data); si = static_cast<int64_t>(ui); break;
+        case kDword: case kUdint: ui = exec::loadAs<uint32_t>(data); si = static_cast<int64_t>(ui); break;
+        case kLword: case kUlarge: ui = exec::loadAs<uint64_t>(data); si = static_cast<int64_t>(ui); break;
+        case kSint: si = exec::loadAs<int8_t>(data); ui = static_cast<uint64_t>(si); break;
+        case kInt: si = exec::loadAs<int16_t>(data); ui = static_cast<uint64_t>(si); break;
+        case kDint: si = exec::loadAs<int32_t>(data); ui = static_cast<uint64_t>(si); break;
+        case kLarge: si = exec::loadAs<int64_t>(data); ui = static_cast<uint64_t>(si); break;
         default: break;
     }
     const std::string prefix = "%" + flags;
@@ -78,7 +71,7 @@ std::string formatOne(std::string_view spec, int type, const uint8_t* data) {
         case 'E':
         case 'g':
         case 'G': {
-            double v = type == kReal ? load<float>(data) : type == kLreal ? load<double>(data) : isSigned ? double(si) : double(ui);
+            double v = type == kReal ? exec::loadAs<float>(data) : type == kLreal ? exec::loadAs<double>(data) : isSigned ? double(si) : double(ui);
             if (!isFloat && !isInteger) return bad;
             n = std::snprintf(out, sizeof out, (prefix + conv).c_str(), v);
             break;

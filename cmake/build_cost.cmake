@@ -1,0 +1,52 @@
+# What a fresh build costs the compiler (issue 28, decision 0348): the small
+# files of each library compiled in batches (unity builds), and the code that
+# never runs in a scan compiled with less optimisation. Included from the top
+# CMakeLists.txt once the libraries exist; benchmarks/README.md "Build time"
+# has the measurements.
+
+# ---- unity builds: the files of a library compiled STRUN_UNITY_BATCH at a
+# time, one compiler run per batch. The files of a batch share the parsing of
+# their headers and the instantiation and code generation of the inline and
+# template code they all use (the AST and program-model destructors, fmt,
+# nlohmann/json, CLI11). Every file still compiles on its own
+# (-DSTRUN_UNITY=OFF); file-local helpers have names of their own so that
+# they do not clash inside a batch.
+option(STRUN_UNITY "compile the files of each strun library in batches (unity builds)" ON)
+set(STRUN_UNITY_BATCH 8 CACHE STRING "files per unity batch")
+if(STRUN_UNITY)
+  set_target_properties(strun_stdlib strun_ast strun_runtime strun_interp strun_live strun_cli strun_commands
+    PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${STRUN_UNITY_BATCH})
+  # Template-heavy files that share little with their neighbours: alone, so
+  # that the two cores share them and no batch is much longer than the others.
+  set_source_files_properties(
+    ${CMAKE_SOURCE_DIR}/interpreter/sema/fuse.cpp
+    ${CMAKE_SOURCE_DIR}/interpreter/sema/fuse_binary_dint.cpp ${CMAKE_SOURCE_DIR}/interpreter/sema/fuse_binary_lint.cpp
+    ${CMAKE_SOURCE_DIR}/interpreter/sema/fuse_binary_real.cpp ${CMAKE_SOURCE_DIR}/interpreter/sema/fuse_binary_lreal.cpp
+    ${CMAKE_SOURCE_DIR}/stdlib/fmt_library.cpp
+    PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
+endif()
+
+# ---- cold code with less optimisation: the command line and the editor
+# protocols (LSP, DAP), which run once per command or per request, and the
+# network side of the live layer (HTTP, Modbus), which runs on threads of its
+# own. Never the evaluator (interpreter/exec), the checker, the runtime
+# scheduler, the control plane (its hooks run at every activation of a live
+# run) or anything else a scan or `check` runs.
+set(STRUN_COLD_OPT "-O1" CACHE STRING "optimisation of the command line, editor and network code (empty: as the build type)")
+if(STRUN_COLD_OPT)
+  target_compile_options(strun_cli PRIVATE ${STRUN_COLD_OPT})
+  target_compile_options(strun_commands PRIVATE ${STRUN_COLD_OPT})
+  # A file with options of its own is compiled alone, outside the unity batches.
+  file(GLOB LIVE_NETWORK_SOURCES ${CMAKE_SOURCE_DIR}/live/http_*.cpp ${CMAKE_SOURCE_DIR}/live/modbus_*.cpp)
+  set_source_files_properties(${LIVE_NETWORK_SOURCES} PROPERTIES COMPILE_OPTIONS ${STRUN_COLD_OPT})
+endif()
+
+# ---- the generated parser (grammar/*.g4 -> STParser.cpp): GCC's -O1 instead
+# of the build type's -O3 saves a third of its compile time; the parser's
+# work is ANTLR's runtime (a Debian library, compiled as Debian compiles it)
+# more than the generated rule functions (benchmarks/README.md: `check` of
+# 30 000 lines).
+set(STRUN_PARSER_OPT "-O1" CACHE STRING "optimisation of the generated parser (empty: as the build type)")
+if(STRUN_PARSER_OPT)
+  target_compile_options(strun_grammar PRIVATE ${STRUN_PARSER_OPT})
+endif()
