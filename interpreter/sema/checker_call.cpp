@@ -613,8 +613,11 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
         if (direct && !isAggregate(p->type) && fuseArgBind(repOf(p->type), p->offset, cv.node, bind)) call->binds.push_back(bind);
         else direct = false;
     }
+    // After an argument that did not bind (reported, or a parameter whose type is
+    // unknown, reported at its declaration) an unconnected VAR_IN_OUT is a follow-on.
+    const bool reportUnconnected = ok && !hasUnresolvedVariables(fn);
     for (VarSym* p : fn->params)
-        if (p->byRef && !connected.count(p)) {
+        if (p->byRef && !connected.count(p) && reportUnconnected) {
             error(diag::E0301, e.loc, fmt::format("VAR_IN_OUT '{}' of '{}' must be connected", p->name, fn->name));
             ok = false;
         }

@@ -815,6 +815,11 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     // Two named lists may both declare a name (GVL_A.x, GVL_B.x); within one
     // list, or beside a global of no list, it is a duplicate.
     VarSym* other = existing == globals_.end() ? nullptr : existing->second;
+    // The project's own global named like a library's (TCPADS_MAXUDP_BUFFSIZE in a
+    // project's GVL): the project's takes the name, as a user POU or type named
+    // like a library's does; TwinCAT keeps the library's behind its namespace.
+    const bool replacesLibraryGlobal = other && libraryFiles_.count(other->loc.file) && !libraryFiles_.count(loc.file);
+    if (replacesLibraryGlobal) other = nullptr;
     if (other && (other->listName.empty() || declaringList_.empty() || listGlobals_.count(upper(declaringList_) + "." + key))) {
         error(diag::E0106, loc, fmt::format("duplicate global variable '{}'", name));
         return nullptr;

@@ -318,6 +318,11 @@ const std::vector<CodeInfo> kCatalogue = {
      "another tool's settings): it is left out of the project with this warning instead of stopping the compile "
      "(decision 0208). Named on the command line itself, such a file is an error (E0008).",
      "", ""},
+    {"W0043", K::Warning, "a part of a PLCopen export is left out",
+     "A CODESYS export of a project with several devices holds one configuration per device's application; "
+     "strun runs one PLC, the first configuration, and skips the others with this warning (decision 0337). "
+     "Export the one application you want to run to run another.",
+     "", ""},
     {"ARRAY_BOUNDS", K::Runtime, "array subscript out of range (runtime)",
      "An array subscript was outside the declared bounds while the program ran. The faulty read yields 0 and the "
      "faulty write is dropped; the program-error task runs if one is configured, otherwise the PLC goes to STOP "

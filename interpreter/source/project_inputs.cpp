@@ -90,9 +90,10 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
         userFiles.push_back(sources.add(path, std::move(text)));
         return;
     }
-    if (!converted.errors.empty()) {
+    if (!converted.errors.empty() || !converted.warnings.empty()) {
         // Positions of these messages are in the XML itself: a view of the file without conversion.
         int raw = sources.add(path, "", {}, text);
+        for (const auto& w : converted.warnings) log.warning(diag::W0043, ast::Loc{raw, w.line, w.col}, w.message);
         // Whatever the readers could not convert makes the file unusable as a source: E0008.
         for (const auto& e : converted.errors) log.error(diag::E0008, ast::Loc{raw, e.line, e.col}, e.message);
     }
