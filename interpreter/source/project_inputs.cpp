@@ -6,6 +6,8 @@
 #include <set>
 #include <system_error>
 
+#include "interpreter/source/beremiz_project.h"
+#include "interpreter/source/beremiz_standard_blocks.h"
 #include "interpreter/source/read_source.h"
 #include "interpreter/source/st_textual_sfc.h"
 #include "interpreter/source/twincat_plc_project.h"
@@ -61,6 +63,19 @@ void applyPlcProjects(const std::vector<std::string>& plcProjects, std::vector<s
     std::erase_if(found, [&](const std::string& f) { return isTwinCatObject(f) && !compiled.count(lowerPath(f)); });
 }
 
+// A file converted to ST into the SourceSet, with the errors of its conversion.
+void addConverted(const std::string& path, std::string text, Converted converted, SourceSet& sources, std::vector<int>& userFiles,
+                  CompileLog& log) {
+    if (!converted.errors.empty()) {
+        // Positions of these messages are in the XML itself: a view of the file without conversion.
+        int raw = sources.add(path, "", {}, text);
+        // Whatever the readers could not convert makes the file unusable as a source: E0008.
+        for (const auto& e : converted.errors) log.error(diag::E0008, ast::Loc{raw, e.line, e.col}, e.message);
+    }
+    // The XML stays beside the ST made from it: diagnostics quote the file the user has.
+    userFiles.push_back(sources.add(path, std::move(converted.text), std::move(converted.origins), std::move(text)));
+}
+
 // One file into the SourceSet: converted when it is XML.
 void addFile(const std::string& path, std::string text, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log,
              bool foundInDirectory) {
@@ -90,14 +105,7 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
         userFiles.push_back(sources.add(path, std::move(text)));
         return;
     }
-    if (!converted.errors.empty()) {
-        // Positions of these messages are in the XML itself: a view of the file without conversion.
-        int raw = sources.add(path, "", {}, text);
-        // Whatever the readers could not convert makes the file unusable as a source: E0008.
-        for (const auto& e : converted.errors) log.error(diag::E0008, ast::Loc{raw, e.line, e.col}, e.message);
-    }
-    // The XML stays beside the ST made from it: diagnostics quote the file the user has.
-    userFiles.push_back(sources.add(path, std::move(converted.text), std::move(converted.origins), std::move(text)));
+    addConverted(path, std::move(text), std::move(converted), sources, userFiles, log);
 }
 
 }  // namespace
@@ -134,6 +142,31 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
             }
             std::sort(plcProjects.begin(), plcProjects.end());
             applyPlcProjects(plcProjects, found, sources);
+            std::sort(found.begin(), found.end());
+            // A Beremiz / OpenPLC Editor folder is its plc.xml (decision 0356).
+            for (BeremizFolder& folder : takeBeremizFolders(found)) {
+                // The globals of its C and Python extensions are part of it, as Beremiz adds them.
+                std::erase_if(folder.skipped, [&](const std::string& f) {
+                    std::string text, unused;
+                    if (lowerExtension(f) != ".xml" || !readSourceText(f, projectBytes(sources), text, unused)) return false;
+                    Converted globals = readBeremizExtensionGlobals(text);
+                    if (globals.text.empty() && globals.errors.empty()) return false;
+                    addConverted(f, std::move(text), std::move(globals), sources, userFiles, log);
+                    return true;
+                });
+                // matiec's PID, INTEGRAL, ... where plc.xml uses them (decision 0360).
+                std::string xml, unused;
+                if (readSourceText(folder.program, projectBytes(sources), xml, unused))
+                    if (std::string blocks = beremizStandardBlocks(xml); !blocks.empty())
+                        userFiles.push_back(sources.add(kBeremizStandardBlocksPath, std::move(blocks)));
+                if (folder.skipped.empty()) continue;
+                std::string settings;  // quoted under the warning
+                if (!readSourceText(folder.settings, projectBytes(sources), settings, unused)) settings.clear();
+                int raw = sources.add(folder.settings, "", {}, std::move(settings));
+                Diagnostic& d = log.warning(diag::W0042, ast::Loc{raw, 1, 1},
+                                            "a Beremiz/OpenPLC project folder: plc.xml is compiled, the other sources in it are skipped");
+                for (const std::string& f : folder.skipped) d.note(beremizSkipReason(folder, f));
+            }
             if (found.empty()) {
                 usageError = "'" + path + "' contains no source files (.st, PLCopen .xml, .TcPOU, .TcDUT, .TcGVL, .TcIO)";
                 return false;
