@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 #include <map>
+#include <optional>
 
 #include "interpreter/source/xml_conversion.h"
 
@@ -19,16 +20,23 @@ std::string lower(std::string s) {
 }
 
 std::string fileName(const std::string& path) { return lower(fs::path(path).filename().string()); }
-std::string folderOf(const std::string& path) { return fs::path(path).parent_path().lexically_normal().generic_string(); }
 
-// The folder the Beremiz project that holds `path` lives in (the innermost
-// one, should projects nest), or "" when no project folder holds it.
-std::string projectFolderOf(const std::string& path, const std::map<std::string, BeremizFolder>& folders) {
-    for (fs::path p = fs::path(path).lexically_normal().parent_path(); !p.empty(); p = p.parent_path()) {
-        if (folders.count(p.generic_string())) return p.generic_string();
-        if (p == p.parent_path()) break;
+// A folder as a key: lexically normal, "" for the current directory.
+std::string folderKey(const fs::path& folder) {
+    std::string key = folder.lexically_normal().generic_string();
+    if (key == "." || key == "./") key.clear();
+    if (key.size() > 1 && key.back() == '/') key.pop_back();
+    return key;
+}
+std::string folderOf(const std::string& path) { return folderKey(fs::path(path).parent_path()); }
+
+// The key of the folder of the Beremiz project that holds `path` (the
+// innermost one, should projects nest), or nullopt.
+std::optional<std::string> projectFolderOf(const std::string& path, const std::map<std::string, BeremizFolder>& folders) {
+    for (fs::path p = fs::path(path).lexically_normal().parent_path();; p = p.parent_path()) {
+        if (folders.count(folderKey(p))) return folderKey(p);
+        if (p.empty() || p == p.parent_path()) return std::nullopt;
     }
-    return {};
 }
 
 }  // namespace
@@ -47,8 +55,9 @@ std::vector<BeremizFolder> takeBeremizFolders(std::vector<std::string>& found) {
         }
     if (folders.empty()) return {};
     std::erase_if(found, [&](const std::string& f) {
-        const std::string folder = projectFolderOf(f, folders);
-        if (folder.empty()) return false;
+        const std::optional<std::string> under = projectFolderOf(f, folders);
+        if (!under) return false;
+        const std::string& folder = *under;
         if (f == programs.at(folder)) return false;  // the project itself
         if (f != folders.at(folder).settings) folders.at(folder).skipped.push_back(f);
         return true;

@@ -108,6 +108,43 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
     addConverted(path, std::move(text), std::move(converted), sources, userFiles, log);
 }
 
+// What a Beremiz project adds to its plc.xml (decision 0356): the globals of
+// its C and Python extensions, matiec's blocks it uses (decision 0360), and,
+// when `warnSkipped`, the warning naming the sources under it left out.
+void addBeremizProject(BeremizFolder& folder, bool warnSkipped, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log) {
+    // The globals of its C and Python extensions are part of it, as Beremiz adds them.
+    std::erase_if(folder.skipped, [&](const std::string& f) {
+        std::string text, unused;
+        if (lowerExtension(f) != ".xml" || !readSourceText(f, projectBytes(sources), text, unused)) return false;
+        Converted globals = readBeremizExtensionGlobals(text);
+        if (globals.text.empty() && globals.errors.empty()) return false;
+        addConverted(f, std::move(text), std::move(globals), sources, userFiles, log);
+        return true;
+    });
+    std::string xml, unused;
+    if (readSourceText(folder.program, projectBytes(sources), xml, unused))
+        if (std::string blocks = beremizStandardBlocks(xml); !blocks.empty())
+            userFiles.push_back(sources.add(kBeremizStandardBlocksPath, std::move(blocks)));
+    if (!warnSkipped || folder.skipped.empty()) return;
+    std::string settings;  // quoted under the warning
+    if (!readSourceText(folder.settings, projectBytes(sources), settings, unused)) settings.clear();
+    int raw = sources.add(folder.settings, "", {}, std::move(settings));
+    Diagnostic& d = log.warning(diag::W0042, ast::Loc{raw, 1, 1},
+                                "a Beremiz/OpenPLC project folder: plc.xml is compiled, the other sources in it are skipped");
+    for (const std::string& f : folder.skipped) d.note(beremizSkipReason(folder, f));
+}
+
+// The sources under `dir`, recursively (an unreadable part is left out).
+std::vector<std::string> sourcesUnder(const std::string& dir) {
+    std::vector<std::string> found;
+    std::error_code ec;
+    fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end;
+    for (; !ec && it != end; it.increment(ec))
+        if (it->is_regular_file(ec) && isProjectSource(it->path().string())) found.push_back(it->path().string());
+    std::sort(found.begin(), found.end());
+    return found;
+}
+
 }  // namespace
 
 void addProjectSourceText(const std::string& path, std::string text, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log) {
@@ -144,29 +181,7 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
             applyPlcProjects(plcProjects, found, sources);
             std::sort(found.begin(), found.end());
             // A Beremiz / OpenPLC Editor folder is its plc.xml (decision 0356).
-            for (BeremizFolder& folder : takeBeremizFolders(found)) {
-                // The globals of its C and Python extensions are part of it, as Beremiz adds them.
-                std::erase_if(folder.skipped, [&](const std::string& f) {
-                    std::string text, unused;
-                    if (lowerExtension(f) != ".xml" || !readSourceText(f, projectBytes(sources), text, unused)) return false;
-                    Converted globals = readBeremizExtensionGlobals(text);
-                    if (globals.text.empty() && globals.errors.empty()) return false;
-                    addConverted(f, std::move(text), std::move(globals), sources, userFiles, log);
-                    return true;
-                });
-                // matiec's PID, INTEGRAL, ... where plc.xml uses them (decision 0360).
-                std::string xml, unused;
-                if (readSourceText(folder.program, projectBytes(sources), xml, unused))
-                    if (std::string blocks = beremizStandardBlocks(xml); !blocks.empty())
-                        userFiles.push_back(sources.add(kBeremizStandardBlocksPath, std::move(blocks)));
-                if (folder.skipped.empty()) continue;
-                std::string settings;  // quoted under the warning
-                if (!readSourceText(folder.settings, projectBytes(sources), settings, unused)) settings.clear();
-                int raw = sources.add(folder.settings, "", {}, std::move(settings));
-                Diagnostic& d = log.warning(diag::W0042, ast::Loc{raw, 1, 1},
-                                            "a Beremiz/OpenPLC project folder: plc.xml is compiled, the other sources in it are skipped");
-                for (const std::string& f : folder.skipped) d.note(beremizSkipReason(folder, f));
-            }
+            for (BeremizFolder& folder : takeBeremizFolders(found)) addBeremizProject(folder, true, sources, userFiles, log);
             if (found.empty()) {
                 usageError = "'" + path + "' contains no source files (.st, PLCopen .xml, .TcPOU, .TcDUT, .TcGVL, .TcIO)";
                 return false;
@@ -196,6 +211,12 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
             return false;
         }
         if (!readSourceText(path, projectBytes(sources), text, usageError)) return false;
+        // plc.xml named on its own, beside beremiz.xml: the Beremiz project, without the warning (decision 0356).
+        if (fs::path(path).filename() == "plc.xml" && fs::exists(fs::path(path).parent_path() / "beremiz.xml", ec)) {
+            std::vector<std::string> under = sourcesUnder(fs::path(path).parent_path().empty() ? "." : fs::path(path).parent_path().string());
+            for (BeremizFolder& folder : takeBeremizFolders(under))
+                if (fs::equivalent(folder.program, path, ec)) addBeremizProject(folder, false, sources, userFiles, log);
+        }
         addFile(path, std::move(text), sources, userFiles, log, false);
     }
     return true;
