@@ -79,7 +79,7 @@ void addSlots(ast::Pou& pou) {
                 slot.type = std::make_unique<ast::TypeSpec>();
                 slot.type->loc = d.loc;
                 slot.type->name = "BOOL";
-                slot.pragmas.push_back({d.loc, "{attribute 'strun_hidden'}"});  // out of --dump and --vcd (decision 0290)
+                slot.pragmas.push_back({d.loc, "attribute 'strun_hidden'"});  // out of --dump and --vcd (decision 0290)
                 slots.push_back(std::move(slot));
             }
         }
