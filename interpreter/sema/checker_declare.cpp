@@ -9,6 +9,7 @@
 #include "interpreter/sema/attributes.h"
 #include "interpreter/sema/any_argument.h"
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/fb_eno_slots.h"
 #include "interpreter/sema/node_factory.h"
 
 namespace strun::sema {
@@ -84,6 +85,7 @@ PouInfo* Checker::pouNamed(const std::string& written) const {
 
 void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
     addNamespacePath(namespaces_, pou->nameSpace);
+    addFbEnoSlots(*pou);  // the ENO of its instances called with EN/ENO (decision 0358)
     auto info = std::make_unique<PouInfo>();
     info->ast = pou;
     info->kind = pou->kind;

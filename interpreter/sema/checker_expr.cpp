@@ -776,6 +776,7 @@ Checked Checker::partialAccess(Checked base, const std::string& key, const std::
 
 Checked Checker::checkMember(const ast::Expr& e) {
     const ast::Expr& baseExpr = *e.kids[0];
+    if (Checked eno; checkFbEnoRead(e, eno)) return eno;  // inst.ENO (decision 0358)
     if (isNamespace(baseExpr) && !lookupVar(upper(chainRoot(baseExpr).name))) {
         ast::Expr plain;
         plain.kind = ast::ExprKind::Name;
