@@ -9,6 +9,7 @@
 #include "interpreter/sema/attributes.h"
 #include "interpreter/sema/any_argument.h"
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/fb_eno_slots.h"
 #include "interpreter/sema/node_factory.h"
 
 namespace strun::sema {
@@ -84,6 +85,7 @@ PouInfo* Checker::pouNamed(const std::string& written) const {
 
 void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
     addNamespacePath(namespaces_, pou->nameSpace);
+    addFbEnoSlots(*pou);  // the ENO of its instances called with EN/ENO (decision 0358)
     auto info = std::make_unique<PouInfo>();
     info->ast = pou;
     info->kind = pou->kind;
@@ -815,6 +817,11 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     // Two named lists may both declare a name (GVL_A.x, GVL_B.x); within one
     // list, or beside a global of no list, it is a duplicate.
     VarSym* other = existing == globals_.end() ? nullptr : existing->second;
+    // The project's own global named like a library's (TCPADS_MAXUDP_BUFFSIZE in a
+    // project's GVL): the project's takes the name, as a user POU or type named
+    // like a library's does; TwinCAT keeps the library's behind its namespace.
+    const bool replacesLibraryGlobal = other && libraryFiles_.count(other->loc.file) && !libraryFiles_.count(loc.file);
+    if (replacesLibraryGlobal) other = nullptr;
     if (other && (other->listName.empty() || declaringList_.empty() || listGlobals_.count(upper(declaringList_) + "." + key))) {
         error(diag::E0106, loc, fmt::format("duplicate global variable '{}'", name));
         return nullptr;
@@ -1054,6 +1061,21 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
             }
             for (const auto& f : init->fields) {
                 const Field* fld = t->findField(upper(f.name));
+                if (!fld && t->kind == TK::FunctionBlock && t->pou && f.value && f.value->kind == ast::InitKind::Expr &&
+                    f.value->expr && findMethod(t->pou, "__SET_" + upper(f.name))) {
+                    // `fbBrake : FB_Brake := (BrakeMode := ...)`: a property given a value in the
+                    // declaration, set through its setter before the first cycle (decision 0335).
+                    initPath_.push_back({f.name, nullptr, 0});
+                    if (!deferInitial(*f.value->expr))
+                        error(diag::E0402, f.loc, fmt::format("property '{}' cannot be set in this declaration: only a variable's "
+                                                             "initialiser sets a property, before the first cycle", f.name));
+                    initPath_.pop_back();
+                    continue;
+                }
+                if (!fld && t->kind == TK::FunctionBlock && t->pou && findMethod(t->pou, "__GET_" + upper(f.name))) {
+                    error(diag::E0103, f.loc, fmt::format("property '{}' of {} has no SET: it cannot be given a value", f.name, typeName(t)));
+                    continue;
+                }
                 if (!fld) {
                     error(diag::E0103, f.loc, fmt::format("'{}' has no member '{}'", typeName(t), f.name));
                     continue;

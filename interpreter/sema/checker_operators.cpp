@@ -199,6 +199,12 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
     auto enumAsInteger = [&](Checked& v, const Checked& other) {
         const TK ko = other.type->kind;
         if (v.type->kind != TK::Enum || !v.type->base || !(other.untypedInt || isInteger(ko) || isBitString(ko) || ko == TK::Enum)) return;
+        if (v.type->strictEnum) {  // reading it as an integer is allowed, computing with it is not (decision 0334)
+            error(diag::E0201, v.loc.line ? v.loc : loc,
+                  fmt::format("operand: no arithmetic on enumeration {}; '{}' has {{attribute 'strict'}}", typeName(v.type), v.type->name));
+            v = bad(loc);
+            return;
+        }
         v = coerce(v, v.type->base, v.loc.line ? v.loc : loc, "operand");
     };
     enumAsInteger(a, b);
@@ -428,6 +434,12 @@ Checked Checker::makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& l
     warnConstantComparison(op, a, b, loc);
     if (isCharType(a.type->kind) && isStringType(b.type->kind) && b.isConst) b = coerce(b, a.type, b.loc, "operand");
     else if (isCharType(b.type->kind) && isStringType(a.type->kind) && a.isConst) a = coerce(a, b.type, a.loc, "operand");
+    if (!a.ok || !b.ok) return bad(loc);
+    // A BOOL compared with the literal 0 or 1: IEC's boolean literals, as matiec
+    // (Beremiz, OpenPLC) reads `IF INIT = 0 THEN` (decision 0359).
+    auto boolLiteral = [](const Checked& c) { return c.untypedInt && c.isConst && (c.constInt == 0 || c.constInt == 1); };
+    if (a.type->kind == TK::Bool && boolLiteral(b)) b = coerce(b, a.type, b.loc, "operand");
+    else if (b.type->kind == TK::Bool && boolLiteral(a)) a = coerce(a, b.type, a.loc, "operand");
     if (!a.ok || !b.ok) return bad(loc);
     // An integer compared with an enumeration value compares with the value's
     // integer (`UDINT_TO_INT(any.TypeClass) = IBaseLibrary.TypeClass.TYPE_INT`,
