@@ -52,6 +52,8 @@ float realScanToFloat(const RealScan& scan, bool* overflowed = nullptr);
 bool equalsIgnoreCase(std::string_view a, std::string_view b);
 // The text with a-z folded to A-Z (names and keywords are ASCII; other bytes unchanged).
 std::string upperAscii(std::string_view text);
+// The text with A-Z folded to a-z.
+std::string lowerAscii(std::string_view text);
 // Removes leading and trailing spaces and tabs (and CR/LF).
 std::string_view trimBlanks(std::string_view text);
 

@@ -14,8 +14,8 @@
 namespace strun::sema {
 
 namespace {
-bool isEn(const ast::Arg& a) { return !a.output && stdlib::equalsIgnoreCase(a.name, "EN"); }
-bool isEno(const ast::Arg& a) { return a.output && stdlib::equalsIgnoreCase(a.name, "ENO"); }
+bool isFbEn(const ast::Arg& a) { return !a.output && stdlib::equalsIgnoreCase(a.name, "EN"); }
+bool isFbEno(const ast::Arg& a) { return a.output && stdlib::equalsIgnoreCase(a.name, "ENO"); }
 
 // A block that declares EN or ENO itself: they are its own variables.
 bool ownsEnEno(const Type* instance) { return instance->findField("EN") || instance->findField("ENO"); }
@@ -49,11 +49,11 @@ exec::Stmt* Checker::callFunctionBlockEnEno(Checked inst, const ast::Expr& e) {
     const ast::Arg* en = nullptr;
     const ast::Arg* eno = nullptr;
     for (const ast::Arg& a : e.args) {
-        if (isEn(a)) en = &a;
-        if (isEno(a)) eno = &a;
+        if (isFbEn(a)) en = &a;
+        if (isFbEno(a)) eno = &a;
     }
     ast::ExprPtr plain = ast::cloneExpr(e);
-    std::erase_if(plain->args, [](const ast::Arg& a) { return isEn(a) || isEno(a); });
+    std::erase_if(plain->args, [](const ast::Arg& a) { return isFbEn(a) || isFbEno(a); });
     const ast::Expr& call = *plain;
     enEnoCalls_.push_back(std::move(plain));  // the checked nodes point into it
 

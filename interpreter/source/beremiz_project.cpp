@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "interpreter/source/xml_conversion.h"
+#include "stdlib/number_scan.h"
 
 namespace strun::source {
 
@@ -14,12 +15,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return s;
-}
-
-std::string fileName(const std::string& path) { return lower(fs::path(path).filename().string()); }
+std::string fileName(const std::string& path) { return stdlib::lowerAscii(fs::path(path).filename().string()); }
 
 // A folder as a key: lexically normal, "" for the current directory.
 std::string folderKey(const fs::path& folder) {
@@ -70,10 +66,10 @@ std::vector<BeremizFolder> takeBeremizFolders(std::vector<std::string>& found) {
 std::string beremizSkipReason(const BeremizFolder& folder, const std::string& skipped) {
     const fs::path root = fs::path(folder.settings).parent_path().lexically_normal();
     const fs::path relative = fs::path(skipped).lexically_normal().lexically_relative(root);
-    const std::string first = relative.empty() ? std::string() : lower(relative.begin()->string());
+    const std::string first = relative.empty() ? std::string() : stdlib::lowerAscii(relative.begin()->string());
     if (first == "build" && std::distance(relative.begin(), relative.end()) > 1)
         return "'" + relative.generic_string() + "' skipped: the build output Beremiz generates from plc.xml";
-    if (lower(relative.extension().string()) == ".xml") return "'" + relative.generic_string() + "' skipped: a Beremiz settings file, not a program";
+    if (stdlib::lowerAscii(relative.extension().string()) == ".xml") return "'" + relative.generic_string() + "' skipped: a Beremiz settings file, not a program";
     return "'" + relative.generic_string() + "' skipped: Beremiz compiles plc.xml alone (an ST export of it?)";
 }
 

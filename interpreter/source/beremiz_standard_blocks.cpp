@@ -6,6 +6,8 @@
 #include <string_view>
 #include <vector>
 
+#include "stdlib/number_scan.h"
+
 namespace strun::source {
 
 namespace {
@@ -94,11 +96,6 @@ const std::vector<Block>& blocks() {
     return all;
 }
 
-std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return s;
-}
-
 // `<element name="X"` (or with ') occurs in `xml` (lower case), X in lower case.
 bool hasNamed(const std::string& xml, const std::string& element, const std::string& name) {
     for (const char quote : {'"', '\''}) {
@@ -116,16 +113,16 @@ bool hasNamed(const std::string& xml, const std::string& element, const std::str
 }  // namespace
 
 std::string beremizStandardBlocks(const std::string& plcXml) {
-    const std::string xml = lower(plcXml);
+    const std::string xml = stdlib::lowerAscii(plcXml);
     std::set<std::string> wanted;
     std::vector<std::string> pending;
     for (const Block& b : blocks())
-        if (hasNamed(xml, "derived", lower(b.name))) pending.push_back(b.name);
+        if (hasNamed(xml, "derived", stdlib::lowerAscii(b.name))) pending.push_back(b.name);
     while (!pending.empty()) {
         const std::string name = pending.back();
         pending.pop_back();
         // The project's own block of that name is the one it uses.
-        if (wanted.count(name) || hasNamed(xml, "pou", lower(name))) continue;
+        if (wanted.count(name) || hasNamed(xml, "pou", stdlib::lowerAscii(name))) continue;
         wanted.insert(name);
         for (const Block& b : blocks())
             if (b.name == name)
