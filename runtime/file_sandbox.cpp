@@ -1,10 +1,12 @@
 #include "runtime/file_sandbox.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -69,6 +71,7 @@ void FileSandbox::finish() {
             std::fclose(f);
             f = nullptr;
         }
+    dirs_.clear();
     if (temporary_ && !root_.empty()) {
         std::error_code ignored;
         std::filesystem::remove_all(root_, ignored);
@@ -287,6 +290,88 @@ uint32_t FileSandbox::removeDir(std::string_view path) {
     int e = errno;
     ::close(dir);
     return r == 0 ? 0 : fromErrno(e);
+}
+
+// ---------------------------------------------------------------- directory listings
+
+uint32_t FileSandbox::openDir(std::string_view path, uint32_t& err) {
+    err = 0;
+    size_t slot = 0;
+    while (slot < dirs_.size() && dirs_[slot].open) ++slot;
+    if (slot >= kMaxOpen) {
+        err = file_error::kNoMoreHandles;
+        return 0;
+    }
+    std::string p(path);
+    for (char& c : p)
+        if (c == '\\') c = '/';
+    while (p.size() > 1 && p.back() == '/') p.pop_back();
+    int fd = -1;
+    if (p.empty() || p == ".") {
+        fd = ::open(root().c_str(), O_DIRECTORY | O_RDONLY | O_CLOEXEC);
+        if (fd < 0) err = fromErrno(errno);
+    } else {
+        std::string leaf;
+        int parent = openParent(p, leaf, err);
+        if (parent < 0) return 0;
+        fd = ::openat(parent, leaf.c_str(), O_DIRECTORY | O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+        int e = errno;
+        struct stat st {};
+        const bool link = fd < 0 && ::fstatat(parent, leaf.c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0 && S_ISLNK(st.st_mode);
+        ::close(parent);
+        if (fd < 0) err = link ? file_error::kAccessDenied : fromErrno(e);
+    }
+    if (fd < 0) return 0;
+    DIR* d = ::fdopendir(fd);
+    if (!d) {
+        ::close(fd);
+        err = file_error::kDeviceError;
+        return 0;
+    }
+    Listing listing;
+    listing.open = true;
+    while (const dirent* e = ::readdir(d)) {
+        std::string name = e->d_name;
+        if (name == "." || name == "..") continue;
+        DirEntry entry;
+        entry.name = name;
+        struct stat st {};
+        if (::fstatat(::dirfd(d), name.c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0) {
+            entry.directory = S_ISDIR(st.st_mode);
+            entry.size = S_ISREG(st.st_mode) ? static_cast<uint64_t>(st.st_size) : 0;
+            entry.modified = static_cast<int64_t>(st.st_mtime);
+        }
+        listing.entries.push_back(std::move(entry));
+    }
+    ::closedir(d);
+    std::sort(listing.entries.begin(), listing.entries.end(), [](const DirEntry& a, const DirEntry& b) { return a.name < b.name; });
+    if (slot == dirs_.size()) dirs_.push_back(std::move(listing));
+    else dirs_[slot] = std::move(listing);
+    return static_cast<uint32_t>(slot + 1);
+}
+
+bool FileSandbox::nextEntry(uint32_t handle, DirEntry& entry, uint32_t& err) {
+    err = 0;
+    if (handle == 0 || handle > dirs_.size() || !dirs_[handle - 1].open) {
+        err = file_error::kInvalidParam;
+        return false;
+    }
+    Listing& l = dirs_[handle - 1];
+    if (l.next >= l.entries.size()) return false;
+    entry = l.entries[l.next++];
+    return true;
+}
+
+const FileSandbox::DirEntry* FileSandbox::lastEntry(uint32_t handle) const {
+    if (handle == 0 || handle > dirs_.size() || !dirs_[handle - 1].open) return nullptr;
+    const Listing& l = dirs_[handle - 1];
+    return l.next == 0 ? nullptr : &l.entries[l.next - 1];
+}
+
+uint32_t FileSandbox::closeDir(uint32_t handle) {
+    if (handle == 0 || handle > dirs_.size() || !dirs_[handle - 1].open) return file_error::kInvalidParam;
+    dirs_[handle - 1] = Listing{};
+    return 0;
 }
 
 }  // namespace strun::rt

@@ -53,6 +53,22 @@ public:
     uint32_t makeDir(std::string_view path);
     uint32_t removeDir(std::string_view path);
 
+    // Directory listings (CODESYS CAA File DirOpen/DirList/DirClose): the
+    // entries of the directory as they are when it is opened, without "."
+    // and "..", sorted by name. "" and "." name the sandbox root itself.
+    struct DirEntry {
+        std::string name;
+        uint64_t size = 0;       // bytes of a regular file, else 0
+        bool directory = false;
+        int64_t modified = 0;    // seconds since 1970 (UTC)
+    };
+    uint32_t openDir(std::string_view path, uint32_t& err);  // handle >= 1, or 0 and err
+    // The next entry; false (and err 0) when none is left.
+    bool nextEntry(uint32_t handle, DirEntry& entry, uint32_t& err);
+    // The entry nextEntry gave last (for the natives that read its parts).
+    const DirEntry* lastEntry(uint32_t handle) const;
+    uint32_t closeDir(uint32_t handle);
+
     static constexpr size_t kMaxOpen = 64;
 
 private:
@@ -64,6 +80,12 @@ private:
     bool created_ = false;
     bool temporary_ = false;
     std::vector<std::FILE*> files_;
+    struct Listing {
+        bool open = false;
+        std::vector<DirEntry> entries;
+        size_t next = 0;
+    };
+    std::vector<Listing> dirs_;
 };
 
 // The process's sandbox (the CLI sets its root from --files).

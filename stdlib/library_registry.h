@@ -9,6 +9,7 @@
 // The libraries and their status are listed in docs/libraries.md.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -35,6 +36,13 @@ struct LibraryName {
 std::span<const LibraryInfo> libraries();
 // Sorted by `upper`, then file.
 std::span<const LibraryName> libraryNames();
+
+// Bit L of [c]: some name that selects a file or native function (kind not
+// U) has length L (< 64) and starts (ends) with the byte c, in either case.
+// Generated with the registry, so the word scan of library selection tests
+// a word without building anything at start-up.
+std::span<const uint64_t, 256> libraryNameMasksByFirst();
+std::span<const uint64_t, 256> libraryNameMasksByLast();
 
 // The rows for one name (any case); empty when no library knows it.
 std::span<const LibraryName> libraryNamesFor(std::string_view name);

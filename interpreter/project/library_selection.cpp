@@ -58,11 +58,11 @@ bool qualifiedUse(std::string_view text, size_t end) {
 
 // Bit L of [c]: some selecting name of length L (< 64) starts (ends) with
 // the letter c in either case. Most words of a program fail this test, and
-// then need no upper-casing and lookup. Built once per process from the
-// registry (a few thousand instructions; no library text is read).
+// then need no upper-casing and lookup. The tables are generated with the
+// registry (stdlib/library_registry.h): nothing is built at start-up.
 struct NameMasks {
-    uint64_t byFirst[256] = {};
-    uint64_t byLast[256] = {};
+    std::span<const uint64_t, 256> byFirst = stdlib::libraryNameMasksByFirst();
+    std::span<const uint64_t, 256> byLast = stdlib::libraryNameMasksByLast();
     bool mayBeName(std::string_view w) const {
         if (w.size() >= 64) return true;
         if (w.empty()) return false;
@@ -70,22 +70,6 @@ struct NameMasks {
         return (byFirst[static_cast<unsigned char>(w.front())] & bit) != 0 && (byLast[static_cast<unsigned char>(w.back())] & bit) != 0;
     }
 };
-
-const NameMasks& nameMasks() {
-    static const NameMasks masks = [] {
-        NameMasks built;
-        for (const stdlib::LibraryName& n : stdlib::libraryNames()) {
-            if (!selects(n) || n.upper.empty() || n.upper.size() >= 64) continue;
-            const uint64_t bit = uint64_t{1} << n.upper.size();
-            for (unsigned char c : {n.upper.front(), static_cast<char>(std::tolower(static_cast<unsigned char>(n.upper.front())))})
-                built.byFirst[c] |= bit;
-            for (unsigned char c : {n.upper.back(), static_cast<char>(std::tolower(static_cast<unsigned char>(n.upper.back())))})
-                built.byLast[c] |= bit;
-        }
-        return built;
-    }();
-    return masks;
-}
 
 // The registry rows of an upper-case word (the registry is sorted by it).
 std::pair<const stdlib::LibraryName*, const stdlib::LibraryName*> rowsOf(std::string_view upperWord) {
@@ -100,7 +84,7 @@ std::pair<const stdlib::LibraryName*, const stdlib::LibraryName*> rowsOf(std::st
 
 LibrarySelection selectLibraries(const std::vector<std::string_view>& projectTexts) {
     const auto& sources = stdlib::embeddedSources();
-    const NameMasks& masks = nameMasks();
+    const NameMasks masks;
     std::vector<bool> selected(sources.size(), false);
     std::vector<size_t> toScan;  // selected files whose own mentions are not yet followed
     LibrarySelection out;

@@ -53,7 +53,15 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
         ck.error(diag::E0301, call.kids[0]->loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
         return false;
     }
-    if (positionalCount > 0 && positionalCount < inputsInOrder.size() && positionalCount == call.args.size()) {
+    // CODESYS: the inputs a non-formal call leaves out at the end take their
+    // declared initial values, when every one of them has one
+    // (`Log(msg)` of `Log(str, instance := '')`), decision 0338.
+    bool trailingDefaults = positionalCount > 0 && positionalCount < inputsInOrder.size() && !ck.compileOptions().strict;
+    for (size_t k = positionalCount; trailingDefaults && k < inputsInOrder.size(); ++k) {
+        const VarSym* p = inputsInOrder[k];
+        trailingDefaults = p->section == ast::VarSection::Input && !p->byRef && p->decl && p->decl->init;
+    }
+    if (positionalCount > 0 && positionalCount < inputsInOrder.size() && positionalCount == call.args.size() && !trailingDefaults) {
         // A non-formal call lists every input (IEC 61131-3); formal calls may leave inputs out.
         ck.error(diag::E0301, call.kids[0]->loc, fmt::format("too few arguments for '{}' ({} given, it takes {})", callee, positionalCount, inputsInOrder.size()));
         return false;

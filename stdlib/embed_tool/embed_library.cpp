@@ -15,6 +15,7 @@
 // library texts to learn what they declare (decision 0220).
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -305,6 +306,26 @@ int main(int argc, char** argv) {
     for (const Name& n : names)
         o << "    {" << quoted(n.upper) << ", " << quoted(n.written) << ", " << quoted(n.library) << ", '" << n.kind << "', " << n.file << "},\n";
     o << "};\nstd::span<const LibraryName> libraryNames() { return kNames; }\n";
+    // The letter masks of the selecting names (library_registry.h), computed
+    // here so that start-up does not walk the whole registry to build them.
+    uint64_t byFirst[256] = {}, byLast[256] = {};
+    for (const Name& n : names) {
+        if (n.kind == 'U' || n.upper.empty() || n.upper.size() >= 64) continue;
+        const uint64_t bit = uint64_t{1} << n.upper.size();
+        for (unsigned char c : {static_cast<unsigned char>(n.upper.front()), static_cast<unsigned char>(std::tolower(static_cast<unsigned char>(n.upper.front())))})
+            byFirst[c] |= bit;
+        for (unsigned char c : {static_cast<unsigned char>(n.upper.back()), static_cast<unsigned char>(std::tolower(static_cast<unsigned char>(n.upper.back())))})
+            byLast[c] |= bit;
+    }
+    auto masks = [&](const char* name, const uint64_t* m) {
+        o << "static constexpr uint64_t " << name << "[256] = {";
+        for (int c = 0; c < 256; ++c) o << (c % 8 == 0 ? "\n   " : "") << " 0x" << std::hex << m[c] << std::dec << "u,";
+        o << "\n};\n";
+    };
+    masks("kMaskByFirst", byFirst);
+    masks("kMaskByLast", byLast);
+    o << "std::span<const uint64_t, 256> libraryNameMasksByFirst() { return std::span<const uint64_t, 256>(kMaskByFirst); }\n"
+         "std::span<const uint64_t, 256> libraryNameMasksByLast() { return std::span<const uint64_t, 256>(kMaskByLast); }\n";
     o << "}  // namespace strun::stdlib\n";
     const std::string text = o.str();
     const fs::path out = argv[1];

@@ -9,7 +9,7 @@ strun=$1
 src=$2
 . "$src/sandbox_setup.sh"
 "$strun" run --virtual --cycles 3 --dump --files "$tmp/box" "$src/caa_files_symlinks.st" > "$tmp/dump.json"
-for v in openDirErr openFileErr sizeErr mkDirErr; do
+for v in openDirErr openFileErr sizeErr mkDirErr listLinkErr listBelowErr; do
     grep -q "\"$v\": *5114" "$tmp/dump.json" || fail "$v is not FILE_OPERATION_DENIED"
 done
 grep -q '"deleteErr": *0' "$tmp/dump.json" || fail "deleting the link failed"

@@ -3,6 +3,7 @@
 // sandbox (runtime/file_sandbox.h) at once and returns its result, a
 // negative number being minus the ADS error code. The blocks around them
 // give TwinCAT's bExecute / bBusy / bError / nErrId behaviour (decision 0221).
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -19,7 +20,10 @@ namespace {
 
 using exec::Ctx;
 
-enum class FileOp : uint8_t { Open, Close, Read, Write, Gets, Puts, Seek, Tell, Eof, Delete, Rename, CreateDir, RemoveDir };
+enum class FileOp : uint8_t {
+    Open, Close, Read, Write, Gets, Puts, Seek, Tell, Eof, Delete, Rename, CreateDir, RemoveDir,
+    DirOpen, DirNext, DirEntrySize, DirEntryIsDir, DirEntryTime, DirClose  // CAA File's directory listing
+};
 
 struct FileOpNode final : exec::Expr {
     FileOp op;
@@ -102,6 +106,36 @@ struct FileOpNode final : exec::Expr {
             case FileOp::Rename: return result(box.rename(viewOf<char>(a, c), viewOf<char>(b, c)), 0);
             case FileOp::CreateDir: return result(box.makeDir(viewOf<char>(a, c)), 0);
             case FileOp::RemoveDir: return result(box.removeDir(viewOf<char>(a, c)), 0);
+            case FileOp::DirOpen: {
+                uint32_t err = 0;
+                uint32_t h = box.openDir(viewOf<char>(a, c), err);
+                return result(err, h);
+            }
+            case FileOp::DirNext: {
+                // The next entry's name into [p, p + n) (cut to fit, always
+                // terminated): 1, or 0 when no entry is left.
+                uint32_t h = handle();
+                uint8_t* p = address(b->i(c));
+                auto n = static_cast<uint32_t>(c3->i(c));
+                if (n == 0 || !inside(c, p, n)) return -static_cast<int64_t>(rt::file_error::kInvalidParam);
+                rt::FileSandbox::DirEntry entry;
+                uint32_t err = 0;
+                if (!box.nextEntry(h, entry, err)) return result(err, 0);
+                const size_t len = std::min<size_t>(entry.name.size(), n - 1);
+                std::memcpy(p, entry.name.data(), len);
+                p[len] = 0;
+                return 1;
+            }
+            case FileOp::DirEntrySize:
+            case FileOp::DirEntryIsDir:
+            case FileOp::DirEntryTime: {
+                const rt::FileSandbox::DirEntry* e = box.lastEntry(handle());
+                if (!e) return 0;
+                if (op == FileOp::DirEntrySize) return static_cast<int64_t>(e->size);
+                if (op == FileOp::DirEntryIsDir) return e->directory ? 1 : 0;
+                return e->modified;
+            }
+            case FileOp::DirClose: return result(box.closeDir(handle()), 0);
         }
         return 0;
     }
@@ -139,7 +173,10 @@ void addFileOp(Checker& ck, const char* name, FileOp op, std::initializer_list<A
             nodes[k] = v.node;
         }
         auto* n = ck.pool().make<FileOpNode>(op, nodes[0], nodes[1], nodes[2], ck.site(call.loc));
-        return makeResult(ck, n, ck.types().elementary(op == FileOp::Eof ? TK::Bool : TK::DInt), call, a, false);
+        const TK kind = op == FileOp::Eof || op == FileOp::DirEntryIsDir                 ? TK::Bool
+                        : op == FileOp::DirEntrySize || op == FileOp::DirEntryTime ? TK::LInt
+                                                                                   : TK::DInt;
+        return makeResult(ck, n, ck.types().elementary(kind), call, a, false);
     });
 }
 
@@ -159,6 +196,12 @@ void registerTc2SystemFileNatives(Checker& ck) {
     addFileOp(ck, "F_STRUN_FILERENAME", FileOp::Rename, {Arg::Str, Arg::Str});
     addFileOp(ck, "F_STRUN_CREATEDIR", FileOp::CreateDir, {Arg::Str});
     addFileOp(ck, "F_STRUN_REMOVEDIR", FileOp::RemoveDir, {Arg::Str});
+    addFileOp(ck, "F_STRUN_DIROPEN", FileOp::DirOpen, {Arg::Str});
+    addFileOp(ck, "F_STRUN_DIRNEXT", FileOp::DirNext, {Arg::Int, Arg::Addr, Arg::Int});
+    addFileOp(ck, "F_STRUN_DIRENTRYSIZE", FileOp::DirEntrySize, {Arg::Int});
+    addFileOp(ck, "F_STRUN_DIRENTRYISDIR", FileOp::DirEntryIsDir, {Arg::Int});
+    addFileOp(ck, "F_STRUN_DIRENTRYTIME", FileOp::DirEntryTime, {Arg::Int});
+    addFileOp(ck, "F_STRUN_DIRCLOSE", FileOp::DirClose, {Arg::Int});
 }
 
 }  // namespace strun::stdlib::bind
