@@ -262,14 +262,16 @@ Stmt* FusedBin<T, OP, L, R>::makeWhile(NodePool& pool, Block* body) {
 // IF b THEN ... for a BOOL variable or a BOOL array element (`IF flags[i]`)
 // read inline (O is OpVar<uint8_t, B> or OpElem<uint8_t>): true when its byte is
 // not 0, as If1Stmt over the variable node tests it.
+// The THEN branch is held as a Body (decision 0353; it was a Block*, the one
+// IF form decision 0266 had left running its Block).
 template <class O>
 struct IfBool final : Stmt {
     O cond;
-    Block* then;
+    Body then;
     Stmt* otherwise;  // may be null; see If1Stmt
     IfBool(O k, Block* t, Stmt* e) : cond(k), then(t), otherwise(e) {}
     Flow exec(Ctx& c) override {
-        if (cond.get(c)) return then->exec(c);
+        if (cond.get(c)) return then.run(c);
         return otherwise ? otherwise->exec(c) : Flow::Next;
     }
 };
