@@ -77,13 +77,13 @@ pouDecl
     : PROGRAM modifiers+=modifier* name=identifier headerEnd=SEMI? elements+=pouElement* (body=pouBody members+=memberDecl*)? end=END_PROGRAM   # programDecl
     | FUNCTION modifiers+=modifier* name=identifier (COLON result=returnType)? headerEnd=SEMI? vars+=varBlock* body=stmtList end=END_FUNCTION # functionDecl
     | FUNCTION_BLOCK modifiers+=modifier* name=identifier
-        (EXTENDS base=qualifiedName baseGeneric=genericArguments?)? (IMPLEMENTS interfaces+=qualifiedName (COMMA interfaces+=qualifiedName)*)?
+        (EXTENDS base=qualifiedName baseGeneric=genericArguments?)? (IMPLEMENTS interfaces+=qualifiedName (COMMA interfaces+=qualifiedName)* COMMA?)?
         headerEnd=SEMI? elements+=pouElement* (body=pouBody members+=memberDecl*)? end=END_FUNCTION_BLOCK              # functionBlockDecl
-    | INTERFACE modifiers+=modifier* name=identifier (EXTENDS bases+=qualifiedName (COMMA bases+=qualifiedName)*)?
+    | INTERFACE modifiers+=modifier* name=identifier (EXTENDS bases+=qualifiedName (COMMA bases+=qualifiedName)* COMMA?)?
         headerEnd=SEMI? members+=memberDecl* end=END_INTERFACE                                                         # interfaceDecl
     // IEC 61131-3 Ed.3 / SIMATIC AX: a CLASS is a function block without a body.
     | CLASS modifiers+=modifier* name=identifier
-        (EXTENDS base=qualifiedName baseGeneric=genericArguments?)? (IMPLEMENTS interfaces+=qualifiedName (COMMA interfaces+=qualifiedName)*)?
+        (EXTENDS base=qualifiedName baseGeneric=genericArguments?)? (IMPLEMENTS interfaces+=qualifiedName (COMMA interfaces+=qualifiedName)* COMMA?)?
         headerEnd=SEMI? elements+=pouElement* end=END_CLASS                                            # classDecl
     ;
 

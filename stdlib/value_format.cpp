@@ -130,6 +130,16 @@ std::string formatJsonNumber(T value) {
 
 std::string formatReal(float value) { return formatIecReal(value); }
 std::string formatLReal(double value) { return formatIecReal(value); }
+
+namespace {
+std::string withPointIfWhole(std::string text) {
+    if (text.find_first_not_of("-0123456789") == std::string::npos) text += ".0";
+    return text;
+}
+}  // namespace
+
+std::string formatRealTwinCat(float value) { return withPointIfWhole(formatIecReal(value)); }
+std::string formatLRealTwinCat(double value) { return withPointIfWhole(formatIecReal(value)); }
 std::string formatRealJson(float value) { return formatJsonNumber(value); }
 std::string formatLRealJson(double value) { return formatJsonNumber(value); }
 

@@ -28,9 +28,14 @@ std::string formatDateTime(int64_t nsSinceEpoch, std::string_view prefix = "DT#"
 // REAL_TO_STRING / LREAL_TO_STRING: the shortest digits that read back as the
 // same REAL (resp. LREAL); plain notation when 1e-5 <= |x| < 1e15 ("1.5",
 // "0.1", "100", "-0.001"), else "1E+38", "1.5E-07"; zero is "0"; whole
-// numbers carry no ".0"; non-finite values are "INF", "-INF", "NAN".
+// numbers carry no ".0" (in a TwinCAT project they do, below); non-finite values are "INF", "-INF", "NAN".
 std::string formatReal(float value);
 std::string formatLReal(double value);
+// TwinCAT's text: the same, but a whole number in plain notation keeps ".0"
+// ("24.0", "-23.0", "0.0"), as TwinCAT's REAL_TO_STRING writes it and TcUnit's
+// messages show it (decision 0336).
+std::string formatRealTwinCat(float value);
+std::string formatLRealTwinCat(double value);
 
 // Shortest round-trip text that is also a valid JSON number ("0.1", "1e+38",
 // "100"). Non-finite input gives "inf", "-inf", "nan" (the --dump strings);

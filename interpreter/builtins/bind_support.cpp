@@ -201,6 +201,11 @@ const Type* commonTypeOf(Checker& ck, std::vector<Checked>& args, const ast::Loc
     Checked probe = args[0];
     for (size_t k = 1; k < args.size(); ++k) {
         Checked next = args[k];
+        // MIN(nCode, E_Mode.HIGH): an enumeration among integers takes part as its base
+        // integer; its conversion then warns (an error with --strict), decision 0334.
+        auto integral = [](const Checked& c) { return c.untypedInt || sema::isInteger(c.type->kind) || isBitArg(c); };
+        if (probe.type && probe.type->kind == TK::Enum && probe.type->base && integral(next)) probe.type = probe.type->base;
+        if (next.type && next.type->kind == TK::Enum && next.type->base && integral(probe)) next.type = next.type->base;
         const Type* t = ck.commonType(probe, next, loc, false);
         if (!t) {
             ck.error(diag::E0202, args[k].loc, fmt::format("{}: arguments of types {} and {} need an explicit conversion", fn,

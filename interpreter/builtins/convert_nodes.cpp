@@ -13,6 +13,8 @@ std::string valueText(ValueClass k, Expr* a, Ctx& c) {
         case ValueClass::Unsigned: return stdlib::unsignedToString(static_cast<uint64_t>(a->i(c)));
         case ValueClass::Real: return stdlib::formatReal(static_cast<float>(a->f(c)));
         case ValueClass::LReal: return stdlib::formatLReal(a->f(c));
+        case ValueClass::RealTwinCat: return stdlib::formatRealTwinCat(static_cast<float>(a->f(c)));
+        case ValueClass::LRealTwinCat: return stdlib::formatLRealTwinCat(a->f(c));
         case ValueClass::Time: return stdlib::formatDuration(stdlib::timeValueToNs(static_cast<int32_t>(a->i(c))), "T#");
         case ValueClass::LTime: return stdlib::formatDuration(a->i(c), "LTIME#");
         case ValueClass::Date: return stdlib::formatDate(stdlib::dateValueToNs(static_cast<uint32_t>(a->i(c))), "D#");

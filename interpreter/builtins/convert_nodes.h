@@ -18,6 +18,7 @@ enum class ValueClass : uint8_t {
     Bool, Signed, Unsigned, Real, LReal,
     Time, LTime, Date, LDate, Tod, LTod, Dt, LDt,
     Char, WChar, String, WString,
+    RealTwinCat, LRealTwinCat,  // REAL / LREAL in a TwinCAT project: "24.0" (decision 0336)
 };
 
 // The text of a value as *_TO_STRING writes it (UTF-8 / raw bytes).

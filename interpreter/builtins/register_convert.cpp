@@ -110,6 +110,8 @@ void addToString(Checker& ck, const std::string& name, const Type* from, bool wi
         ValueClass vc;
         if (!valueClassOf(x.type, vc)) return argError(ck, x, call.name, "the input must be an elementary value");
         const Type* t = stringResultType(ck, wide, textLength(vc, x.type));
+        if (ck.compileOptions().twincatRealText && (vc == ValueClass::Real || vc == ValueClass::LReal))
+            vc = vc == ValueClass::Real ? ValueClass::RealTwinCat : ValueClass::LRealTwinCat;
         exec::Expr* n;
         if (wide) {
             auto* w = ck.pool().make<ToStringNode<char16_t>>(x.node, vc);

@@ -32,6 +32,15 @@ std::unique_ptr<ParsedLibrary> parseLibrary(CompileLog& log) {
     return library;
 }
 
+namespace {
+// .TcPOU, .TcDUT, .TcGVL, .TcIO, .TcTLEO: a TwinCAT 3 object file.
+bool isTwinCatObjectFile(const std::string& path) {
+    const size_t dot = path.rfind('.');
+    return dot != std::string::npos && path.size() > dot + 3 && (path[dot + 1] == 'T' || path[dot + 1] == 't') &&
+           (path[dot + 2] == 'c' || path[dot + 2] == 'C');
+}
+}  // namespace
+
 std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
                                                    const sema::CompileOptions& options, ParsedLibrary* library,
                                                    std::vector<ast::CompilationUnit>* keepUnits, CompileExtras* extras) {
@@ -119,7 +128,9 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     sema::Checker& checker = *checkerOwner;
     if (extras && extras->observer) checker.setExprObserver(extras->observer);
     checker.setLibraryFiles(libraryFiles);
-    checker.setCompileOptions(options);
+    sema::CompileOptions effective = options;
+    for (int f : userFiles) effective.twincatRealText = effective.twincatRealText || isTwinCatObjectFile(sources.file(f).path);
+    checker.setCompileOptions(effective);
     if (const rt::PlcProfile* profile = rt::findProfile(options.target)) checker.setProfile(*profile);
     stdlib::registerBuiltins(checker);
     // Native functions of the vendor libraries the project names (decision 0220).

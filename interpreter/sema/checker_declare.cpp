@@ -1054,6 +1054,21 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
             }
             for (const auto& f : init->fields) {
                 const Field* fld = t->findField(upper(f.name));
+                if (!fld && t->kind == TK::FunctionBlock && t->pou && f.value && f.value->kind == ast::InitKind::Expr &&
+                    f.value->expr && findMethod(t->pou, "__SET_" + upper(f.name))) {
+                    // `fbBrake : FB_Brake := (BrakeMode := ...)`: a property given a value in the
+                    // declaration, set through its setter before the first cycle (decision 0335).
+                    initPath_.push_back({f.name, nullptr, 0});
+                    if (!deferInitial(*f.value->expr))
+                        error(diag::E0402, f.loc, fmt::format("property '{}' cannot be set in this declaration: only a variable's "
+                                                             "initialiser sets a property, before the first cycle", f.name));
+                    initPath_.pop_back();
+                    continue;
+                }
+                if (!fld && t->kind == TK::FunctionBlock && t->pou && findMethod(t->pou, "__GET_" + upper(f.name))) {
+                    error(diag::E0103, f.loc, fmt::format("property '{}' of {} has no SET: it cannot be given a value", f.name, typeName(t)));
+                    continue;
+                }
                 if (!fld) {
                     error(diag::E0103, f.loc, fmt::format("'{}' has no member '{}'", typeName(t), f.name));
                     continue;

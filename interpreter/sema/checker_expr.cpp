@@ -1281,7 +1281,9 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
     const bool intToEnum = target->kind == TK::Enum && (isInteger(from->kind) || isBitString(from->kind));
     if (enumToInt || intToEnum) {
         const Type* en = enumToInt ? from : target;
-        if (en->strictEnum) {
+        // {attribute 'strict'} refuses an integer becoming the enumeration; reading
+        // the enumeration as an integer stays allowed, as in TwinCAT/CODESYS (decision 0334).
+        if (en->strictEnum && intToEnum) {
             error(diag::E0201, loc, fmt::format("{}: cannot convert {} to {} implicitly; '{}' has {{attribute 'strict'}}", what, typeName(from),
                                    typeName(target), en->name));
             return bad(loc);

@@ -199,6 +199,12 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
     auto enumAsInteger = [&](Checked& v, const Checked& other) {
         const TK ko = other.type->kind;
         if (v.type->kind != TK::Enum || !v.type->base || !(other.untypedInt || isInteger(ko) || isBitString(ko) || ko == TK::Enum)) return;
+        if (v.type->strictEnum) {  // reading it as an integer is allowed, computing with it is not (decision 0334)
+            error(diag::E0201, v.loc.line ? v.loc : loc,
+                  fmt::format("operand: no arithmetic on enumeration {}; '{}' has {{attribute 'strict'}}", typeName(v.type), v.type->name));
+            v = bad(loc);
+            return;
+        }
         v = coerce(v, v.type->base, v.loc.line ? v.loc : loc, "operand");
     };
     enumAsInteger(a, b);

@@ -27,6 +27,10 @@ struct CompileOptions {
     // Small leaf FUNCTIONs run inlined in their callers (decision 0317). The
     // debugger turns it off: it follows calls by their frames and depth.
     bool inlineCalls = true;
+    // The project comes (at least partly) from TwinCAT object files (.TcPOU,
+    // .TcDUT, .TcGVL, .TcIO): REAL_TO_STRING and friends write a whole
+    // number as TwinCAT does, with '.0' (decision 0336). Set by compileProject.
+    bool twincatRealText = false;
 };
 
 }  // namespace strun::sema

@@ -52,17 +52,6 @@ std::string stringText(const sema::Type* t, const uint8_t* p) {
     return stdlib::utf16ToUtf8(w);
 }
 
-namespace {
-
-// TwinCAT's REAL_TO_STRING, which TcUnit's messages use, writes a whole
-// number with ".0" ("24.0", "-23.0", "0.0": TcUnit's verifier expects these).
-std::string wholeWithPoint(std::string text) {
-    if (text.find_first_not_of("-0123456789") == std::string::npos) text += ".0";
-    return text;
-}
-
-}  // namespace
-
 std::string assertText(const sema::Type* t, const uint8_t* p) {
     switch (t->kind) {
         case TK::Bool: return stdlib::boolToString(*p != 0);
@@ -70,8 +59,8 @@ std::string assertText(const sema::Type* t, const uint8_t* p) {
         case TK::USInt: case TK::UInt: case TK::UDInt: case TK::ULInt: return stdlib::unsignedToString(loadUnsigned(p, t->size));
         case TK::Byte: case TK::Word: case TK::DWord: case TK::LWord:
             return fmt::format("0x{:0{}X}", loadUnsigned(p, t->size), t->size * 2);
-        case TK::Real: return wholeWithPoint(stdlib::formatReal(loadAs<float>(p)));
-        case TK::LReal: return wholeWithPoint(stdlib::formatLReal(loadAs<double>(p)));
+        case TK::Real: return stdlib::formatRealTwinCat(loadAs<float>(p));  // TcUnit's text is TwinCAT's
+        case TK::LReal: return stdlib::formatLRealTwinCat(loadAs<double>(p));
         case TK::Time: return stdlib::formatDuration(stdlib::timeValueToNs(loadAs<int32_t>(p)), "T#");
         case TK::LTime: return stdlib::formatDuration(loadAs<int64_t>(p), "LTIME#");
         case TK::Date: return stdlib::formatDate(stdlib::dateValueToNs(loadAs<uint32_t>(p)), "D#");

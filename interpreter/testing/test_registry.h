@@ -69,8 +69,19 @@ public:
     explicit FaultCapture(TestRegistry& r) : registry_(r) {}
     bool onAttention() override;
     void onFault(rt::DiagCode code, std::string_view pou, int line, std::string message, int file = -1, int col = 0) override;
+    // What the suite's code asks of its task (the task's start time, name,
+    // index, period, a log line) is the scheduler's answer, as outside a suite.
     rt::PlcTime currentTime() override { return inner->currentTime(); }
     int64_t calendarNanos() override { return inner->calendarNanos(); }
+    int64_t taskStartCalendarNanos() override { return inner->taskStartCalendarNanos(); }
+    rt::PlcTime currentTaskInterval() override { return inner->currentTaskInterval(); }
+    bool setCurrentTaskInterval(rt::PlcTime period) override { return inner->setCurrentTaskInterval(period); }
+    void onLog(std::string_view pou, int line, std::string message, int file, int col) override {
+        inner->onLog(pou, line, std::move(message), file, col);
+    }
+    std::string currentTaskName() const override { return inner->currentTaskName(); }
+    int currentTaskIndex() const override { return inner->currentTaskIndex(); }
+    bool taskInfo(int index, TaskInfo& out) const override { return inner->taskInfo(index, out); }
 
     rt::AttentionHandler* inner = nullptr;
     rt::Machine* machine = nullptr;
