@@ -47,6 +47,24 @@ struct CaseArms {
         return r;
     }
 
+    // Whether the labels fit a table: its lowest value and span (highest - lowest).
+    bool tableSpan(int64_t& lo, int64_t& span) const {
+        if (isUnsigned64 || entries.empty()) return false;
+        int64_t l = std::numeric_limits<int64_t>::max(), h = std::numeric_limits<int64_t>::min();
+        for (const Entry& e : entries) {
+            if (e.lo > e.hi) continue;
+            l = std::min(l, e.lo);
+            h = std::max(h, e.hi);
+        }
+        if (l > h || __builtin_sub_overflow(h, l, &span) || span >= kMaxTable) return false;
+        lo = l;
+        return true;
+    }
+    bool fitsTable() const {
+        int64_t lo = 0, span = 0;
+        return tableSpan(lo, span);
+    }
+
     void finish() {
         branches.clear();
         for (const Body& b : blocks) branches.push_back(branchOf(b));
@@ -55,15 +73,8 @@ struct CaseArms {
         tableStore.clear();
         table = nullptr;
         tableSize = 0;
-        if (isUnsigned64 || entries.empty()) return;
-        int64_t lo = std::numeric_limits<int64_t>::max(), hi = std::numeric_limits<int64_t>::min();
-        for (const Entry& e : entries) {
-            if (e.lo > e.hi) continue;
-            lo = std::min(lo, e.lo);
-            hi = std::max(hi, e.hi);
-        }
-        int64_t span = 0;
-        if (lo > hi || __builtin_sub_overflow(hi, lo, &span) || span >= kMaxTable) return;
+        int64_t lo = 0, span = 0;
+        if (!tableSpan(lo, span)) return;
         tableStore.assign(static_cast<size_t>(span + 1), nullptr);
         for (const Entry& e : entries)
             for (int64_t v = e.lo; v <= e.hi && e.lo <= e.hi; ++v) {
@@ -73,7 +84,7 @@ struct CaseArms {
         for (const Branch*& slot : tableStore)
             if (!slot) slot = elseBranch;
         tableLo = lo;
-        tableSize = tableStore.size();
+        tableSize = tableStore.size();  // span + 1: never 0
         table = tableStore.data();
     }
 
@@ -91,9 +102,11 @@ struct CaseArms {
     [[gnu::noinline]] static Flow runBody(const Body* b, Ctx& c) { return b->run(c); }
 
     // Runs the branch of selector value v, ticking exactly as Body::run.
+    // TABLE: the arms have a table (fitsTable()), so it is not tested.
+    template <bool TABLE = false>
     [[gnu::always_inline]] inline Flow dispatch(Ctx& c, int64_t v) const {
         const Branch* b;
-        if (__builtin_expect(tableSize != 0, 1)) {
+        if (TABLE || __builtin_expect(tableSize != 0, 1)) {
             uint64_t k = static_cast<uint64_t>(v) - static_cast<uint64_t>(tableLo);
             b = k < tableSize ? table[k] : elseBranch;
         } else {
@@ -117,14 +130,14 @@ struct CaseStmt final : Stmt {
 
 // CASE on a variable of signed storage type T (INT and enumerations: int16_t;
 // DINT: int32_t) of the current instance (Self) or frame (Frame): read as
-// VarNode<T, B>::i reads it.
+// VarNode<T, B>::i reads it. Only for labels that fit a table.
 template <class T, BaseKind B>
 struct CaseOnVar final : Stmt {
     static_assert(std::is_signed_v<T> && std::is_integral_v<T>);
     uint32_t off = 0;
     CaseArms arms;
     explicit CaseOnVar(uint32_t o) : off(o) {}
-    Flow exec(Ctx& c) override { return arms.dispatch(c, static_cast<int64_t>(loadAs<T>(baseOf<B>(c, nullptr) + off))); }
+    Flow exec(Ctx& c) override { return arms.dispatch<true>(c, static_cast<int64_t>(loadAs<T>(baseOf<B>(c, nullptr) + off))); }
 };
 
 }  // namespace strun::exec

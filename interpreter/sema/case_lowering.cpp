@@ -18,10 +18,12 @@ exec::Stmt* onVar(exec::NodePool& pool, exec::Expr* selector, exec::CaseArms& ar
 
 exec::Stmt* makeCaseNode(exec::NodePool& pool, exec::Expr* selector, exec::CaseArms&& arms) {
     using exec::BaseKind;
-    if (exec::Stmt* n = onVar<int32_t, BaseKind::Self>(pool, selector, arms)) return n;
-    if (exec::Stmt* n = onVar<int16_t, BaseKind::Self>(pool, selector, arms)) return n;
-    if (exec::Stmt* n = onVar<int32_t, BaseKind::Frame>(pool, selector, arms)) return n;
-    if (exec::Stmt* n = onVar<int16_t, BaseKind::Frame>(pool, selector, arms)) return n;
+    if (arms.fitsTable()) {  // CaseOnVar does not test for the table
+        if (exec::Stmt* n = onVar<int32_t, BaseKind::Self>(pool, selector, arms)) return n;
+        if (exec::Stmt* n = onVar<int16_t, BaseKind::Self>(pool, selector, arms)) return n;
+        if (exec::Stmt* n = onVar<int32_t, BaseKind::Frame>(pool, selector, arms)) return n;
+        if (exec::Stmt* n = onVar<int16_t, BaseKind::Frame>(pool, selector, arms)) return n;
+    }
     auto* n = pool.make<exec::CaseStmt>();
     n->selector = selector;
     n->arms = std::move(arms);

@@ -1,6 +1,7 @@
 // Lowering of a checked CASE to its node (interpreter/exec/case_nodes.h):
 // the selector read inside the node when it is a plain INT/enumeration or
-// DINT variable of the instance or frame (decision 0352).
+// DINT variable of the instance or frame and the labels fit a table
+// (decision 0352).
 #pragma once
 
 #include "interpreter/exec/case_nodes.h"
