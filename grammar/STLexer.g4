@@ -170,7 +170,7 @@ UNTERMINATED_PRAGMA : '{' ~[}]* EOF -> channel(ERRORS);
 // Time and date literals come before TYPED_LITERAL: for the same prefix the
 // longer (complete) match wins, and on a tie the earlier rule.
 DURATION_LITERAL
-    : (T | T I M E | L T | L T I M E) '#' ('+' | '-')? DURATION_PART+
+    : (T | T I M E | L T | L T I M E) '#' [ \t]* ('+' | '-')? DURATION_PART+  // `T# 30ms`: matiec's T# is a token of its own (decision 0357)
     ;
 DATE_LITERAL
     : (D | D A T E | L D | L D A T E) '#' DATE_VALUE

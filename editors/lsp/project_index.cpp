@@ -268,6 +268,7 @@ void ProjectIndex::collectVars(const std::vector<ast::VarBlock>& blocks, int par
     for (const auto& block : blocks)
         for (const auto& decl : block.vars)
             for (size_t n = 0; n < decl.names.size(); ++n) {
+                if (decl.names[n].find('$') != std::string::npos) continue;  // the checker's own (`inst$ENO`, decision 0358)
                 Symbol s;
                 s.kind = SymbolKind::Variable;
                 s.name = decl.names[n];

@@ -251,7 +251,14 @@ ExprPtr AstBuilder::literal(const antlr4::Token* token) {
         case L::TRUE: case L::FALSE: e->lit = LitKind::Bool; break;
         case L::STRING_LITERAL: e->lit = LitKind::String; break;
         case L::WSTRING_LITERAL: e->lit = LitKind::WString; break;
-        case L::DURATION_LITERAL: e->lit = LitKind::Duration; break;
+        case L::DURATION_LITERAL: {
+            e->lit = LitKind::Duration;
+            // `T# 30ms` (matiec): the blanks after '#' are no part of the value (decision 0357).
+            const auto hash = e->text.find('#');
+            const auto value = e->text.find_first_not_of(" \t", hash + 1);
+            if (hash != std::string::npos && value != std::string::npos && value > hash + 1) e->text.erase(hash + 1, value - hash - 1);
+            break;
+        }
         case L::DATE_LITERAL: e->lit = LitKind::Date; break;
         case L::TOD_LITERAL: e->lit = LitKind::TimeOfDay; break;
         case L::DT_LITERAL: e->lit = LitKind::DateTime; break;

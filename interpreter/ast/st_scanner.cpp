@@ -323,6 +323,7 @@ private:
     size_t duration(std::string_view word, size_t hash) const {
         if (!isOneOf(word, {"T", "TIME", "LT", "LTIME"})) return 0;
         size_t i = hash + 1;
+        while (at(i) == ' ' || at(i) == '\t') ++i;  // `T# 30ms`, as matiec (Beremiz, OpenPLC) reads it (decision 0357)
         if (at(i) == '+' || at(i) == '-') ++i;
         size_t part = durationPart(i);
         if (part == 0) return 0;

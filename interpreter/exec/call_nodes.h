@@ -544,4 +544,27 @@ struct EnEnoCall final : Expr {
     double f(Ctx& c) override { return enabled(c) ? call->f(c) : 0.0; }
 };
 
+// A function-block call with EN/ENO (IEC 61131-3; Beremiz writes
+// `TON3(EN := x, IN := ...)` for LD rungs): EN is evaluated once into a
+// temporary; the call (inputs, body, outputs) runs only when it is TRUE, so
+// a block not enabled keeps its outputs; then every ENO place receives EN
+// (`ENO => v`, the instance's ENO read as `inst.ENO`; decision 0358).
+// Calls without EN/ENO never pass through here.
+struct FbEnEnoStmt final : Stmt {
+    Stmt* storeEn;  // temp := EN
+    Expr* en;       // reads the temp
+    Stmt* call;
+    std::vector<Stmt*> storeEno;  // each: place := temp
+    FbEnEnoStmt(Stmt* s, Expr* e, Stmt* f, std::vector<Stmt*> o) : storeEn(s), en(e), call(f), storeEno(std::move(o)) {}
+    Flow exec(Ctx& c) override {
+        storeEn->exec(c);
+        if (en->i(c) != 0) {
+            const Flow f = call->exec(c);
+            if (f != Flow::Next) return f;
+        }
+        for (Stmt* s : storeEno) s->exec(c);
+        return Flow::Next;
+    }
+};
+
 }  // namespace strun::exec

@@ -430,6 +430,11 @@ private:
     static bool hasEnEno(const ast::Expr& call);
     Checked checkEnEnoCall(const ast::Expr& e, bool statement);
     std::vector<ast::ExprPtr> enEnoCalls_;
+    // EN/ENO on a function-block call and `inst.ENO` (checker_fb_en_eno.cpp, decision 0358).
+    VarSym* fbEnoSlot(const ast::Expr& instance);
+    bool usesFbEnEno(const Checked& inst, const ast::Expr& call);
+    bool checkFbEnoRead(const ast::Expr& member, Checked& out);
+    exec::Stmt* callFunctionBlockEnEno(Checked inst, const ast::Expr& e);
     // `A` of `A.B.C`: a local variable named like it makes the chain a member access.
     static const ast::Expr& chainRoot(const ast::Expr& e);
     std::map<std::string, std::pair<const Type*, const Enumerator*>> enumValues_;  // unqualified, unique ones

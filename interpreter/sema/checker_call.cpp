@@ -42,7 +42,14 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
     // A variable of unknown type is not declared: positional arguments cannot be
     // matched to the inputs, and the unknown type was the error.
     if (positionalCount > 0 && ck.hasUnresolvedVariables(owner)) return false;
-    if (positionalCount > inputsInOrder.size()) {
+    // A call of positional arguments only may go on past the inputs to the
+    // outputs, in declaration order, as matiec (Beremiz, OpenPLC) binds them:
+    // `pid1(TRUE, pv, sp, 0.0, kp, tr, td, cycle, xout)` (decision 0361).
+    std::vector<VarSym*> outputsInOrder;
+    if (positionalCount == call.args.size() && positionalCount > inputsInOrder.size() && !ck.compileOptions().strict)
+        for (VarSym* p : params)
+            if (p->section == ast::VarSection::Output) outputsInOrder.push_back(p);
+    if (positionalCount > inputsInOrder.size() + outputsInOrder.size()) {
         ck.error(diag::E0301, call.kids[0]->loc, fmt::format("too many arguments for '{}' (it takes {})", callee, inputsInOrder.size()));
         return false;
     }
@@ -65,6 +72,8 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
                 continue;
             }
             param = inputsInOrder[k];
+        } else if (a.name.empty() && positional >= inputsInOrder.size() && positional < inputsInOrder.size() + outputsInOrder.size()) {
+            param = outputsInOrder[positional++ - inputsInOrder.size()];
         } else if (a.name.empty()) {
             if (positional >= inputsInOrder.size()) {
                 if (!ck.hasUnresolvedVariables(owner))
@@ -613,8 +622,11 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
         if (direct && !isAggregate(p->type) && fuseArgBind(repOf(p->type), p->offset, cv.node, bind)) call->binds.push_back(bind);
         else direct = false;
     }
+    // After an argument that did not bind (reported, or a parameter whose type is
+    // unknown, reported at its declaration) an unconnected VAR_IN_OUT is a follow-on.
+    const bool reportUnconnected = ok && !hasUnresolvedVariables(fn);
     for (VarSym* p : fn->params)
-        if (p->byRef && !connected.count(p)) {
+        if (p->byRef && !connected.count(p) && reportUnconnected) {
             error(diag::E0301, e.loc, fmt::format("VAR_IN_OUT '{}' of '{}' must be connected", p->name, fn->name));
             ok = false;
         }

@@ -9,6 +9,7 @@
 #include "interpreter/sema/attributes.h"
 #include "interpreter/sema/any_argument.h"
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/fb_eno_slots.h"
 #include "interpreter/sema/node_factory.h"
 
 namespace strun::sema {
@@ -84,6 +85,7 @@ PouInfo* Checker::pouNamed(const std::string& written) const {
 
 void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
     addNamespacePath(namespaces_, pou->nameSpace);
+    addFbEnoSlots(*pou);  // the ENO of its instances called with EN/ENO (decision 0358)
     auto info = std::make_unique<PouInfo>();
     info->ast = pou;
     info->kind = pou->kind;
@@ -815,6 +817,11 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     // Two named lists may both declare a name (GVL_A.x, GVL_B.x); within one
     // list, or beside a global of no list, it is a duplicate.
     VarSym* other = existing == globals_.end() ? nullptr : existing->second;
+    // The project's own global named like a library's (TCPADS_MAXUDP_BUFFSIZE in a
+    // project's GVL): the project's takes the name, as a user POU or type named
+    // like a library's does; TwinCAT keeps the library's behind its namespace.
+    const bool replacesLibraryGlobal = other && libraryFiles_.count(other->loc.file) && !libraryFiles_.count(loc.file);
+    if (replacesLibraryGlobal) other = nullptr;
     if (other && (other->listName.empty() || declaringList_.empty() || listGlobals_.count(upper(declaringList_) + "." + key))) {
         error(diag::E0106, loc, fmt::format("duplicate global variable '{}'", name));
         return nullptr;

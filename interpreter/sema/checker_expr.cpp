@@ -776,6 +776,7 @@ Checked Checker::partialAccess(Checked base, const std::string& key, const std::
 
 Checked Checker::checkMember(const ast::Expr& e) {
     const ast::Expr& baseExpr = *e.kids[0];
+    if (Checked eno; checkFbEnoRead(e, eno)) return eno;  // inst.ENO (decision 0358)
     if (isNamespace(baseExpr) && !lookupVar(upper(chainRoot(baseExpr).name))) {
         ast::Expr plain;
         plain.kind = ast::ExprKind::Name;
@@ -1283,7 +1284,12 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         const Type* en = enumToInt ? from : target;
         // {attribute 'strict'} refuses an integer becoming the enumeration; reading
         // the enumeration as an integer stays allowed, as in TwinCAT/CODESYS (decision 0334).
-        if (en->strictEnum && intToEnum) {
+        // A constant that is one of its values may still be assigned, as the attribute's
+        // documentation words it ("a constant value which is not an enumeration value").
+        bool isOneOfItsValues = false;
+        if (en->strictEnum && intToEnum && e.isConst)
+            for (const Enumerator& v : en->enumerators) isOneOfItsValues = isOneOfItsValues || v.value == e.constInt;
+        if (en->strictEnum && intToEnum && !isOneOfItsValues) {
             error(diag::E0201, loc, fmt::format("{}: cannot convert {} to {} implicitly; '{}' has {{attribute 'strict'}}", what, typeName(from),
                                    typeName(target), en->name));
             return bad(loc);

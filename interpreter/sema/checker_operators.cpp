@@ -435,6 +435,12 @@ Checked Checker::makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& l
     if (isCharType(a.type->kind) && isStringType(b.type->kind) && b.isConst) b = coerce(b, a.type, b.loc, "operand");
     else if (isCharType(b.type->kind) && isStringType(a.type->kind) && a.isConst) a = coerce(a, b.type, a.loc, "operand");
     if (!a.ok || !b.ok) return bad(loc);
+    // A BOOL compared with the literal 0 or 1: IEC's boolean literals, as matiec
+    // (Beremiz, OpenPLC) reads `IF INIT = 0 THEN` (decision 0359).
+    auto boolLiteral = [](const Checked& c) { return c.untypedInt && c.isConst && (c.constInt == 0 || c.constInt == 1); };
+    if (a.type->kind == TK::Bool && boolLiteral(b)) b = coerce(b, a.type, b.loc, "operand");
+    else if (b.type->kind == TK::Bool && boolLiteral(a)) a = coerce(a, b.type, a.loc, "operand");
+    if (!a.ok || !b.ok) return bad(loc);
     // An integer compared with an enumeration value compares with the value's
     // integer (`UDINT_TO_INT(any.TypeClass) = IBaseLibrary.TypeClass.TYPE_INT`,
     // as TcUnit writes it; CODESYS/TwinCAT accept it): decision 0302. Not with --strict.

@@ -431,7 +431,8 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                 if (!isMethod) {
                     Checked inst = checkExpr(callee);
                     if (!inst.ok) return nullptr;
-                    if (inst.type->kind == TK::FunctionBlock) return callFunctionBlock(inst, *s.expr);
+                    if (inst.type->kind == TK::FunctionBlock)
+                        return usesFbEnEno(inst, *s.expr) ? callFunctionBlockEnEno(inst, *s.expr) : callFunctionBlock(inst, *s.expr);
                 }
             }
             Checked c = checkCall(*s.expr, true);

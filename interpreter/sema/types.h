@@ -73,7 +73,7 @@ struct Type {
     const Type* target = nullptr;
     // default initial value of an Enum (first enumerator unless given)
     int64_t enumDefault = 0;
-    // Enum with {attribute 'strict'}: never converts to or from an integer implicitly.
+    // Enum with {attribute 'strict'}: no integer becomes it (but a constant that is one of its values), no arithmetic (decision 0334).
     bool strictEnum = false;
     // Enum with {attribute 'to_string'}: TO_STRING gives the value's name (TwinCAT, CODESYS).
     bool enumToString = false;

@@ -316,7 +316,15 @@ const std::vector<CodeInfo> kCatalogue = {
     {"W0042", K::Warning, "a file of a directory argument is skipped",
      "A `.xml` file found in a directory given on the command line is not a PLCopen TC6 project (a JUnit report, "
      "another tool's settings): it is left out of the project with this warning instead of stopping the compile "
-     "(decision 0208). Named on the command line itself, such a file is an error (E0008).",
+     "(decision 0208). Named on the command line itself, such a file is an error (E0008). In a Beremiz / OpenPLC "
+     "Editor folder (beremiz.xml beside plc.xml) only plc.xml and the globals of its C/Python extensions are read: "
+     "one warning at beremiz.xml names every other source left out, such as the ST Beremiz generated into build/ "
+     "(decision 0356).",
+     "", ""},
+    {"W0043", K::Warning, "a part of a PLCopen export is left out",
+     "A CODESYS export of a project with several devices holds one configuration per device's application; "
+     "strun runs one PLC, the first configuration, and skips the others with this warning (decision 0337). "
+     "Export the one application you want to run to run another.",
      "", ""},
     {"ARRAY_BOUNDS", K::Runtime, "array subscript out of range (runtime)",
      "An array subscript was outside the declared bounds while the program ran. The faulty read yields 0 and the "

@@ -343,7 +343,8 @@ struct Reader : XmlConversion {
         for (pugi::xml_node g : children(c, "globalVars")) varSection(g, "VAR_GLOBAL");
         for (pugi::xml_node r : children(c, "resource")) {
             written(r, std::string("RESOURCE ") + r.attribute("name").value() + " ON PLC");
-            for (pugi::xml_node g : children(r, "globalVars")) varSection(g, "VAR_GLOBAL");
+            for (pugi::xml_node g : children(r, "globalVars"))
+                if (!g.attribute("name")) varSection(g, "VAR_GLOBAL");  // a named one is a list of its own (run())
             for (pugi::xml_node t : children(r, "task")) {
                 std::string params;
                 if (t.attribute("interval")) params += "INTERVAL := " + durationLiteral(t.attribute("interval").value());
@@ -361,15 +362,29 @@ struct Reader : XmlConversion {
         written(c, "END_CONFIGURATION");
     }
 
-    // Named global variable lists CODESYS exports in addData: NAMESPACE name + VAR_GLOBAL (decision 0094).
+    // One named global variable list: NAMESPACE name + VAR_GLOBAL (decision 0094).
+    // A list that mixes CONSTANT and other variables is exported with the
+    // first section's attributes on the whole list and the real sections in
+    // <addData><data name=".../mixedattrsvarlist"><MixedAttrsVarList>: those
+    // are taken instead (decision 0337).
+    void namedList(const pugi::xml_node& g) {
+        written(g, std::string("NAMESPACE ") + g.attribute("name").value());
+        std::vector<pugi::xml_node> sections;
+        for (pugi::xml_node data : children(child(g, "addData"), "data"))
+            for (pugi::xml_node mixed : children(data, "MixedAttrsVarList"))
+                for (pugi::xml_node part : children(mixed, "globalVars")) sections.push_back(part);
+        if (sections.empty()) sections.push_back(g);
+        for (pugi::xml_node part : sections) varSection(part, "VAR_GLOBAL");
+        written(g, "END_NAMESPACE");
+    }
+
+    // Named global variable lists CODESYS exports in addData (decision 0094).
     void namedGlobalLists(const pugi::xml_node& n, int depth) {
         if (depth > kMaxTypeDepth) return;
         for (pugi::xml_node c : n.children()) {
             if (c.type() != pugi::node_element) continue;
             if (localName(c) == "globalVars" && c.attribute("name") && localName(c.parent()) == "data") {
-                written(c, std::string("NAMESPACE ") + c.attribute("name").value());
-                varSection(c, "VAR_GLOBAL");
-                written(c, "END_NAMESPACE");
+                namedList(c);
             } else {
                 namedGlobalLists(c, depth + 1);
             }
@@ -411,7 +426,24 @@ struct Reader : XmlConversion {
         }
         addDataDeclarations(child(project, "instances"), 0, declared);
         namedGlobalLists(project, 0);
-        for (pugi::xml_node c : children(child(child(project, "instances"), "configurations"), "configuration")) configuration(c);
+        // A CODESYS project with several devices exports one configuration per
+        // device's application; strun runs one PLC: the first (decision 0337).
+        bool first = true;
+        for (pugi::xml_node c : children(child(child(project, "instances"), "configurations"), "configuration")) {
+            if (!first) {
+                const auto [line, col] = where(c);
+                result.warnings.push_back({line, col, std::string("configuration '") + c.attribute("name").value() +
+                                                             "' is skipped: strun runs one PLC, the export's first configuration"});
+                continue;
+            }
+            first = false;
+            // A resource's named global lists (GVL_MQTT of an application) are
+            // lists of their own, read as GVL_MQTT.x everywhere.
+            for (pugi::xml_node r : children(c, "resource"))
+                for (pugi::xml_node g : children(r, "globalVars"))
+                    if (g.attribute("name")) namedList(g);
+            configuration(c);
+        }
         result.text = std::move(out.text());
         result.origins = std::move(out.origins());
     }

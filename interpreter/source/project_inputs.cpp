@@ -6,6 +6,8 @@
 #include <set>
 #include <system_error>
 
+#include "interpreter/source/beremiz_project.h"
+#include "interpreter/source/beremiz_standard_blocks.h"
 #include "interpreter/source/read_source.h"
 #include "interpreter/source/st_textual_sfc.h"
 #include "interpreter/source/twincat_plc_project.h"
@@ -61,6 +63,20 @@ void applyPlcProjects(const std::vector<std::string>& plcProjects, std::vector<s
     std::erase_if(found, [&](const std::string& f) { return isTwinCatObject(f) && !compiled.count(lowerPath(f)); });
 }
 
+// A file converted to ST into the SourceSet, with the errors of its conversion.
+void addConverted(const std::string& path, std::string text, Converted converted, SourceSet& sources, std::vector<int>& userFiles,
+                  CompileLog& log) {
+    if (!converted.errors.empty() || !converted.warnings.empty()) {
+        // Positions of these messages are in the XML itself: a view of the file without conversion.
+        int raw = sources.add(path, "", {}, text);
+        for (const auto& w : converted.warnings) log.warning(diag::W0043, ast::Loc{raw, w.line, w.col}, w.message);
+        // Whatever the readers could not convert makes the file unusable as a source: E0008.
+        for (const auto& e : converted.errors) log.error(diag::E0008, ast::Loc{raw, e.line, e.col}, e.message);
+    }
+    // The XML stays beside the ST made from it: diagnostics quote the file the user has.
+    userFiles.push_back(sources.add(path, std::move(converted.text), std::move(converted.origins), std::move(text)));
+}
+
 // One file into the SourceSet: converted when it is XML.
 void addFile(const std::string& path, std::string text, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log,
              bool foundInDirectory) {
@@ -90,14 +106,44 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
         userFiles.push_back(sources.add(path, std::move(text)));
         return;
     }
-    if (!converted.errors.empty()) {
-        // Positions of these messages are in the XML itself: a view of the file without conversion.
-        int raw = sources.add(path, "", {}, text);
-        // Whatever the readers could not convert makes the file unusable as a source: E0008.
-        for (const auto& e : converted.errors) log.error(diag::E0008, ast::Loc{raw, e.line, e.col}, e.message);
-    }
-    // The XML stays beside the ST made from it: diagnostics quote the file the user has.
-    userFiles.push_back(sources.add(path, std::move(converted.text), std::move(converted.origins), std::move(text)));
+    addConverted(path, std::move(text), std::move(converted), sources, userFiles, log);
+}
+
+// What a Beremiz project adds to its plc.xml (decision 0356): the globals of
+// its C and Python extensions, matiec's blocks it uses (decision 0360), and,
+// when `warnSkipped`, the warning naming the sources under it left out.
+void addBeremizProject(BeremizFolder& folder, bool warnSkipped, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log) {
+    // The globals of its C and Python extensions are part of it, as Beremiz adds them.
+    std::erase_if(folder.skipped, [&](const std::string& f) {
+        std::string text, unused;
+        if (lowerExtension(f) != ".xml" || !readSourceText(f, projectBytes(sources), text, unused)) return false;
+        Converted globals = readBeremizExtensionGlobals(text);
+        if (globals.text.empty() && globals.errors.empty()) return false;
+        addConverted(f, std::move(text), std::move(globals), sources, userFiles, log);
+        return true;
+    });
+    std::string xml, unused;
+    if (readSourceText(folder.program, projectBytes(sources), xml, unused))
+        if (std::string blocks = beremizStandardBlocks(xml); !blocks.empty())
+            userFiles.push_back(sources.add(kBeremizStandardBlocksPath, std::move(blocks)));
+    if (!warnSkipped || folder.skipped.empty()) return;
+    std::string settings;  // quoted under the warning
+    if (!readSourceText(folder.settings, projectBytes(sources), settings, unused)) settings.clear();
+    int raw = sources.add(folder.settings, "", {}, std::move(settings));
+    Diagnostic& d = log.warning(diag::W0042, ast::Loc{raw, 1, 1},
+                                "a Beremiz/OpenPLC project folder: plc.xml is compiled, the other sources in it are skipped");
+    for (const std::string& f : folder.skipped) d.note(beremizSkipReason(folder, f));
+}
+
+// The sources under `dir`, recursively (an unreadable part is left out).
+std::vector<std::string> sourcesUnder(const std::string& dir) {
+    std::vector<std::string> found;
+    std::error_code ec;
+    fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end;
+    for (; !ec && it != end; it.increment(ec))
+        if (it->is_regular_file(ec) && isProjectSource(it->path().string())) found.push_back(it->path().string());
+    std::sort(found.begin(), found.end());
+    return found;
 }
 
 }  // namespace
@@ -134,6 +180,9 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
             }
             std::sort(plcProjects.begin(), plcProjects.end());
             applyPlcProjects(plcProjects, found, sources);
+            std::sort(found.begin(), found.end());
+            // A Beremiz / OpenPLC Editor folder is its plc.xml (decision 0356).
+            for (BeremizFolder& folder : takeBeremizFolders(found)) addBeremizProject(folder, true, sources, userFiles, log);
             if (found.empty()) {
                 usageError = "'" + path + "' contains no source files (.st, PLCopen .xml, .TcPOU, .TcDUT, .TcGVL, .TcIO)";
                 return false;
@@ -163,6 +212,12 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
             return false;
         }
         if (!readSourceText(path, projectBytes(sources), text, usageError)) return false;
+        // plc.xml named on its own, beside beremiz.xml: the Beremiz project, without the warning (decision 0356).
+        if (fs::path(path).filename() == "plc.xml" && fs::exists(fs::path(path).parent_path() / "beremiz.xml", ec)) {
+            std::vector<std::string> under = sourcesUnder(fs::path(path).parent_path().empty() ? "." : fs::path(path).parent_path().string());
+            for (BeremizFolder& folder : takeBeremizFolders(under))
+                if (fs::equivalent(folder.program, path, ec)) addBeremizProject(folder, false, sources, userFiles, log);
+        }
         addFile(path, std::move(text), sources, userFiles, log, false);
     }
     return true;

@@ -20,6 +20,7 @@ struct Converted {
         std::string message;
     };
     std::vector<Problem> errors;
+    std::vector<Problem> warnings;  // what was read but left out (W0043)
 };
 
 Converted readTwinCat(const std::string& xml);

@@ -1,0 +1,95 @@
+// EN/ENO on a function-block call (decision 0358), as Beremiz and OpenPLC
+// write the blocks of an LD rung: `TON3(EN := x, IN := y, PT := T#5s);
+// TOF3(EN := TON3.ENO, ...)`. IEC 61131-3 gives every block the input EN and
+// the output ENO: a block not enabled is not called and keeps its outputs;
+// ENO is TRUE after a call that ran. A block that declares EN or ENO itself
+// keeps them as its own variables (decision 0333). Calls of other instances
+// are compiled as before and cost nothing more.
+#include "interpreter/ast/ast_clone.h"
+#include "interpreter/exec/call_nodes.h"
+#include "interpreter/sema/checker.h"
+#include "interpreter/sema/fb_eno_slots.h"
+#include "stdlib/number_scan.h"
+
+namespace strun::sema {
+
+namespace {
+bool isEn(const ast::Arg& a) { return !a.output && stdlib::equalsIgnoreCase(a.name, "EN"); }
+bool isEno(const ast::Arg& a) { return a.output && stdlib::equalsIgnoreCase(a.name, "ENO"); }
+
+// A block that declares EN or ENO itself: they are its own variables.
+bool ownsEnEno(const Type* instance) { return instance->findField("EN") || instance->findField("ENO"); }
+}  // namespace
+
+VarSym* Checker::fbEnoSlot(const ast::Expr& instance) {
+    if (instance.kind != ast::ExprKind::Name) return nullptr;
+    VarSym* slot = lookupVar(upper(enoSlotName(instance.name)));
+    return slot && slot->owner == pou_ ? slot : nullptr;
+}
+
+bool Checker::usesFbEnEno(const Checked& inst, const ast::Expr& call) {
+    if (ownsEnEno(inst.type)) return false;
+    return hasEnEno(call) || (!call.kids.empty() && fbEnoSlot(*call.kids[0]));
+}
+
+bool Checker::checkFbEnoRead(const ast::Expr& member, Checked& out) {
+    if (!stdlib::equalsIgnoreCase(member.name, "ENO") || member.kids.empty() || !fbEnoSlot(*member.kids[0])) return false;
+    const VarSym* v = lookupVar(upper(member.kids[0]->name));
+    if (!v || !v->type || v->type->kind != TK::FunctionBlock || ownsEnEno(v->type)) return false;
+    ast::Expr slot;
+    slot.kind = ast::ExprKind::Name;
+    slot.loc = member.loc;
+    slot.name = enoSlotName(member.kids[0]->name);
+    out = checkName(slot);
+    out.readOnly = true;  // an output of the block, as `inst.Q`
+    return true;
+}
+
+exec::Stmt* Checker::callFunctionBlockEnEno(Checked inst, const ast::Expr& e) {
+    const ast::Arg* en = nullptr;
+    const ast::Arg* eno = nullptr;
+    for (const ast::Arg& a : e.args) {
+        if (isEn(a)) en = &a;
+        if (isEno(a)) eno = &a;
+    }
+    ast::ExprPtr plain = ast::cloneExpr(e);
+    std::erase_if(plain->args, [](const ast::Arg& a) { return isEn(a) || isEno(a); });
+    const ast::Expr& call = *plain;
+    enEnoCalls_.push_back(std::move(plain));  // the checked nodes point into it
+
+    const Type* boolType = types().elementary(TK::Bool);
+    Checked enable = en && en->value ? checkExpr(*en->value) : constInt(1, boolType, e.loc);
+    if (!enable.ok) return nullptr;
+    enable = coerce(enable, boolType, en && en->value ? en->value->loc : e.loc, "EN");
+    if (!enable.ok) return nullptr;
+    exec::Expr* temp = tempPlace(boolType);
+    exec::Stmt* storeEn = storeTo(temp, boolType, enable.node, -1);
+
+    exec::Stmt* body = callFunctionBlock(inst, call);
+    if (!body) return nullptr;
+    Checked flag;
+    flag.ok = true;
+    flag.type = boolType;
+    flag.node = temp;  // the temporary EN was written to
+    std::vector<exec::Stmt*> storeEno;
+    if (eno && eno->value) {
+        flag.loc = eno->value->loc;
+        Checked target = checkExpr(*eno->value);
+        exec::Stmt* st = target.ok ? assignChecked(target, flag, eno->value->loc) : nullptr;
+        if (!st) return nullptr;
+        storeEno.push_back(st);
+    }
+    if (!e.kids.empty() && fbEnoSlot(*e.kids[0])) {
+        ast::Expr slot;
+        slot.kind = ast::ExprKind::Name;
+        slot.loc = e.loc;
+        slot.name = enoSlotName(e.kids[0]->name);
+        flag.loc = e.loc;
+        Checked place = checkName(slot);
+        place.readOnly = false;
+        if (exec::Stmt* st = place.ok ? assignChecked(place, flag, e.loc) : nullptr) storeEno.push_back(st);
+    }
+    return pool().make<exec::FbEnEnoStmt>(storeEn, temp, body, std::move(storeEno));
+}
+
+}  // namespace strun::sema
