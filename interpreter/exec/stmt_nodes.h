@@ -224,54 +224,7 @@ struct CondStmt final : Stmt {
     Flow exec(Ctx& c) override { return cond->i(c) ? then->exec(c) : Flow::Next; }
 };
 
-struct CaseStmt final : Stmt {
-    struct Entry { int64_t lo, hi; size_t block; };
-    Expr* selector;
-    bool isUnsigned64 = false;
-    std::vector<Entry> entries;  // in source order: the first match wins
-    std::vector<Body> blocks;
-    Body elseBlock;
-    // Dense labels (decision 0268): the branch of every selector value in
-    // [tableLo, tableLo + table.size()), kNoBranch for ELSE; empty: scan.
-    static constexpr uint16_t kNoBranch = 0xFFFF;
-    int64_t tableLo = 0;
-    std::vector<uint16_t> table;
-    // Builds `table` when the labels span at most kMaxTable values.
-    void buildTable() {
-        static constexpr int64_t kMaxTable = 1024;
-        table.clear();
-        if (isUnsigned64 || entries.empty() || blocks.size() >= kNoBranch) return;
-        int64_t lo = std::numeric_limits<int64_t>::max(), hi = std::numeric_limits<int64_t>::min();
-        for (const Entry& e : entries) {
-            if (e.lo > e.hi) continue;
-            lo = std::min(lo, e.lo);
-            hi = std::max(hi, e.hi);
-        }
-        int64_t span = 0;
-        if (lo > hi || __builtin_sub_overflow(hi, lo, &span) || span >= kMaxTable) return;
-        table.assign(static_cast<size_t>(hi - lo + 1), kNoBranch);
-        tableLo = lo;
-        for (const Entry& e : entries)
-            for (int64_t v = e.lo; v <= e.hi && e.lo <= e.hi; ++v) {
-                uint16_t& slot = table[static_cast<size_t>(v - lo)];
-                if (slot == kNoBranch) slot = static_cast<uint16_t>(e.block);  // the first match wins
-            }
-    }
-    Flow exec(Ctx& c) override {
-        int64_t v = selector->i(c);
-        if (!table.empty()) {
-            uint64_t k = static_cast<uint64_t>(v) - static_cast<uint64_t>(tableLo);
-            if (k < table.size() && table[k] != kNoBranch) return blocks[table[k]].run(c);
-            return elseBlock.run(c);
-        }
-        for (const Entry& e : entries) {
-            bool in = isUnsigned64 ? (static_cast<uint64_t>(v) >= static_cast<uint64_t>(e.lo) && static_cast<uint64_t>(v) <= static_cast<uint64_t>(e.hi))
-                                   : (v >= e.lo && v <= e.hi);
-            if (in) return blocks[e.block].run(c);
-        }
-        return elseBlock.run(c);
-    }
-};
+// CASE: interpreter/exec/case_nodes.h.
 
 // FOR v := from TO to BY step: bounds and step evaluated once; the control
 // variable is read back each iteration (CODESYS lets the body change it) and

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "interpreter/sema/case_lowering.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/fuse.h"
 #include "interpreter/sema/node_factory.h"
@@ -332,12 +333,11 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
         error(diag::E0503, s.expr->loc, fmt::format("the CASE selector must be an integer or an enumeration, not {}", typeName(st)));
         return nullptr;
     }
-    auto* n = pool().make<exec::CaseStmt>();
-    n->selector = sel.node;
-    n->isUnsigned64 = repOf(st) == Rep::U64;
+    exec::CaseArms arms;
+    arms.isUnsigned64 = repOf(st) == Rep::U64;
     std::map<int64_t, int64_t> used;
     for (const auto& br : s.cases) {
-        size_t index = n->blocks.size();
+        size_t index = arms.blocks.size();
         for (const auto& lab : br.labels) {
             auto one = [&](const ast::Expr* e, int64_t& out) -> bool {
                 Checked c = checkExpr(*e);
@@ -380,13 +380,12 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
                 error(diag::E0503, lab.lo->loc, fmt::format("CASE label {} is already used", lo == hi ? std::to_string(lo) : fmt::format("{}..{}", lo, hi)));
             else if (lo <= hi)
                 used.emplace(lo, hi);
-            n->entries.push_back({lo, hi, index});
+            arms.entries.push_back({lo, hi, index});
         }
-        n->blocks.push_back(checkBlock(br.body));
+        arms.blocks.push_back(checkBlock(br.body));
     }
-    if (s.elseBlock) n->elseBlock = checkBlock(*s.elseBlock);
-    n->buildTable();
-    return n;
+    if (s.elseBlock) arms.elseBlock = checkBlock(*s.elseBlock);
+    return makeCaseNode(pool(), sel.node, std::move(arms));
 }
 
 exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
