@@ -430,6 +430,18 @@ private:
     static bool hasEnEno(const ast::Expr& call);
     Checked checkEnEnoCall(const ast::Expr& e, bool statement);
     std::vector<ast::ExprPtr> enEnoCalls_;
+    // What a call with EN/ENO (function or block) becomes before its own call is
+    // checked: the call without EN and ENO, EN (default TRUE) stored into a BOOL
+    // temporary, and the ENO argument. False after an error (reported).
+    struct EnEnoParts {
+        const ast::Expr* call = nullptr;  // the call without EN/ENO (kept in enEnoCalls_)
+        const ast::Arg* eno = nullptr;
+        exec::Expr* temp = nullptr;       // the BOOL temporary EN was written to
+        exec::Stmt* storeEn = nullptr;
+    };
+    static bool isEnArgument(const ast::Arg& a);
+    static bool isEnoArgument(const ast::Arg& a);
+    bool splitEnEno(const ast::Expr& e, EnEnoParts& out);
     // EN/ENO on a function-block call and `inst.ENO` (checker_fb_en_eno.cpp, decision 0358).
     VarSym* fbEnoSlot(const ast::Expr& instance);
     bool usesFbEnEno(const Checked& inst, const ast::Expr& call);

@@ -11,38 +11,44 @@
 
 namespace strun::sema {
 
-namespace {
 // Without building an upper-case copy: checkCall asks this of every argument.
-bool isEn(const ast::Arg& a) { return !a.output && stdlib::equalsIgnoreCase(a.name, "EN"); }
-bool isEno(const ast::Arg& a) { return a.output && stdlib::equalsIgnoreCase(a.name, "ENO"); }
-}  // namespace
+bool Checker::isEnArgument(const ast::Arg& a) { return !a.output && stdlib::equalsIgnoreCase(a.name, "EN"); }
+bool Checker::isEnoArgument(const ast::Arg& a) { return a.output && stdlib::equalsIgnoreCase(a.name, "ENO"); }
 
 bool Checker::hasEnEno(const ast::Expr& call) {
     for (const ast::Arg& a : call.args)
-        if (isEn(a) || isEno(a)) return true;
+        if (isEnArgument(a) || isEnoArgument(a)) return true;
     return false;
 }
 
-Checked Checker::checkEnEnoCall(const ast::Expr& e, bool statement) {
+bool Checker::splitEnEno(const ast::Expr& e, EnEnoParts& out) {
     const ast::Arg* en = nullptr;
-    const ast::Arg* eno = nullptr;
     for (const ast::Arg& a : e.args) {
-        if (isEn(a)) en = &a;
-        if (isEno(a)) eno = &a;
+        if (isEnArgument(a)) en = &a;
+        if (isEnoArgument(a)) out.eno = &a;
     }
     ast::ExprPtr plain = ast::cloneExpr(e);
-    std::erase_if(plain->args, [](const ast::Arg& a) { return isEn(a) || isEno(a); });
-    const ast::Expr& call = *plain;
+    std::erase_if(plain->args, [](const ast::Arg& a) { return isEnArgument(a) || isEnoArgument(a); });
+    out.call = plain.get();
     enEnoCalls_.push_back(std::move(plain));  // the checked nodes point into it
-
     const Type* boolType = types().elementary(TK::Bool);
     Checked enable = en && en->value ? checkExpr(*en->value) : constInt(1, boolType, e.loc);
-    if (!enable.ok) return bad(e.loc);
+    if (!enable.ok) return false;
     enable = coerce(enable, boolType, en && en->value ? en->value->loc : e.loc, "EN");
-    if (!enable.ok) return bad(e.loc);
-    uint32_t offset = 0;
-    exec::Expr* temp = tempPlace(boolType, &offset);
-    exec::Stmt* storeEn = storeTo(temp, boolType, enable.node, -1);
+    if (!enable.ok) return false;
+    out.temp = tempPlace(boolType);
+    out.storeEn = storeTo(out.temp, boolType, enable.node, -1);
+    return true;
+}
+
+Checked Checker::checkEnEnoCall(const ast::Expr& e, bool statement) {
+    EnEnoParts parts;
+    if (!splitEnEno(e, parts)) return bad(e.loc);
+    const ast::Expr& call = *parts.call;
+    const ast::Arg* eno = parts.eno;
+    exec::Expr* temp = parts.temp;
+    exec::Stmt* storeEn = parts.storeEn;
+    const Type* boolType = types().elementary(TK::Bool);
 
     Checked inner = checkCall(call, statement);
     if (!inner.ok) return inner;

@@ -14,9 +14,6 @@
 namespace strun::sema {
 
 namespace {
-bool isFbEn(const ast::Arg& a) { return !a.output && stdlib::equalsIgnoreCase(a.name, "EN"); }
-bool isFbEno(const ast::Arg& a) { return a.output && stdlib::equalsIgnoreCase(a.name, "ENO"); }
-
 // A block that declares EN or ENO itself: they are its own variables.
 bool ownsEnEno(const Type* instance) { return instance->findField("EN") || instance->findField("ENO"); }
 }  // namespace
@@ -46,24 +43,13 @@ bool Checker::checkFbEnoRead(const ast::Expr& member, Checked& out) {
 }
 
 exec::Stmt* Checker::callFunctionBlockEnEno(Checked inst, const ast::Expr& e) {
-    const ast::Arg* en = nullptr;
-    const ast::Arg* eno = nullptr;
-    for (const ast::Arg& a : e.args) {
-        if (isFbEn(a)) en = &a;
-        if (isFbEno(a)) eno = &a;
-    }
-    ast::ExprPtr plain = ast::cloneExpr(e);
-    std::erase_if(plain->args, [](const ast::Arg& a) { return isFbEn(a) || isFbEno(a); });
-    const ast::Expr& call = *plain;
-    enEnoCalls_.push_back(std::move(plain));  // the checked nodes point into it
-
+    EnEnoParts parts;
+    if (!splitEnEno(e, parts)) return nullptr;
+    const ast::Expr& call = *parts.call;
+    const ast::Arg* eno = parts.eno;
+    exec::Expr* temp = parts.temp;
+    exec::Stmt* storeEn = parts.storeEn;
     const Type* boolType = types().elementary(TK::Bool);
-    Checked enable = en && en->value ? checkExpr(*en->value) : constInt(1, boolType, e.loc);
-    if (!enable.ok) return nullptr;
-    enable = coerce(enable, boolType, en && en->value ? en->value->loc : e.loc, "EN");
-    if (!enable.ok) return nullptr;
-    exec::Expr* temp = tempPlace(boolType);
-    exec::Stmt* storeEn = storeTo(temp, boolType, enable.node, -1);
 
     exec::Stmt* body = callFunctionBlock(inst, call);
     if (!body) return nullptr;
