@@ -9,6 +9,7 @@
 #include "interpreter/project/library_selection.h"
 #include "interpreter/project/missing_libraries.h"
 #include "interpreter/project/syntax_recovery.h"
+#include "interpreter/source/project_inputs.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/builtins/libraries/task_info.h"
 #include "interpreter/builtins/register_builtins.h"
@@ -31,15 +32,6 @@ std::unique_ptr<ParsedLibrary> parseLibrary(CompileLog& log) {
     library->units = ast::parseFiles(library->sources, files, log);
     return library;
 }
-
-namespace {
-// .TcPOU, .TcDUT, .TcGVL, .TcIO, .TcTLEO: a TwinCAT 3 object file.
-bool isTwinCatObjectFile(const std::string& path) {
-    const size_t dot = path.rfind('.');
-    return dot != std::string::npos && path.size() > dot + 3 && (path[dot + 1] == 'T' || path[dot + 1] == 't') &&
-           (path[dot + 2] == 'c' || path[dot + 2] == 'C');
-}
-}  // namespace
 
 std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
                                                    const sema::CompileOptions& options, ParsedLibrary* library,
@@ -129,7 +121,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     if (extras && extras->observer) checker.setExprObserver(extras->observer);
     checker.setLibraryFiles(libraryFiles);
     sema::CompileOptions effective = options;
-    for (int f : userFiles) effective.twincatRealText = effective.twincatRealText || isTwinCatObjectFile(sources.file(f).path);
+    for (int f : userFiles) effective.twincatRealText = effective.twincatRealText || source::isTwinCatObject(sources.file(f).path);
     checker.setCompileOptions(effective);
     if (const rt::PlcProfile* profile = rt::findProfile(options.target)) checker.setProfile(*profile);
     stdlib::registerBuiltins(checker);

@@ -25,11 +25,6 @@ std::string lowerExtension(const std::string& path) {
     return ext;
 }
 
-bool isTwinCatObject(const std::string& path) {
-    const std::string ext = lowerExtension(path);
-    return ext == ".tcpou" || ext == ".tcdut" || ext == ".tcgvl" || ext == ".tcio" || ext == ".tctto" || ext == ".tctleo";
-}
-
 std::string lowerPath(const fs::path& path) {
     std::string s = path.lexically_normal().generic_string();
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -153,6 +148,11 @@ void addProjectSourceText(const std::string& path, std::string text, SourceSet& 
 }
 
 const char* const kStdinName = "<stdin>";
+
+bool isTwinCatObject(const std::string& path) {
+    const std::string ext = lowerExtension(path);
+    return ext == ".tcpou" || ext == ".tcdut" || ext == ".tcgvl" || ext == ".tcio" || ext == ".tctto" || ext == ".tctleo";
+}
 
 bool isProjectSource(const std::string& path) {
     const std::string ext = lowerExtension(path);

@@ -11,6 +11,9 @@
 
 namespace strun::source {
 
+// A TwinCAT 3 object file (.TcPOU, .TcDUT, .TcGVL, .TcIO, .TcTTO, .TcTLEO), by extension.
+bool isTwinCatObject(const std::string& path);
+
 // What a directory contributes: ST, PLCopen XML and TwinCAT objects, by extension.
 bool isProjectSource(const std::string& path);
 
