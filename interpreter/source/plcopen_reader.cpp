@@ -5,6 +5,7 @@
 // the XML element they come from; ST bodies are copied with their positions,
 // LD, FBD and SFC bodies translated to ST (plcopen_network.cpp, plcopen_sfc.cpp).
 #include <cctype>
+#include <cstdio>
 #include <cstring>
 #include <set>
 
@@ -25,12 +26,28 @@ std::string upperCase(std::string s) {
     return s;
 }
 
-// TC6 v2.01 and v2.00: CODESYS V3, TwinCAT and Machine Expert export 2.00, Beremiz 2.01.
-constexpr const char* kTc6Namespaces[] = {"http://www.plcopen.org/xml/tc6_0201", "http://www.plcopen.org/xml/tc6_0200"};
+// TC6 v2.01 and v2.00: CODESYS V3, TwinCAT and Machine Expert export 2.00, Beremiz 2.01;
+// v1.0x (`tc6.xsd`): PLCOpenEditor and Beremiz before 2012 (decision 0349).
+constexpr const char* kTc6Namespaces[] = {"http://www.plcopen.org/xml/tc6_0201", "http://www.plcopen.org/xml/tc6_0200",
+                                          "http://www.plcopen.org/xml/tc6.xsd"};
 constexpr int kMaxTypeDepth = 64;  // nested type elements: far beyond real projects
 
-// ISO 8601 duration (PT0.01S, PT1H2M) or an IEC literal (T#10ms) -> an IEC literal.
+// An xsd:time `HH:MM:SS[.fraction]` (a task interval in TC6 v1.0x) -> T#..., or "" when it is not one.
+std::string clockDurationLiteral(const std::string& text) {
+    unsigned h = 0, m = 0, s = 0;
+    int used = 0;
+    if (std::sscanf(text.c_str(), "%2u:%2u:%2u%n", &h, &m, &s, &used) != 3 || m > 59 || s > 59) return "";
+    std::string fraction = text.substr(static_cast<size_t>(used));
+    if (!fraction.empty() && (fraction[0] != '.' || fraction.size() == 1 ||
+                              fraction.find_first_not_of("0123456789", 1) != std::string::npos))
+        return "";
+    return "T#" + std::to_string(h) + "h" + std::to_string(m) + "m" + std::to_string(s) + fraction + "s";
+}
+
+// ISO 8601 duration (PT0.01S, PT1H2M), xsd:time (00:00:00.100000) or an IEC
+// literal (T#10ms) -> an IEC literal.
 std::string durationLiteral(std::string text) {
+    if (std::string clock = clockDurationLiteral(text); !clock.empty()) return clock;
     if (text.size() > 2 && (text[0] == 'P' || text[0] == 'p')) {
         std::string out = "T#";
         bool inTime = false;
@@ -120,13 +137,30 @@ struct PlcopenReader : XmlConversion {
         return "";
     }
 
+    // TC6 v1.0x exports (PLCOpenEditor, early Beremiz) write a STRING's
+    // initial value as the bare text (`<simpleValue value="str test name"/>`);
+    // v2 exports write the ST literal ('...'). A bare one is quoted here.
+    std::string stringValueQuoted(const pugi::xml_node& type, const pugi::xml_node& init, const std::string& v) {
+        const std::string kind = localName(firstElement(type));
+        const bool wide = kind == "wstring";
+        if ((kind != "string" && !wide) || localName(firstElement(init)) != "simpleValue") return v;
+        const char quote = wide ? '"' : '\'';
+        if (!v.empty() && v.front() == quote) return v;
+        std::string out(1, quote);
+        for (char c : v) {
+            if (c == '$' || c == quote) out.push_back('$');
+            out.push_back(c);
+        }
+        return out + quote;
+    }
+
     void variable(const pugi::xml_node& var) {
         std::string line = std::string("    ") + var.attribute("name").value();
         if (var.attribute("address")) line += std::string(" AT ") + var.attribute("address").value();
         line += " : " + typeText(child(var, "type"));
         if (pugi::xml_node init = child(var, "initialValue")) {
             std::string v = valueText(init);
-            if (!v.empty()) line += " := " + v;
+            if (!v.empty()) line += " := " + stringValueQuoted(child(var, "type"), init, v);
         }
         written(var, line + ";");
     }
@@ -332,9 +366,10 @@ struct PlcopenReader : XmlConversion {
     }
 
     // CODESYS writes a task's program call as <pouInstance name="PLC_PRG" typeName="">:
-    // the program of that name.
+    // the program of that name. TC6 v1.0x names the type in `type`.
     static std::string instanceType(const pugi::xml_node& inst) {
         std::string type = inst.attribute("typeName").value();
+        if (type.empty()) type = inst.attribute("type").value();  // TC6 v1.0x
         return type.empty() ? inst.attribute("name").value() : type;
     }
 

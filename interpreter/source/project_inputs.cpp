@@ -87,7 +87,7 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
                 log.warning(diag::W0042, ast::Loc{raw, 1, 1}, "not a PLCopen TC6 XML project: skipped");
                 return;
             }
-            log.error(diag::E0008, ast::Loc{raw, 1, 1}, "not a PLCopen TC6 XML project (the root must be <project> in namespace http://www.plcopen.org/xml/tc6_0201)");
+            log.error(diag::E0008, ast::Loc{raw, 1, 1}, "not a PLCopen TC6 XML project (the root must be <project> in namespace http://www.plcopen.org/xml/tc6_0201, tc6_0200 or tc6.xsd)");
             return;
         }
         converted = readPlcOpen(text);
