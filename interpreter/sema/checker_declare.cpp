@@ -583,7 +583,9 @@ void Checker::layoutPou(PouInfo* pou) {
                 auto v = std::make_unique<VarSym>();
                 // A function renamed to its qualified name (decision 0325) still
                 // assigns its result by its own name.
-                v->name = pou->property ? pou->property->name : pou->name.substr(pou->name.rfind('.') + 1);
+                // An overload renamed "F(INT)" (decision 0362) likewise.
+                const std::string plain = pou->name.substr(0, pou->name.find('('));
+                v->name = pou->property ? pou->property->name : plain.substr(plain.rfind('.') + 1);
                 v->loc = pou->ast->loc;
                 v->type = pou->resultType;
                 v->section = ast::VarSection::Output;

@@ -1392,4 +1392,7 @@ Checked Checker::foldIfConst(Checked r, std::initializer_list<const Checked*> op
     return r;
 }
 
+// For overload resolution (checker_overloads.cpp): the silent IEC conversions.
+bool iecWidening(const Type* from, const Type* to) { return iecImplicit(from, to); }
+
 }  // namespace strun::sema

@@ -22,6 +22,7 @@ namespace strun::testing {
 struct Failure {
     int file = -1;  // SourceSet index of the assertion (or faulting statement); -1 unknown
     int line = 0;
+    std::string filePath;  // file < 0: the path as text (AxUnit's {CallerFilePath}), "" unknown
     std::string expected, actual, message;
     std::string fault;  // non-empty: "ARRAY_BOUNDS: subscript 11 outside 1..10" (no EXP/ACT)
 };
