@@ -15,11 +15,12 @@
 // position, as any call binds them) is a candidate; an argument of exactly
 // the parameter's type costs 0, an untyped literal that fits costs 1 (0 for
 // DINT / LREAL, the types an untyped literal has in AX), an IEC implicit
-// widening (INT -> DINT, REAL -> LREAL, an instance to an interface it
-// implements) costs 2, an integer becoming a REAL/LREAL (variable or
-// literal) 3, so that an integer argument stays an integer first; an
-// enumeration matches its base type at 2 (widened further, 3); narrowing
-// never matches. The cheapest candidate wins;
+// widening 2 plus one per doubling of the size and one for a change of
+// family (SINT -> INT 3, SINT -> DINT 4, USINT -> INT 4), an integer
+// becoming a REAL/LREAL (variable or literal) 8, so that an integer argument
+// stays an integer first; an instance for an interface it implements or a
+// base class costs 2, an enumeration as its base type 2; narrowing never
+// matches. The cheapest candidate wins;
 // two equally cheap ones, or none, are an error naming the candidates.
 #include <algorithm>
 #include <limits>
@@ -66,6 +67,19 @@ std::string signatureOf(const ast::Pou& p) {
 }
 
 constexpr int kNoMatch = std::numeric_limits<int>::max();
+
+// The cost of an IEC implicit widening from `from` to `to`: 2, one more per
+// doubling of the size (SINT -> INT before SINT -> DINT), one more for a
+// change of family (unsigned to signed, an integer to a bit string), and an
+// integer becoming a REAL/LREAL 8 (after every integer widening).
+int wideningCost(const Type* from, const Type* to) {
+    auto family = [](TK k) { return isSignedInt(k) ? 0 : isUnsignedInt(k) ? 1 : isBitString(k) ? 2 : isReal(k) ? 3 : 4; };
+    if (isReal(to->kind) && !isReal(from->kind)) return 8;
+    int cost = 2;
+    for (uint32_t size = std::max<uint32_t>(from->size, 1); size < to->size; size *= 2) ++cost;
+    if (family(from->kind) != family(to->kind)) ++cost;
+    return cost;
+}
 
 // Whether the untyped integer literal `v` fits the integer or bit-string type `t`.
 bool literalFits(int64_t v, const Type* t) {
@@ -199,24 +213,24 @@ bool Checker::callOverloaded(const std::string& upperSimple, const ast::Expr& e,
             const Type* to = p->type;
             if (!from || !to) {
                 cost = kNoMatch;
+            } else if (a.value->kind == ast::ExprKind::Name && upper(a.value->name) == "NULL") {
+                // NULL is a reference, never a number (strun types it as an untyped 0).
+                if (to->kind != TK::Interface && to->kind != TK::Pointer && to->kind != TK::Reference) cost = kNoMatch;
             } else if (sameType(from, to) || (isStringType(from->kind) && from->kind == to->kind)) {
                 // exact (a STRING of any length for a STRING parameter)
-            } else if (v.untypedInt && v.isConst && v.constInt == 0 && !v.var &&
-                       (to->kind == TK::Interface || to->kind == TK::Pointer || to->kind == TK::Reference)) {
-                cost += 1;  // NULL
             } else if (v.untypedInt && (isInteger(to->kind) || isBitString(to->kind)) && literalFits(v.constInt, to)) {
                 cost += to->kind == TK::DInt ? 0 : 1;
             } else if (v.untypedReal && isReal(to->kind)) {
                 cost += to->kind == TK::LReal ? 0 : 1;
             } else if (v.untypedInt && isReal(to->kind)) {
-                cost += 3;
+                cost += 8;
             } else if (p->byRef) {
                 cost = kNoMatch;  // a VAR_IN_OUT takes its own type only
             } else if (isElementary(from->kind) && isElementary(to->kind) && iecWidening(from, to)) {
-                cost += isReal(to->kind) && !isReal(from->kind) ? 3 : 2;  // an integer stays an integer first
+                cost += wideningCost(from, to);
             } else if (from->kind == TK::Enum && from->base && isElementary(to->kind) && !p->byRef &&
                        (sameType(from->base, to) || iecWidening(from->base, to))) {
-                cost += sameType(from->base, to) ? 2 : 3;  // an enumeration as its base type (AX: Equal on a WORD enumeration)
+                cost += sameType(from->base, to) ? 2 : 1 + wideningCost(from->base, to);  // an enumeration as its base type (AX: Equal on a WORD enumeration)
             } else if (to->kind == TK::Interface && (from->kind == TK::FunctionBlock || from->kind == TK::Interface) && from->pou && to->pou) {
                 std::vector<PouInfo*> implemented;
                 for (PouInfo* b = from->pou; b; b = b->parent) {
