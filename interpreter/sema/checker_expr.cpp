@@ -1229,6 +1229,18 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         return e;
     }
     if (target->kind == TK::Reference && from->kind == TK::Reference && sameType(from->target, target->target)) return e;
+    // THIS (the address of the own instance) for an interface its class
+    // implements, as SIMATIC AX returns it (`Append := THIS;`, decision 0366):
+    // checked as the instance THIS^ itself.
+    if (target->kind == TK::Interface && from->kind == TK::Pointer && from->target && from->target->kind == TK::FunctionBlock &&
+        e.node && dynamic_cast<exec::SelfAddress*>(e.node)) {
+        Checked self = e;
+        self.type = from->target;
+        self.isPlace = true;
+        self.node = pool().make<exec::SelfVar<void>>(0);
+        self.node->type = from->target;
+        return coerce(self, target, loc, what);
+    }
     if (target->kind == TK::Interface && (from->kind == TK::FunctionBlock || from->kind == TK::Interface)) {
         // An interface value is the address of an instance whose class implements it.
         bool ok = false;

@@ -19,8 +19,9 @@
 // family (SINT -> INT 3, SINT -> DINT 4, USINT -> INT 4), an integer
 // becoming a REAL/LREAL (variable or literal) 8, so that an integer argument
 // stays an integer first; an instance for an interface it implements or a
-// base class costs 2, an enumeration as its base type 2; narrowing never
-// matches. The cheapest candidate wins;
+// base class costs 2, an enumeration as its base type 2, an input the call
+// leaves out (without an initial value or a caller pragma) 1; narrowing
+// never matches. The cheapest candidate wins;
 // two equally cheap ones, or none, are an error naming the candidates.
 #include <algorithm>
 #include <limits>
@@ -253,8 +254,14 @@ bool Checker::callOverloaded(const std::string& upperSimple, const ast::Expr& e,
                 cost = kNoMatch;
             }
         }
-        for (VarSym* p : fn->params)
+        for (VarSym* p : fn->params) {
             if (p->byRef && !connected.count(p)) cost = kNoMatch;  // a VAR_IN_OUT must be connected
+            // An input left out that has neither an initial value nor a caller
+            // pragma: a member that takes the call as written comes first.
+            else if (cost != kNoMatch && p->section == ast::VarSection::Input && !connected.count(p) && !(p->decl && p->decl->init) &&
+                     callerInfoOf(p) == CallerInfo::None)
+                cost += 1;
+        }
         if (cost != kNoMatch) viable.push_back({fn, cost});
     }
     auto listOf = [&](const std::vector<PouInfo*>& fns) {
