@@ -439,6 +439,15 @@ private:
     // A call of an overloaded name: true when `upperSimple` names an overload
     // set (then `out` is the call, or bad after an error naming the candidates).
     bool callOverloaded(const std::string& upperSimple, const ast::Expr& e, Checked& out);
+    // The member of `all` that fits the call `e` best; null after an error
+    // naming the candidates (or when an argument did not check).
+    PouInfo* pickOverload(const std::vector<PouInfo*>& all, const ast::Expr& e);
+    // METHODs overloaded in some class (decision 0362): upper simple name. Every
+    // method of such a name is renamed "Name(T1, T2)" in every class and
+    // interface, so that overrides keep sharing a dispatch slot.
+    std::set<std::string> methodOverloads_;
+    // The overloads of method `upperSimple` visible in `cls` (it and its bases).
+    bool callOverloadedMethod(const Checked& base, PouInfo* cls, const std::string& upperSimple, const ast::Expr& e, Checked& out);
     // The declaration key (upper case) for a type or POU name as written in code.
     std::string scopedKey(const std::string& upperWritten) const;
     // "'A.X', 'B.X'" when a written simple name `X` is contested, declared in more

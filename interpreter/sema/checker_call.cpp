@@ -277,6 +277,14 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         if (pou_) {
             PouInfo* fb = pou_->owner ? pou_->owner : pou_;
             if (fb->kind == ast::PouKind::FunctionBlock || fb->kind == ast::PouKind::Program) {
+                if (Checked overloaded; !methodOverloads_.empty() && methodOverloads_.count(key)) {
+                    ast::Expr thisExpr;
+                    thisExpr.kind = ast::ExprKind::This;
+                    thisExpr.loc = e.loc;
+                    Checked self = checkThis(thisExpr, true);
+                    if (!self.ok) return self;
+                    if (callOverloadedMethod(self, fb, key, e, overloaded)) return overloaded;  // decision 0362
+                }
                 if (PouInfo* m = findMethod(fb, key)) {
                     ast::Expr thisExpr;
                     thisExpr.kind = ast::ExprKind::This;
@@ -471,6 +479,8 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         Checked base = checkMemberBase(*callee.kids[0]);
         if (!base.ok) return base;
         if ((base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou) {
+            if (Checked overloaded; !methodOverloads_.empty() && callOverloadedMethod(base, base.type->pou, upper(callee.name), e, overloaded))
+                return overloaded;  // decision 0362
             if (PouInfo* m = findMethod(base.type->pou, upper(callee.name))) return methodCall(base, m, e);
         }
         Diagnostic& d = error(diag::E0103, callee.nameLoc.line ? callee.nameLoc : callee.loc, fmt::format("'{}' is not a method of {}", callee.name, typeName(base.type)));

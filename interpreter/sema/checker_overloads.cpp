@@ -109,7 +109,7 @@ void Checker::noteOverloads(std::vector<ast::CompilationUnit>& units) {
             if (p->kind == ast::PouKind::Function) groups[{upper(p->nameSpace), upper(p->name)}].push_back({p.get(), library, signatureOf(*p)});
     }
     for (auto& [key, members] : groups) {
-        if (members.size() < 2) continue;
+        if (members.size() < 2) continue;  // (the METHODs follow below)
         // A user function with the parameter types of a library one replaces it
         // (as a user POU named like a library POU always did).
         std::vector<Member> kept;
@@ -135,6 +135,42 @@ void Checker::noteOverloads(std::vector<ast::CompilationUnit>& units) {
         }
         overloads_[key.second].push_back(std::move(set));
     }
+    // METHODs: a name overloaded in one class is renamed in every class and
+    // interface, so that an override keeps the slot of the method it overrides.
+    std::vector<ast::Pou*> owners;
+    for (auto& unit : units)
+        for (auto& p : unit.pous)
+            if (p->kind == ast::PouKind::FunctionBlock || p->kind == ast::PouKind::Interface || p->kind == ast::PouKind::Program) owners.push_back(p.get());
+    for (ast::Pou* owner : owners) {
+        std::map<std::string, std::vector<std::string>> byName;
+        for (auto& m : owner->methods) byName[upper(m->name)].push_back(upper(signatureOf(*m)));
+        for (auto& [name, sigs] : byName) {
+            if (sigs.size() < 2) continue;
+            std::sort(sigs.begin(), sigs.end());
+            if (std::adjacent_find(sigs.begin(), sigs.end()) == sigs.end()) methodOverloads_.insert(name);
+        }
+    }
+    if (methodOverloads_.empty()) return;
+    for (ast::Pou* owner : owners)
+        for (auto& m : owner->methods)
+            if (methodOverloads_.count(upper(m->name))) m->name += "(" + signatureOf(*m) + ")";
+}
+
+bool Checker::callOverloadedMethod(const Checked& base, PouInfo* cls, const std::string& upperSimple, const ast::Expr& e, Checked& out) {
+    if (!methodOverloads_.count(upperSimple) || !cls) return false;
+    const std::string prefix = upperSimple + "(";
+    std::vector<PouInfo*> owners;
+    for (PouInfo* p = cls; p; p = p->parent) owners.push_back(p);
+    if (cls->kind == ast::PouKind::Interface) collectInterfaces(cls, owners);
+    std::vector<PouInfo*> all;
+    std::set<std::string> seen;  // an override hides its base's method of the same parameter types
+    for (PouInfo* p : owners)
+        for (const auto& [key, m] : p->methods)
+            if (key.rfind(prefix, 0) == 0 && seen.insert(key).second) all.push_back(m);
+    if (all.empty()) return false;
+    PouInfo* m = pickOverload(all, e);
+    out = m ? methodCall(base, m, e) : bad(e.loc);
+    return true;
 }
 
 bool Checker::callOverloaded(const std::string& upperSimple, const ast::Expr& e, Checked& out) {
@@ -164,28 +200,29 @@ bool Checker::callOverloaded(const std::string& upperSimple, const ast::Expr& e,
     if (overloadInfos_.empty())
         for (const auto& p : model_.pouStore)
             if (p->ast && !p->owner) overloadInfos_[p->ast] = p.get();
+    std::vector<PouInfo*> all;
+    for (ast::Pou* m : members)
+        if (const auto info = overloadInfos_.find(m); info != overloadInfos_.end()) all.push_back(info->second);
+    PouInfo* fn = pickOverload(all, e);
+    out = fn ? callUserFunction(fn, e, nullptr) : bad(e.loc);
+    return true;
+}
+
+PouInfo* Checker::pickOverload(const std::vector<PouInfo*>& all, const ast::Expr& e) {
     // The arguments' types, checked once.
     std::vector<Checked> args(e.args.size());
     for (size_t k = 0; k < e.args.size(); ++k) {
         const ast::Arg& a = e.args[k];
         if (a.output || !a.value) continue;
         args[k] = checkExpr(*a.value);
-        if (!args[k].ok) {
-            out = bad(e.loc);
-            return true;
-        }
+        if (!args[k].ok) return nullptr;
     }
     struct Candidate {
         PouInfo* fn;
         int cost;
     };
     std::vector<Candidate> viable;
-    std::vector<PouInfo*> all;
-    for (ast::Pou* m : members) {
-        const auto info = overloadInfos_.find(m);
-        if (info == overloadInfos_.end()) continue;
-        PouInfo* fn = info->second;
-        all.push_back(fn);
+    for (PouInfo* fn : all) {
         layoutPou(fn);
         std::vector<VarSym*> inputs;
         for (VarSym* p : fn->params)
@@ -274,8 +311,7 @@ bool Checker::callOverloaded(const std::string& upperSimple, const ast::Expr& e,
     const std::string& written = e.kids[0]->name;
     if (viable.empty()) {
         error(diag::E0201, e.loc, fmt::format("no overload of '{}' takes these arguments; the candidates are {}", written, listOf(all)));
-        out = bad(e.loc);
-        return true;
+        return nullptr;
     }
     int best = kNoMatch;
     for (const Candidate& c : viable) best = std::min(best, c.cost);
@@ -284,11 +320,9 @@ bool Checker::callOverloaded(const std::string& upperSimple, const ast::Expr& e,
         if (c.cost == best) tied.push_back(c.fn);
     if (tied.size() > 1) {
         error(diag::E0201, e.loc, fmt::format("the call of '{}' is ambiguous: {} fit these arguments equally well", written, listOf(tied)));
-        out = bad(e.loc);
-        return true;
+        return nullptr;
     }
-    out = callUserFunction(tied.front(), e, nullptr);
-    return true;
+    return tied.front();
 }
 
 }  // namespace strun::sema
