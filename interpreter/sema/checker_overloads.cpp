@@ -51,17 +51,22 @@ std::string typeText(const ast::TypeSpec* t) {
     }
 }
 
-// The written parameter types (inputs and in-outs, in declaration order).
+// The written parameter types (inputs and in-outs, then outputs as "=> T",
+// in declaration order): AX tells `ToInt(str, value => x)` apart by the
+// type of its output too.
 std::string signatureOf(const ast::Pou& p) {
     std::string s;
+    for (const bool outputs : {false, true})
     for (const auto& block : p.vars) {
-        if (block.section != ast::VarSection::Input && block.section != ast::VarSection::InOut) continue;
+        const bool output = block.section == ast::VarSection::Output;
+        if (output != outputs) continue;
+        if (block.section != ast::VarSection::Input && block.section != ast::VarSection::InOut && !output) continue;
         for (const auto& d : block.vars) {
             // {CallerFilePath} / {CallerLineNumber} inputs are filled by the call: not part of it.
             const bool callerInfo = std::any_of(d.pragmas.begin(), d.pragmas.end(), [](const ast::Pragma& p) {
                 return upper(p.text) == "CALLERFILEPATH" || upper(p.text) == "CALLERLINENUMBER";
             });
-            for (size_t n = 0; n < d.names.size() && !callerInfo; ++n) s += (s.empty() ? "" : ", ") + typeText(d.type.get());
+            for (size_t n = 0; n < d.names.size() && !callerInfo; ++n) s += std::string(s.empty() ? "" : ", ") + (output ? "=> " : "") + typeText(d.type.get());
         }
     }
     return s;
@@ -213,7 +218,7 @@ PouInfo* Checker::pickOverload(const std::vector<PouInfo*>& all, const ast::Expr
     std::vector<Checked> args(e.args.size());
     for (size_t k = 0; k < e.args.size(); ++k) {
         const ast::Arg& a = e.args[k];
-        if (a.output || !a.value) continue;
+        if (!a.value) continue;
         args[k] = checkExpr(*a.value);
         if (!args[k].ok) return nullptr;
     }
@@ -245,8 +250,17 @@ PouInfo* Checker::pickOverload(const std::vector<PouInfo*>& all, const ast::Expr
                 break;
             }
             connected.insert(p);
-            if (a.output) continue;
             const Checked& v = args[k];
+            if (a.output) {
+                // `out => x`: the output's type must go into x as it is or widened.
+                const Type* out = p->type;
+                const Type* into = v.type;
+                if (!out || !into || !v.isPlace) cost = kNoMatch;
+                else if (sameType(out, into) || (isStringType(out->kind) && out->kind == into->kind)) {}
+                else if (isElementary(out->kind) && isElementary(into->kind) && iecWidening(out, into)) cost += wideningCost(out, into);
+                else cost = kNoMatch;
+                continue;
+            }
             const Type* from = v.type;
             const Type* to = p->type;
             if (!from || !to) {
@@ -256,6 +270,8 @@ PouInfo* Checker::pickOverload(const std::vector<PouInfo*>& all, const ast::Expr
                 if (to->kind != TK::Interface && to->kind != TK::Pointer && to->kind != TK::Reference) cost = kNoMatch;
             } else if (sameType(from, to) || (isStringType(from->kind) && from->kind == to->kind)) {
                 // exact (a STRING of any length for a STRING parameter)
+            } else if (v.isConst && from->kind == TK::String && (to->kind == TK::Char || to->kind == TK::WChar) && from->maxLen == 1) {
+                cost += 1;  // a one-character literal for a CHAR: '0'
             } else if (v.untypedInt && (isInteger(to->kind) || isBitString(to->kind)) && literalFits(v.constInt, to)) {
                 cost += to->kind == TK::DInt ? 0 : 1;
             } else if (v.untypedReal && isReal(to->kind)) {
