@@ -834,9 +834,10 @@ Checked Checker::checkMember(const ast::Expr& e) {
 }
 
 // What stands before `.member`: `THIS.x` (IEC 61131-3 Ed.3 and SIMATIC AX,
-// where THIS is a reference) is CODESYS's `THIS^.x` (decision 0316).
+// where THIS is a reference) is CODESYS's `THIS^.x` (decision 0316), and
+// `SUPER.Method()` is `SUPER^.Method()` (decision 0366).
 Checked Checker::checkMemberBase(const ast::Expr& base) {
-    if (base.kind == ast::ExprKind::This) return checkThis(base, true);
+    if (base.kind == ast::ExprKind::This || base.kind == ast::ExprKind::Super) return checkThis(base, true);
     return checkExpr(base);
 }
 

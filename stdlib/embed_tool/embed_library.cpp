@@ -289,9 +289,13 @@ int main(int argc, char** argv) {
     }
     for (size_t i = 0; i < sources.size(); ++i) scanDeclarations(sources[i].text, sources[i].library, static_cast<int>(i), names);
     for (const Library& lib : libraries)
-        if (lib.selectedByNamespace)
+        if (lib.selectedByNamespace) {
             names.erase(std::remove_if(names.begin(), names.end(), [&](const Name& n) { return n.library == lib.name && n.kind != 'Q' && n.kind != 'X'; }),
                         names.end());
+            // Its namespace selects it also without a dot after it: `USING AxUnit;`.
+            for (Name& n : names)
+                if (n.library == lib.name && n.kind == 'Q') n.kind = 'N';
+        }
     std::sort(names.begin(), names.end(), [](const Name& a, const Name& b) {
         return a.upper != b.upper ? a.upper < b.upper : a.file != b.file ? a.file < b.file : a.kind < b.kind;
     });
