@@ -229,9 +229,12 @@ PouInfo* Checker::pickOverload(const std::vector<PouInfo*>& all, const ast::Expr
     std::vector<Candidate> viable;
     for (PouInfo* fn : all) {
         layoutPou(fn);
-        std::vector<VarSym*> inputs;
-        for (VarSym* p : fn->params)
-            if (p->section != ast::VarSection::Output) inputs.push_back(p);
+        std::vector<VarSym*> inputs, outputs;
+        for (VarSym* p : fn->params) (p->section != ast::VarSection::Output ? inputs : outputs).push_back(p);
+        // Positional arguments past the inputs bind the outputs (decision 0361), not with --strict.
+        bool allPositional = true;
+        for (const auto& a : e.args) allPositional = allPositional && a.name.empty() && !a.output;
+        if (allPositional && !compileOptions().strict) inputs.insert(inputs.end(), outputs.begin(), outputs.end());
         int cost = 0;
         size_t positional = 0;
         std::set<VarSym*> connected;
@@ -245,13 +248,14 @@ PouInfo* Checker::pickOverload(const std::vector<PouInfo*>& all, const ast::Expr
                 for (VarSym* q : fn->params)
                     if (upper(q->name) == upper(a.name)) p = q;
             }
-            if (!p || connected.count(p) || (a.output != (p->section == ast::VarSection::Output))) {
+            const bool asOutput = a.output || (p && p->section == ast::VarSection::Output && a.name.empty());
+            if (!p || connected.count(p) || (asOutput != (p->section == ast::VarSection::Output))) {
                 cost = kNoMatch;
                 break;
             }
             connected.insert(p);
             const Checked& v = args[k];
-            if (a.output) {
+            if (asOutput) {
                 // `out => x`: the output's type must go into x as it is or widened.
                 const Type* out = p->type;
                 const Type* into = v.type;
@@ -278,6 +282,9 @@ PouInfo* Checker::pickOverload(const std::vector<PouInfo*>& all, const ast::Expr
                 cost += to->kind == TK::LReal ? 0 : 1;
             } else if (v.untypedInt && isReal(to->kind)) {
                 cost += 8;
+            } else if (to->kind == TK::Array && to->flexible && from->kind == TK::Array && from->dims.size() == to->dims.size() &&
+                       from->elem && to->elem && (sameType(from->elem, to->elem) || (isStringType(from->elem->kind) && from->elem->kind == to->elem->kind))) {
+                cost += 1;  // an array for an ARRAY[*] of its element type
             } else if (p->byRef) {
                 cost = kNoMatch;  // a VAR_IN_OUT takes its own type only
             } else if (isElementary(from->kind) && isElementary(to->kind) && iecWidening(from, to)) {
