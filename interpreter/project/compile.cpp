@@ -13,6 +13,7 @@
 #include "interpreter/sema/checker.h"
 #include "interpreter/builtins/libraries/task_info.h"
 #include "interpreter/builtins/register_builtins.h"
+#include "interpreter/testing/register_axunit.h"
 #include "interpreter/testing/register_tcunit.h"
 #include "interpreter/testing/suite_finder.h"
 #include "interpreter/testing/tcunit_parameters.h"
@@ -122,6 +123,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     checker.setLibraryFiles(libraryFiles);
     sema::CompileOptions effective = options;
     for (int f : userFiles) effective.twincatRealText = effective.twincatRealText || source::isTwinCatObject(sources.file(f).path);
+    for (int f = 0; f < sources.size(); ++f) effective.sourcePaths.push_back(sources.file(f).path);
     checker.setCompileOptions(effective);
     if (const rt::PlcProfile* profile = rt::findProfile(options.target)) checker.setProfile(*profile);
     stdlib::registerBuiltins(checker);
@@ -129,6 +131,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     stdlib::registerLibraryBuiltins(checker, selection.nativeLibraries);
     model->tests = std::make_shared<testing::TestRegistry>();
     testing::registerTcUnit(checker, *model->tests);
+    testing::registerAxUnit(checker, *model->tests);  // SIMATIC AX (decision 0364)
     // The checker recurses once per nested declaration and expression level;
     // both are capped (docs/limits.md), and the large stack gives the caps a
     // wide margin, also under sanitizers.

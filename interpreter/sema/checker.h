@@ -20,6 +20,10 @@
 
 namespace strun::sema {
 
+// SIMATIC AX caller-information pragmas on an input (caller_info.cpp).
+enum class CallerInfo { None, FilePath, LineNumber };
+CallerInfo callerInfoOf(const VarSym* p);
+
 class Checker;
 class ExprObserver;
 
@@ -418,6 +422,32 @@ private:
         NameScope saved_;
     };
     void noteContestedNames(std::vector<ast::CompilationUnit>& units);
+    // Overloading by parameter types (SIMATIC AX; checker_overloads.cpp,
+    // decision 0362): FUNCTIONs of one name in one namespace with different
+    // parameter types are renamed apart before they are declared; a call of
+    // the name picks the one whose parameters fit the arguments best.
+    struct OverloadSet {
+        std::string nameSpace;             // upper case
+        std::vector<ast::Pou*> members;    // renamed "Name(T1, T2)"
+    };
+    std::map<std::string, std::vector<OverloadSet>> overloads_;  // upper simple name -> sets
+    std::map<const ast::Pou*, PouInfo*> overloadInfos_;          // filled at the first overloaded call
+    void noteOverloads(std::vector<ast::CompilationUnit>& units);
+    // {CallerFilePath} / {CallerLineNumber} inputs a call leaves out get the
+    // call's file path and line (caller_info.cpp, decision 0363).
+    void bindCallerInfo(const PouInfo* fn, const std::set<VarSym*>& connected, const ast::Loc& loc, std::vector<exec::Stmt*>& inputs);
+    // A call of an overloaded name: true when `upperSimple` names an overload
+    // set (then `out` is the call, or bad after an error naming the candidates).
+    bool callOverloaded(const std::string& upperSimple, const ast::Expr& e, Checked& out);
+    // The member of `all` that fits the call `e` best; null after an error
+    // naming the candidates (or when an argument did not check).
+    PouInfo* pickOverload(const std::vector<PouInfo*>& all, const ast::Expr& e);
+    // METHODs overloaded in some class (decision 0362): upper simple name. Every
+    // method of such a name is renamed "Name(T1, T2)" in every class and
+    // interface, so that overrides keep sharing a dispatch slot.
+    std::set<std::string> methodOverloads_;
+    // The overloads of method `upperSimple` visible in `cls` (it and its bases).
+    bool callOverloadedMethod(const Checked& base, PouInfo* cls, const std::string& upperSimple, const ast::Expr& e, Checked& out);
     // The declaration key (upper case) for a type or POU name as written in code.
     std::string scopedKey(const std::string& upperWritten) const;
     // "'A.X', 'B.X'" when a written simple name `X` is contested, declared in more

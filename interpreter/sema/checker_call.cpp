@@ -59,9 +59,15 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
     bool trailingDefaults = positionalCount > 0 && positionalCount < inputsInOrder.size() && !ck.compileOptions().strict;
     for (size_t k = positionalCount; trailingDefaults && k < inputsInOrder.size(); ++k) {
         const VarSym* p = inputsInOrder[k];
-        trailingDefaults = p->section == ast::VarSection::Input && !p->byRef && p->decl && p->decl->init;
+        trailingDefaults = p->section == ast::VarSection::Input && !p->byRef && ((p->decl && p->decl->init) || callerInfoOf(p) != CallerInfo::None);
     }
-    if (positionalCount > 0 && positionalCount < inputsInOrder.size() && positionalCount == call.args.size() && !trailingDefaults) {
+    // {CallerFilePath} / {CallerLineNumber} inputs left out at the end are
+    // filled by the call, in both modes (SIMATIC AX, decision 0363).
+    bool trailingCallerInfo = positionalCount > 0 && positionalCount < inputsInOrder.size();
+    for (size_t k = positionalCount; trailingCallerInfo && k < inputsInOrder.size(); ++k)
+        trailingCallerInfo = callerInfoOf(inputsInOrder[k]) != CallerInfo::None;
+    if (positionalCount > 0 && positionalCount < inputsInOrder.size() && positionalCount == call.args.size() && !trailingDefaults &&
+        !trailingCallerInfo) {
         // A non-formal call lists every input (IEC 61131-3); formal calls may leave inputs out.
         ck.error(diag::E0301, call.kids[0]->loc, fmt::format("too few arguments for '{}' ({} given, it takes {})", callee, positionalCount, inputsInOrder.size()));
         return false;
@@ -271,6 +277,14 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         if (pou_) {
             PouInfo* fb = pou_->owner ? pou_->owner : pou_;
             if (fb->kind == ast::PouKind::FunctionBlock || fb->kind == ast::PouKind::Program) {
+                if (Checked overloaded; !methodOverloads_.empty() && methodOverloads_.count(key)) {
+                    ast::Expr thisExpr;
+                    thisExpr.kind = ast::ExprKind::This;
+                    thisExpr.loc = e.loc;
+                    Checked self = checkThis(thisExpr, true);
+                    if (!self.ok) return self;
+                    if (callOverloadedMethod(self, fb, key, e, overloaded)) return overloaded;  // decision 0362
+                }
                 if (PouInfo* m = findMethod(fb, key)) {
                     ast::Expr thisExpr;
                     thisExpr.kind = ast::ExprKind::This;
@@ -418,6 +432,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             r.node->type = r.type;
             return r;
         }
+        if (Checked overloaded; !overloads_.empty() && callOverloaded(key, e, overloaded)) return overloaded;  // decision 0362
         auto it = pous_.find(pouKey);
         if (it != pous_.end() && it->second->kind == ast::PouKind::Function) {
             return callUserFunction(it->second, e, nullptr);
@@ -464,6 +479,8 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         Checked base = checkMemberBase(*callee.kids[0]);
         if (!base.ok) return base;
         if ((base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou) {
+            if (Checked overloaded; !methodOverloads_.empty() && callOverloadedMethod(base, base.type->pou, upper(callee.name), e, overloaded))
+                return overloaded;  // decision 0362
             if (PouInfo* m = findMethod(base.type->pou, upper(callee.name))) return methodCall(base, m, e);
         }
         Diagnostic& d = error(diag::E0103, callee.nameLoc.line ? callee.nameLoc : callee.loc, fmt::format("'{}' is not a method of {}", callee.name, typeName(base.type)));
@@ -630,6 +647,7 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
         if (direct && !isAggregate(p->type) && fuseArgBind(repOf(p->type), p->offset, cv.node, bind)) call->binds.push_back(bind);
         else direct = false;
     }
+    bindCallerInfo(fn, connected, e.loc, call->inputs);  // {CallerFilePath} / {CallerLineNumber}
     // After an argument that did not bind (reported, or a parameter whose type is
     // unknown, reported at its declaration) an unconnected VAR_IN_OUT is a follow-on.
     const bool reportUnconnected = ok && !hasUnresolvedVariables(fn);

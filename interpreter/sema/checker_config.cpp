@@ -390,6 +390,7 @@ void Checker::run(std::vector<ast::CompilationUnit>& units) {
     // for every library of the registry (decision 0220).
     namespaces_.insert("STANDARD");
     for (const stdlib::LibraryInfo& library : stdlib::libraries()) namespaces_.insert(upper(std::string(library.name)));
+    noteOverloads(units);
     noteContestedNames(units);
     for (auto& u : units) collect(u);
     breakInheritanceCycles();

@@ -63,7 +63,21 @@ void Checker::collect(ast::CompilationUnit& unit) {
 
 // A name written `Ns.x`: the namespace part (flattened: names are unique project-wide).
 bool Checker::isNamespace(const ast::Expr& e) const {
-    if (e.kind == ast::ExprKind::Name) return namespaces_.count(upper(e.name)) != 0;
+    if (e.kind == ast::ExprKind::Name) {
+        const std::string name = upper(e.name);
+        if (namespaces_.count(name)) return true;
+        // Relative to a USING of the file or an enclosing namespace (IEC Ed.3,
+        // SIMATIC AX: `USING AxUnit;` then `Assert.Equal(...)`, decision 0366).
+        if (auto usings = usingsByFile_.find(nameScope_.file); usings != usingsByFile_.end())
+            for (const std::string& u : usings->second)
+                if (namespaces_.count(u + "." + name)) return true;
+        for (std::string ns = nameScope_.nameSpace; !ns.empty();) {
+            if (namespaces_.count(ns + "." + name)) return true;
+            const auto dot = ns.rfind('.');
+            ns = dot == std::string::npos ? std::string() : ns.substr(0, dot);
+        }
+        return false;
+    }
     if (e.kind == ast::ExprKind::Member && !e.kids.empty() && isNamespace(*e.kids[0])) {
         std::string path;
         for (const ast::Expr* p = &e; p; p = p->kids.empty() ? nullptr : p->kids[0].get()) {
@@ -585,7 +599,9 @@ void Checker::layoutPou(PouInfo* pou) {
                 auto v = std::make_unique<VarSym>();
                 // A function renamed to its qualified name (decision 0325) still
                 // assigns its result by its own name.
-                v->name = pou->property ? pou->property->name : pou->name.substr(pou->name.rfind('.') + 1);
+                // An overload renamed "F(INT)" (decision 0362) likewise.
+                const std::string plain = pou->name.substr(0, pou->name.find('('));
+                v->name = pou->property ? pou->property->name : plain.substr(plain.rfind('.') + 1);
                 v->loc = pou->ast->loc;
                 v->type = pou->resultType;
                 v->section = ast::VarSection::Output;

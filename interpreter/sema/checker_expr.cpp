@@ -834,9 +834,10 @@ Checked Checker::checkMember(const ast::Expr& e) {
 }
 
 // What stands before `.member`: `THIS.x` (IEC 61131-3 Ed.3 and SIMATIC AX,
-// where THIS is a reference) is CODESYS's `THIS^.x` (decision 0316).
+// where THIS is a reference) is CODESYS's `THIS^.x` (decision 0316), and
+// `SUPER.Method()` is `SUPER^.Method()` (decision 0366).
 Checked Checker::checkMemberBase(const ast::Expr& base) {
-    if (base.kind == ast::ExprKind::This) return checkThis(base, true);
+    if (base.kind == ast::ExprKind::This || base.kind == ast::ExprKind::Super) return checkThis(base, true);
     return checkExpr(base);
 }
 
@@ -1229,6 +1230,18 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         return e;
     }
     if (target->kind == TK::Reference && from->kind == TK::Reference && sameType(from->target, target->target)) return e;
+    // THIS (the address of the own instance) for an interface its class
+    // implements, as SIMATIC AX returns it (`Append := THIS;`, decision 0366):
+    // checked as the instance THIS^ itself.
+    if (target->kind == TK::Interface && from->kind == TK::Pointer && from->target && from->target->kind == TK::FunctionBlock &&
+        e.node && dynamic_cast<exec::SelfAddress*>(e.node)) {
+        Checked self = e;
+        self.type = from->target;
+        self.isPlace = true;
+        self.node = pool().make<exec::SelfVar<void>>(0);
+        self.node->type = from->target;
+        return coerce(self, target, loc, what);
+    }
     if (target->kind == TK::Interface && (from->kind == TK::FunctionBlock || from->kind == TK::Interface)) {
         // An interface value is the address of an instance whose class implements it.
         bool ok = false;
@@ -1391,5 +1404,8 @@ Checked Checker::foldIfConst(Checked r, std::initializer_list<const Checked*> op
     }
     return r;
 }
+
+// For overload resolution (checker_overloads.cpp): the silent IEC conversions.
+bool iecWidening(const Type* from, const Type* to) { return iecImplicit(from, to); }
 
 }  // namespace strun::sema

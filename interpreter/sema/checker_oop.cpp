@@ -102,6 +102,10 @@ void Checker::buildClasses() {
             }
             collectInterfaces(itf, fb->interfaces);
         }
+        // The class and its bases answer a type test too: `ref ?= itf` into a
+        // REF_TO a class (IEC Ed.3, SIMATIC AX; decision 0366).
+        for (PouInfo* b = fb; b; b = b->parent)
+            if (std::find(d.interfaces.begin(), d.interfaces.end(), b) == d.interfaces.end()) d.interfaces.push_back(b);
         for (PouInfo* itf : fb->interfaces) {
             if (std::find(d.interfaces.begin(), d.interfaces.end(), itf) == d.interfaces.end()) d.interfaces.push_back(itf);
             if (fb->ast->abstract) continue;

@@ -223,7 +223,11 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
     }
     Checked src = checkExpr(*s.expr);
     if (!src.ok) return nullptr;
-    if (target.type->kind != TK::Interface || !target.isPlace) {
+    // A REF_TO / POINTER TO a class on the left (IEC Ed.3, SIMATIC AX): the
+    // address when the instance is of that class or one derived from it, else NULL (decision 0366).
+    const bool classRef = (target.type->kind == TK::Pointer || target.type->kind == TK::Reference) && target.type->target &&
+                          target.type->target->kind == TK::FunctionBlock && target.type->target->pou && target.isPlace;
+    if ((target.type->kind != TK::Interface && !classRef) || !target.isPlace) {
         error(diag::E0206, s.target->loc, "?= needs an interface variable on the left");
         return nullptr;
     }
@@ -235,7 +239,7 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
         error(diag::E0405, s.expr->loc, fmt::format("?= needs an interface, a function-block instance or a pointer to one, not {}", typeName(src.type)));
         return nullptr;
     }
-    exec::Expr* cast = pool().make<exec::TryCastInterface>(addr, target.type->pou);
+    exec::Expr* cast = pool().make<exec::TryCastInterface>(addr, classRef ? target.type->target->pou : target.type->pou);
     return storeTo(target.node, types().elementary(TK::LWord), cast);
 }
 
@@ -425,7 +429,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                     if (base.ok && (base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou)
                         method = findMethod(base.type->pou, upper(callee.name));
                     if (!base.ok) return nullptr;
-                    isMethod = method != nullptr;
+                    isMethod = method != nullptr || methodOverloads_.count(upper(callee.name)) != 0;  // overloaded (decision 0362)
                     if (method && method->ast->isAction && !s.expr->args.empty()) return callActionWithArguments(*s.expr, base.type->pou);
                 }
                 if (!isMethod) {

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace strun::sema {
 
@@ -31,6 +32,9 @@ struct CompileOptions {
     // .TcDUT, .TcGVL, .TcIO): REAL_TO_STRING and friends write a whole
     // number as TwinCAT does, with '.0' (decision 0336). Set by compileProject.
     bool twincatRealText = false;
+    // The path of every source file, by SourceSet index: the value of an
+    // input marked {CallerFilePath} (SIMATIC AX, decision 0363). Set by compileProject.
+    std::vector<std::string> sourcePaths;
 };
 
 }  // namespace strun::sema

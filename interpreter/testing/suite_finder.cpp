@@ -21,6 +21,7 @@ void recordProject(const sema::ProgramModel& model, TestRegistry& reg) {
         if (p->code && p->ast) reg.pouFiles[p->code->name] = p->ast->loc.file;
         if (!p->owner && isTestSuite(p.get()) && p->ast && !p->ast->abstract) reg.suiteBlocks.push_back(p->name);
     }
+    recordAxFixtures(model, reg);
 }
 
 std::string syntheticTestProgram(const std::vector<std::string>& blocks) {

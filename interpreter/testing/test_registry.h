@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "interpreter/testing/axunit_fixtures.h"
 #include "runtime/machine.h"
 
 namespace strun::exec { struct PouCode; struct Ctx; }
@@ -22,6 +23,7 @@ namespace strun::testing {
 struct Failure {
     int file = -1;  // SourceSet index of the assertion (or faulting statement); -1 unknown
     int line = 0;
+    std::string filePath;  // file < 0: the path as text (AxUnit's {CallerFilePath}), "" unknown
     std::string expected, actual, message;
     std::string fault;  // non-empty: "ARRAY_BOUNDS: subscript 11 outside 1..10" (no EXP/ACT)
 };
@@ -110,6 +112,7 @@ public:
     std::vector<StaticTest> staticTests;
     std::map<std::string, int> pouFiles;  // POU code name -> source file (fault locations)
     std::vector<std::string> suiteBlocks;  // FUNCTION_BLOCKs extending FB_TestSuite, not ABSTRACT
+    std::vector<AxFixture> axFixtures;     // AxUnit {TestFixture} classes and {Test} functions (decision 0365)
 
     // ---- set up by the runner
     std::vector<Suite> suites;

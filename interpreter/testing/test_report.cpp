@@ -63,6 +63,7 @@ int originalLine(const Failure& f, const SourceSet& sources) {
 }  // namespace
 
 std::string failureText(const Failure& f, const SourceSet& sources) {
+    if (f.file < 0 && !f.filePath.empty()) return fmt::format("{}:{}: {}", f.filePath, f.line, reason(f));
     if (f.file < 0) return reason(f);
     return fmt::format("{}:{}: {}", fileName(f.file, sources), originalLine(f, sources), reason(f));
 }
@@ -131,6 +132,7 @@ bool writeJUnit(const TestRegistry& reg, const SourceSet& sources, rt::PlcTime t
                 std::string type = f.fault.empty() ? "ASSERT" : f.fault == "timeout" ? "TIMEOUT" : f.fault.rfind("not run", 0) == 0 ? "NOT_RUN" : "FAULT";
                 xml << fmt::format("      <failure message=\"{}\" type=\"{}\"", xmlEscape(reason(f)), type);
                 if (f.file >= 0) xml << fmt::format(" file=\"{}\" line=\"{}\"", xmlEscape(fileName(f.file, sources)), originalLine(f, sources));
+                else if (!f.filePath.empty()) xml << fmt::format(" file=\"{}\" line=\"{}\"", xmlEscape(f.filePath), f.line);
                 xml << ">" << xmlEscape(failureText(f, sources)) << "</failure>\n";
             }
             xml << "    </testcase>\n";

@@ -2,6 +2,7 @@
 
 #include "interpreter/project/compile.h"
 #include "interpreter/project/task_runner.h"
+#include "interpreter/testing/axunit_fixtures.h"
 #include "interpreter/testing/suite_finder.h"
 #include "interpreter/testing/tcunit_parameters.h"
 #include "interpreter/testing/test_registry.h"
@@ -30,6 +31,7 @@ private:
 // those limits leave out.
 void findSuites(sema::ProgramModel& model) {
     collectSuites(model, *model.tests);
+    nameAxSuites(*model.tests);  // AxUnit fixtures' suites by the fixtures' names
     readTcUnitLimits(model, *model.tests);
     model.tests->markSuitesPastLimit();
 }
@@ -47,7 +49,11 @@ std::unique_ptr<sema::ProgramModel> compileForTests(SourceSet& sources, const st
     }
     log = before;
     std::vector<int> files = userFiles;
-    files.push_back(sources.add("<strun test program>", syntheticTestProgram(model->tests->suiteBlocks)));
+    std::vector<std::string> blocks = model->tests->suiteBlocks;
+    // AxUnit fixtures become suite blocks too (decision 0365).
+    if (std::string fixtures = axFixtureSuites(model->tests->axFixtures, blocks); !fixtures.empty())
+        files.push_back(sources.add("<strun AxUnit fixtures>", std::move(fixtures)));
+    files.push_back(sources.add("<strun test program>", syntheticTestProgram(blocks)));
     sema::CompileOptions withProgram = options;
     withProgram.testProgram = kSyntheticProgramName;
     model = project::compileProject(sources, files, log, withProgram);

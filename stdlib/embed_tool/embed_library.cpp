@@ -40,6 +40,9 @@ struct Name {
 
 struct Library {
     std::string name, vendor, status, summary;
+    // `selected_by: namespace`: only its dotted namespace written with its dot
+    // (`AxUnit.`) selects it; the names it declares (AxUnit's `Equal`) do not.
+    bool selectedByNamespace = false;
 };
 
 std::string upperOf(std::string s) {
@@ -214,6 +217,7 @@ Library readLibraryFile(const fs::path& p, const std::string& name, std::vector<
         if (key == "vendor") lib.vendor = value;
         else if (key == "status") lib.status = value;
         else if (key == "summary") lib.summary = value;
+        else if (key == "selected_by" && value == "namespace") lib.selectedByNamespace = true;
         else if (key == "native" || key == "absent") {
             std::istringstream words(value);
             for (std::string w; words >> w;) out.push_back({upperOf(w), w, name, key == "native" ? 'X' : 'U', -1});
@@ -284,6 +288,14 @@ int main(int argc, char** argv) {
         for (const fs::path& f : sortedFiles(dir, ".st")) sources.push_back({"stdlib/" + lib + "/" + f.filename().string(), lib, readFile(f)});
     }
     for (size_t i = 0; i < sources.size(); ++i) scanDeclarations(sources[i].text, sources[i].library, static_cast<int>(i), names);
+    for (const Library& lib : libraries)
+        if (lib.selectedByNamespace) {
+            names.erase(std::remove_if(names.begin(), names.end(), [&](const Name& n) { return n.library == lib.name && n.kind != 'Q' && n.kind != 'X'; }),
+                        names.end());
+            // Its namespace selects it also without a dot after it: `USING AxUnit;`.
+            for (Name& n : names)
+                if (n.library == lib.name && n.kind == 'Q') n.kind = 'N';
+        }
     std::sort(names.begin(), names.end(), [](const Name& a, const Name& b) {
         return a.upper != b.upper ? a.upper < b.upper : a.file != b.file ? a.file < b.file : a.kind < b.kind;
     });
