@@ -88,7 +88,8 @@ json valueToJson(const Type* t, const uint8_t* p) {
         case TK::Real: return realJson(exec::loadAs<float>(p), true);
         case TK::LReal: return realJson(exec::loadAs<double>(p), false);
         case TK::Time: return stdlib::formatDuration(static_cast<int64_t>(exec::loadAs<int32_t>(p)) * 1000000);
-        case TK::LTime: return stdlib::formatDuration(exec::loadAs<int64_t>(p));
+        case TK::LTime:  // unsigned in a TwinCAT project (decision 0367)
+            return t->unsignedDuration ? stdlib::formatUnsignedDuration(exec::loadAs<uint64_t>(p), "T#") : stdlib::formatDuration(exec::loadAs<int64_t>(p));
         case TK::Date: return stdlib::formatDate(static_cast<int64_t>(exec::loadAs<uint32_t>(p)) * 1000000000);
         case TK::Tod: return stdlib::formatTimeOfDay(static_cast<int64_t>(exec::loadAs<uint32_t>(p)) * 1000000);
         case TK::Dt: return stdlib::formatDateTime(static_cast<int64_t>(exec::loadAs<uint32_t>(p)) * 1000000000);

@@ -158,9 +158,13 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
             std::string u = upper(e.text);
             bool isLong = u.rfind("LT", 0) == 0;
             bool saturated = false;
-            auto r = stdlib::parseDurationLiteral(e.text, isLong, &saturated);
+            uint64_t unsignedBits = 0;
+            auto r = stdlib::parseDurationLiteral(e.text, isLong, &saturated, &unsignedBits);
             if (!r) return fail(diag::E0011, fmt::format("invalid duration literal '{}': {}", e.text.substr(0, 40), r.error()));
-            if (saturated)  // TwinCAT's LTIME is unsigned; strun's is signed (decision 0092)
+            // A TwinCAT project keeps LTIME unsigned: the literal's own bits (decision 0367).
+            const Type* ltime = types().elementary(TK::LTime);
+            if (saturated && ltime->unsignedDuration) return constInt(static_cast<int64_t>(unsignedBits), ltime, e.loc);
+            if (saturated)  // TwinCAT's LTIME is unsigned; strun's is signed elsewhere (decisions 0092, 0367)
                 warning(diag::W0005, e.loc, fmt::format("'{}' is beyond the largest LTIME (2^63-1 ns); it is taken as LTIME#106751d23h47m16s854ms775us807ns", e.text.substr(0, 60)));
             if (isLong) return constInt(r.value(), types().elementary(TK::LTime), e.loc);
             int64_t ms = r.value() / 1000000;

@@ -31,6 +31,9 @@ struct CompileOptions {
     // .TcDUT, .TcGVL, .TcIO): REAL_TO_STRING and friends write a whole
     // number as TwinCAT does, with '.0' (decision 0336). Set by compileProject.
     bool twincatRealText = false;
+    // The same projects keep LTIME as TwinCAT does: unsigned 64-bit
+    // nanoseconds up to LTIME#213503d23h34m33s709ms551us615ns (decision 0367).
+    bool twincatLtime = false;
 };
 
 }  // namespace strun::sema

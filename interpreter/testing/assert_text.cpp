@@ -62,7 +62,8 @@ std::string assertText(const sema::Type* t, const uint8_t* p) {
         case TK::Real: return stdlib::formatRealTwinCat(loadAs<float>(p));  // TcUnit's text is TwinCAT's
         case TK::LReal: return stdlib::formatLRealTwinCat(loadAs<double>(p));
         case TK::Time: return stdlib::formatDuration(stdlib::timeValueToNs(loadAs<int32_t>(p)), "T#");
-        case TK::LTime: return stdlib::formatDuration(loadAs<int64_t>(p), "LTIME#");
+        case TK::LTime:  // unsigned in a TwinCAT project (decision 0367)
+            return t->unsignedDuration ? stdlib::formatUnsignedDuration(loadAs<uint64_t>(p), "LTIME#") : stdlib::formatDuration(loadAs<int64_t>(p), "LTIME#");
         case TK::Date: return stdlib::formatDate(stdlib::dateValueToNs(loadAs<uint32_t>(p)), "D#");
         case TK::LDate: return stdlib::formatDate(loadAs<int64_t>(p), "LDATE#");
         case TK::Tod: return stdlib::formatTimeOfDay(stdlib::todValueToNs(loadAs<uint32_t>(p)), "TOD#");
