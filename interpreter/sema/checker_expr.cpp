@@ -647,7 +647,9 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
     }
     if (!f) {
         // A member declared with an unknown type: that error is the root cause.
-        if (unresolvedMembers_.count({t, key})) return bad(loc);
+        // Also one a base structure declared so (STRUCT EXTENDS, decision 0371).
+        for (const Type* s = t; s; s = s->kind == TK::Struct ? s->parent : nullptr)
+            if (unresolvedMembers_.count({s, key})) return bad(loc);
         if (t->kind == TK::FunctionBlock)
             for (const PouInfo* p = t->pou; p; p = p->parent)
                 if (unresolvedVars_.count({p, key})) return bad(loc);
