@@ -96,7 +96,7 @@ Checked timeArithmetic(Checker& ck, const CallArgs& call, TimeOp op, Checked a, 
     n->floorResult = result != Family::Dur;
     TK view = sema::integerView(rk);
     n->bits = sema::bitWidth(view);
-    n->isSigned = sema::isSignedInt(view);
+    n->isSigned = sema::isSignedInt(view) && !rt->unsignedDuration;  // a TwinCAT TIME/LTIME is unsigned (decision 0367)
     return makeResult(ck, n, rt, call, args);
 }
 

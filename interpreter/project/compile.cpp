@@ -122,7 +122,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     checker.setLibraryFiles(libraryFiles);
     sema::CompileOptions effective = options;
     for (int f : userFiles) effective.twincatRealText = effective.twincatRealText || source::isTwinCatObject(sources.file(f).path);
-    effective.twincatLtime = effective.twincatLtime || effective.twincatRealText;
+    effective.twincatDurations = effective.twincatDurations || effective.twincatRealText;
     checker.setCompileOptions(effective);
     if (const rt::PlcProfile* profile = rt::findProfile(options.target)) checker.setProfile(*profile);
     stdlib::registerBuiltins(checker);

@@ -41,7 +41,7 @@ public:
     // --target / --strict (set before run()).
     void setCompileOptions(const CompileOptions& options) {
         options_ = options;
-        if (options.twincatLtime) types().makeLtimeUnsigned();  // decision 0367
+        if (options.twincatDurations) types().makeDurationsUnsigned();  // decision 0367
     }
     const CompileOptions& compileOptions() const { return options_; }
 

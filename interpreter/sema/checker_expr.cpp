@@ -168,6 +168,10 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
                 warning(diag::W0005, e.loc, fmt::format("'{}' is beyond the largest LTIME (2^63-1 ns); it is taken as LTIME#106751d23h47m16s854ms775us807ns", e.text.substr(0, 60)));
             if (isLong) return constInt(r.value(), types().elementary(TK::LTime), e.loc);
             int64_t ms = r.value() / 1000000;
+            // A TwinCAT project's TIME is unsigned: up to T#49d17h2m47s295ms as it is (decision 0367).
+            const Type* time = types().elementary(TK::Time);
+            if (time->unsignedDuration && ms > std::numeric_limits<int32_t>::max() && ms <= int64_t{std::numeric_limits<uint32_t>::max()})
+                return constInt(ms, time, e.loc);
             // TwinCAT's and CODESYS' TIME is unsigned up to T#49d17h2m47s295ms; strun's
             // is signed (negative durations, the --dump format), so a literal above
             // T#24d20h31m23s647ms is taken as that, with a warning (decision 0277).

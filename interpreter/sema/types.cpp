@@ -89,9 +89,9 @@ int64_t nanosPerUnit(TK k) {
     }
 }
 
-void TypeTable::makeLtimeUnsigned() {
+void TypeTable::makeDurationsUnsigned() {
     for (Type& t : storage_)
-        if (&t == elementary(TK::LTime)) t.unsignedDuration = true;
+        if (&t == elementary(TK::LTime) || &t == elementary(TK::Time)) t.unsignedDuration = true;
 }
 
 TK integerView(TK k) {

@@ -85,8 +85,9 @@ struct Type {
     // Struct / FB whose layout is still being computed: containing it by value
     // (directly, through an array or another type) is a cycle (checker_cycles.cpp).
     bool incomplete = false;
-    // LTIME of a TwinCAT project: an unsigned 64-bit count of nanoseconds as
-    // TwinCAT keeps it, compared, divided and printed unsigned (decision 0367).
+    // TIME / LTIME of a TwinCAT project: an unsigned count of milliseconds /
+    // nanoseconds as TwinCAT keeps it, compared, divided and printed
+    // unsigned (decision 0367).
     bool unsignedDuration = false;
 
     // Member (with the members of `parent`s) and enumeration value by
@@ -143,8 +144,8 @@ public:
     const Type* pointer(const Type* target);
     const Type* reference(const Type* target);
     Type* create(Type t);  // user types (enum, struct, FB, alias, subrange)
-    // LTIME becomes TwinCAT's unsigned LTIME (decision 0367); before any user type copies it.
-    void makeLtimeUnsigned();
+    // TIME and LTIME become TwinCAT's unsigned ones (decision 0367); before any user type copies them.
+    void makeDurationsUnsigned();
     const Type* voidType() const { return elementary(TK::Void); }
 
 private:
