@@ -70,7 +70,7 @@ __int128 fractionNs(std::string_view text, size_t from, size_t to, int64_t unitN
 
 }  // namespace
 
-Result<int64_t> parseDurationLiteral(std::string_view text, bool unsignedRange, bool* saturated) {
+Result<int64_t> parseDurationLiteral(std::string_view text, bool unsignedRange, bool* saturated, uint64_t* unsignedBits) {
     using R = Result<int64_t>;
     const Result<std::string_view> stripped =
         stripPrefix(text, {"T", "TIME", "LT", "LTIME"}, "duration");
@@ -158,6 +158,7 @@ Result<int64_t> parseDurationLiteral(std::string_view text, bool unsignedRange, 
     if (total >= kSignedLimit) {
         if (!unsignedRange) return R::failure(fmt::format("duration literal {} is out of range", quoted(text)));
         if (saturated) *saturated = true;
+        if (unsignedBits) *unsignedBits = static_cast<uint64_t>(total);
         return R::success(INT64_MAX);
     }
     return R::success(static_cast<int64_t>(total));

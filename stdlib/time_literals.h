@@ -22,8 +22,10 @@ namespace strun::stdlib {
 // Errors: no parts, unknown or repeated or out-of-order unit, misplaced
 // fraction or underscore, range, or a total beyond +-2^63 ns (about 292 years).
 // `unsignedRange`: accept totals up to 2^64-1 ns too (TwinCAT's LTIME is
-// unsigned); such a total comes back as INT64_MAX and `*saturated` is set.
-Result<int64_t> parseDurationLiteral(std::string_view text, bool unsignedRange = false, bool* saturated = nullptr);
+// unsigned); such a total comes back as INT64_MAX and `*saturated` is set,
+// and `*unsignedBits`, when given, receives the total itself (TwinCAT's bits).
+Result<int64_t> parseDurationLiteral(std::string_view text, bool unsignedRange = false, bool* saturated = nullptr,
+                                     uint64_t* unsignedBits = nullptr);
 
 // `D#2026-01-31`, `DATE#`, `LD#`, `LDATE#` (or bare) -> ns since 1970-01-01
 // (negative before 1970). Year 1..9999, month 1..12, day valid for the month

@@ -10,12 +10,10 @@
 
 namespace strun::stdlib {
 
-std::string formatDuration(int64_t ns, std::string_view prefix) {
-    std::string out(prefix);
-    if (ns == 0) return out + "0s";
-    // Work on the magnitude in unsigned arithmetic so that INT64_MIN is fine.
-    uint64_t rest = ns < 0 ? 0 - static_cast<uint64_t>(ns) : static_cast<uint64_t>(ns);
-    if (ns < 0) out.push_back('-');
+namespace {
+
+// "1d2h..." of a magnitude, after `out`'s prefix and sign.
+std::string appendDurationUnits(std::string out, uint64_t rest) {
     struct Unit {
         const char* name;
         uint64_t ns;
@@ -30,6 +28,23 @@ std::string formatDuration(int64_t ns, std::string_view prefix) {
         if (count != 0) fmt::format_to(std::back_inserter(out), "{}{}", count, unit.name);
     }
     return out;
+}
+
+}  // namespace
+
+std::string formatDuration(int64_t ns, std::string_view prefix) {
+    std::string out(prefix);
+    if (ns == 0) return out + "0s";
+    // Work on the magnitude in unsigned arithmetic so that INT64_MIN is fine.
+    uint64_t rest = ns < 0 ? 0 - static_cast<uint64_t>(ns) : static_cast<uint64_t>(ns);
+    if (ns < 0) out.push_back('-');
+    return appendDurationUnits(std::move(out), rest);
+}
+
+std::string formatUnsignedDuration(uint64_t ns, std::string_view prefix) {
+    std::string out(prefix);
+    if (ns == 0) return out + "0s";
+    return appendDurationUnits(std::move(out), ns);
 }
 
 namespace {

@@ -12,6 +12,9 @@ namespace strun::stdlib {
 // "T#1d2h3m4s5ms", "T#1ms500us", "T#5ns". Units d h m s ms us ns; zero units
 // are omitted; the sign goes right after the prefix. INT64_MIN is handled.
 std::string formatDuration(int64_t ns, std::string_view prefix = "T#");
+// The same text for a count TwinCAT keeps unsigned (its LTIME, decision 0367):
+// 2^64-1 ns is "LTIME#213503d23h34m33s709ms551us615ns", never negative.
+std::string formatUnsignedDuration(uint64_t ns, std::string_view prefix = "LTIME#");
 
 // ns since 1970-01-01 -> "D#2026-01-31" (the time of day is ignored; floors,
 // so instants before 1970 land on the right day).

@@ -17,6 +17,8 @@ std::string valueText(ValueClass k, Expr* a, Ctx& c) {
         case ValueClass::LRealTwinCat: return stdlib::formatLRealTwinCat(a->f(c));
         case ValueClass::Time: return stdlib::formatDuration(stdlib::timeValueToNs(static_cast<int32_t>(a->i(c))), "T#");
         case ValueClass::LTime: return stdlib::formatDuration(a->i(c), "LTIME#");
+        case ValueClass::LTimeUnsigned: return stdlib::formatUnsignedDuration(static_cast<uint64_t>(a->i(c)), "LTIME#");
+        case ValueClass::TimeUnsigned: return stdlib::formatUnsignedDuration(uint64_t{static_cast<uint32_t>(a->i(c))} * 1000000u, "T#");
         case ValueClass::Date: return stdlib::formatDate(stdlib::dateValueToNs(static_cast<uint32_t>(a->i(c))), "D#");
         case ValueClass::LDate: return stdlib::formatDate(a->i(c), "LDATE#");
         case ValueClass::Tod: return stdlib::formatTimeOfDay(stdlib::todValueToNs(static_cast<uint32_t>(a->i(c))), "TOD#");
@@ -60,12 +62,12 @@ int64_t FromStringNode::i(Ctx& c) {
         case ValueClass::Bool: return stdlib::stringToBool(text).value();
         case ValueClass::Signed:
         case ValueClass::Unsigned: return static_cast<int64_t>(stdlib::stringToInteger(text, bits, isSigned).value());
-        case ValueClass::Time: {
+        case ValueClass::Time: case ValueClass::TimeUnsigned: {
             auto ns = stdlib::stringToDuration(text);
             auto ms = stdlib::nsToTimeValue(ns.value());
             return ns.ok() && ms.ok() ? ms.value() : 0;
         }
-        case ValueClass::LTime: return stdlib::stringToDuration(text).value();
+        case ValueClass::LTime: case ValueClass::LTimeUnsigned: return stdlib::stringToDuration(text).value();
         case ValueClass::Date: {
             auto ns = stdlib::stringToDate(text);
             auto s = stdlib::nsToDateValue(ns.value());

@@ -19,6 +19,8 @@ enum class ValueClass : uint8_t {
     Time, LTime, Date, LDate, Tod, LTod, Dt, LDt,
     Char, WChar, String, WString,
     RealTwinCat, LRealTwinCat,  // REAL / LREAL in a TwinCAT project: "24.0" (decision 0336)
+    LTimeUnsigned,              // LTIME in a TwinCAT project: unsigned nanoseconds (decision 0367)
+    TimeUnsigned,               // TIME in a TwinCAT project: unsigned milliseconds (decision 0367)
 };
 
 // The text of a value as *_TO_STRING writes it (UTF-8 / raw bytes).

@@ -29,8 +29,8 @@ bool valueClassOf(const Type* t, ValueClass& out) {
         case TK::Bool: out = ValueClass::Bool; return true;
         case TK::Real: out = ValueClass::Real; return true;
         case TK::LReal: out = ValueClass::LReal; return true;
-        case TK::Time: out = ValueClass::Time; return true;
-        case TK::LTime: out = ValueClass::LTime; return true;
+        case TK::Time: out = t->unsignedDuration ? ValueClass::TimeUnsigned : ValueClass::Time; return true;
+        case TK::LTime: out = t->unsignedDuration ? ValueClass::LTimeUnsigned : ValueClass::LTime; return true;
         case TK::Date: out = ValueClass::Date; return true;
         case TK::LDate: out = ValueClass::LDate; return true;
         case TK::Tod: out = ValueClass::Tod; return true;

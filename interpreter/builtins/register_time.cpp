@@ -70,11 +70,17 @@ Checked timeArithmetic(Checker& ck, const CallArgs& call, TimeOp op, Checked a, 
     }
     if (op == TimeOp::Add && fa == Family::Dur && (fb == Family::Tod || fb == Family::Dt)) std::swap(a, b), std::swap(fa, fb);
     Family result = Family::None;
+    // DATE +- TIME (`dDate + T#1S` in Beckhoff's OPC UA server sample) is not
+    // in CODESYS' or TwinCAT's table, but TwinCAT compiles it: taken as
+    // DT +- TIME on the DATE's seconds, without --strict (decision 0368).
+    const bool dateAndDuration = !ck.compileOptions().strict && fa == Family::Date && fb == Family::Dur;
     if (op == TimeOp::Add) {
         if (fb == Family::Dur && (fa == Family::Dur || fa == Family::Tod || fa == Family::Dt)) result = fa;
+        else if (dateAndDuration) result = fa;
     } else {
         if (fb == Family::Dur && (fa == Family::Dur || fa == Family::Tod || fa == Family::Dt)) result = fa;
         else if (fa == fb && (fa == Family::Date || fa == Family::Tod || fa == Family::Dt)) result = Family::Dur;
+        else if (dateAndDuration) result = fa;
     }
     if (result == Family::None) return notDefined(ck, call, a, b);
     TK rk = kindOf(result, isLong(a.type->kind) || isLong(b.type->kind));
@@ -90,7 +96,7 @@ Checked timeArithmetic(Checker& ck, const CallArgs& call, TimeOp op, Checked a, 
     n->floorResult = result != Family::Dur;
     TK view = sema::integerView(rk);
     n->bits = sema::bitWidth(view);
-    n->isSigned = sema::isSignedInt(view);
+    n->isSigned = sema::isSignedInt(view) && !rt->unsignedDuration;  // a TwinCAT TIME/LTIME is unsigned (decision 0367)
     return makeResult(ck, n, rt, call, args);
 }
 

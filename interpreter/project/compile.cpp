@@ -124,6 +124,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     sema::CompileOptions effective = options;
     for (int f : userFiles) effective.twincatRealText = effective.twincatRealText || source::isTwinCatObject(sources.file(f).path);
     for (int f = 0; f < sources.size(); ++f) effective.sourcePaths.push_back(sources.file(f).path);
+    effective.twincatDurations = effective.twincatDurations || effective.twincatRealText;
     checker.setCompileOptions(effective);
     if (const rt::PlcProfile* profile = rt::findProfile(options.target)) checker.setProfile(*profile);
     stdlib::registerBuiltins(checker);

@@ -87,8 +87,11 @@ json valueToJson(const Type* t, const uint8_t* p) {
         case TK::Byte: case TK::Word: case TK::DWord: case TK::LWord: return loadUnsigned(p, t->size);
         case TK::Real: return realJson(exec::loadAs<float>(p), true);
         case TK::LReal: return realJson(exec::loadAs<double>(p), false);
-        case TK::Time: return stdlib::formatDuration(static_cast<int64_t>(exec::loadAs<int32_t>(p)) * 1000000);
-        case TK::LTime: return stdlib::formatDuration(exec::loadAs<int64_t>(p));
+        case TK::Time:  // unsigned in a TwinCAT project (decision 0367)
+            if (t->unsignedDuration) return stdlib::formatUnsignedDuration(uint64_t{exec::loadAs<uint32_t>(p)} * 1000000u, "T#");
+            return stdlib::formatDuration(static_cast<int64_t>(exec::loadAs<int32_t>(p)) * 1000000);
+        case TK::LTime:  // unsigned in a TwinCAT project (decision 0367)
+            return t->unsignedDuration ? stdlib::formatUnsignedDuration(exec::loadAs<uint64_t>(p), "T#") : stdlib::formatDuration(exec::loadAs<int64_t>(p));
         case TK::Date: return stdlib::formatDate(static_cast<int64_t>(exec::loadAs<uint32_t>(p)) * 1000000000);
         case TK::Tod: return stdlib::formatTimeOfDay(static_cast<int64_t>(exec::loadAs<uint32_t>(p)) * 1000000);
         case TK::Dt: return stdlib::formatDateTime(static_cast<int64_t>(exec::loadAs<uint32_t>(p)) * 1000000000);

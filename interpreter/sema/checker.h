@@ -43,7 +43,10 @@ public:
     // Checks every unit; fills the model (program instances, tasks, code).
     void run(std::vector<ast::CompilationUnit>& units);
     // --target / --strict (set before run()).
-    void setCompileOptions(const CompileOptions& options) { options_ = options; }
+    void setCompileOptions(const CompileOptions& options) {
+        options_ = options;
+        if (options.twincatDurations) types().makeDurationsUnsigned();  // decision 0367
+    }
     const CompileOptions& compileOptions() const { return options_; }
 
     // ---- services for standard-library bindings

@@ -587,6 +587,19 @@ exec::Stmt* Checker::bindReference(VarSym* p, const Checked& v, exec::Expr* slot
     return storeTo(slot, types().elementary(TK::LWord), pool().make<exec::AddressOf>(v.node));
 }
 
+namespace {
+// A FUNCTION declared without a result type gives the value of its first
+// VAR_OUTPUT, as TwinCAT 3 does (`bOk := F_Swap(a, b)`); not with --strict,
+// where it has no value (decision 0369). Methods (dispatched through their
+// class) keep no value.
+const VarSym* implicitResultOutput(const PouInfo* fn, bool strict) {
+    if (fn->resultType || strict || fn->kind != ast::PouKind::Function || !fn->code) return nullptr;
+    for (const VarSym* p : fn->params)
+        if (p->section == ast::VarSection::Output) return p->byRef || !p->type ? nullptr : p;
+    return nullptr;
+}
+}  // namespace
+
 Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* instance) {
     layoutPou(fn);
     std::vector<ArgBinding> bindings;
@@ -663,10 +676,14 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
     r.loc = e.loc;
     r.hasCall = true;
     r.type = fn->resultType ? fn->resultType : types().voidType();
+    if (const VarSym* out = implicitResultOutput(fn, options_.strict)) {
+        r.type = out->type;
+        fn->code->resultOffset = out->offset;  // a VOID function has no result of its own there
+    }
     call->rep = resultRepOf(r.type);
-    if (fn->resultType && isAggregate(fn->resultType)) {
-        call->resultSize = fn->resultType->size;
-        call->tempOffset = allocTemp(fn->resultType->size);
+    if (r.type != types().voidType() && isAggregate(r.type)) {
+        call->resultSize = r.type->size;
+        call->tempOffset = allocTemp(r.type->size);
     }
     call->type = r.type;
     r.node = call;

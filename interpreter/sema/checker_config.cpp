@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/fb_eno_slots.h"
 #include "interpreter/sema/node_factory.h"
 #include "interpreter/source/twincat_tasks.h"
 #include "runtime/plc_profile.h"
@@ -392,6 +393,7 @@ void Checker::run(std::vector<ast::CompilationUnit>& units) {
     for (const stdlib::LibraryInfo& library : stdlib::libraries()) namespaces_.insert(upper(std::string(library.name)));
     noteOverloads(units);
     noteContestedNames(units);
+    addGlobalFbEnoSlots(units);  // the ENO of global instances called with EN/ENO (decision 0370)
     for (auto& u : units) collect(u);
     breakInheritanceCycles();
     // Types and enumerations first, so that enumeration values are known everywhere.

@@ -158,12 +158,20 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
             std::string u = upper(e.text);
             bool isLong = u.rfind("LT", 0) == 0;
             bool saturated = false;
-            auto r = stdlib::parseDurationLiteral(e.text, isLong, &saturated);
+            uint64_t unsignedBits = 0;
+            auto r = stdlib::parseDurationLiteral(e.text, isLong, &saturated, &unsignedBits);
             if (!r) return fail(diag::E0011, fmt::format("invalid duration literal '{}': {}", e.text.substr(0, 40), r.error()));
-            if (saturated)  // TwinCAT's LTIME is unsigned; strun's is signed (decision 0092)
+            // A TwinCAT project keeps LTIME unsigned: the literal's own bits (decision 0367).
+            const Type* ltime = types().elementary(TK::LTime);
+            if (saturated && ltime->unsignedDuration) return constInt(static_cast<int64_t>(unsignedBits), ltime, e.loc);
+            if (saturated)  // TwinCAT's LTIME is unsigned; strun's is signed elsewhere (decisions 0092, 0367)
                 warning(diag::W0005, e.loc, fmt::format("'{}' is beyond the largest LTIME (2^63-1 ns); it is taken as LTIME#106751d23h47m16s854ms775us807ns", e.text.substr(0, 60)));
             if (isLong) return constInt(r.value(), types().elementary(TK::LTime), e.loc);
             int64_t ms = r.value() / 1000000;
+            // A TwinCAT project's TIME is unsigned: up to T#49d17h2m47s295ms as it is (decision 0367).
+            const Type* time = types().elementary(TK::Time);
+            if (time->unsignedDuration && ms > std::numeric_limits<int32_t>::max() && ms <= int64_t{std::numeric_limits<uint32_t>::max()})
+                return constInt(ms, time, e.loc);
             // TwinCAT's and CODESYS' TIME is unsigned up to T#49d17h2m47s295ms; strun's
             // is signed (negative durations, the --dump format), so a literal above
             // T#24d20h31m23s647ms is taken as that, with a warning (decision 0277).
@@ -643,7 +651,9 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
     }
     if (!f) {
         // A member declared with an unknown type: that error is the root cause.
-        if (unresolvedMembers_.count({t, key})) return bad(loc);
+        // Also one a base structure declared so (STRUCT EXTENDS, decision 0371).
+        for (const Type* s = t; s; s = s->kind == TK::Struct ? s->parent : nullptr)
+            if (unresolvedMembers_.count({s, key})) return bad(loc);
         if (t->kind == TK::FunctionBlock)
             for (const PouInfo* p = t->pou; p; p = p->parent)
                 if (unresolvedVars_.count({p, key})) return bad(loc);

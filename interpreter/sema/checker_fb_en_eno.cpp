@@ -21,7 +21,11 @@ bool ownsEnEno(const Type* instance) { return instance->findField("EN") || insta
 VarSym* Checker::fbEnoSlot(const ast::Expr& instance) {
     if (instance.kind != ast::ExprKind::Name) return nullptr;
     VarSym* slot = lookupVar(upper(enoSlotName(instance.name)));
-    return slot && slot->owner == pou_ ? slot : nullptr;
+    if (!slot) return nullptr;
+    if (slot->owner == pou_) return slot;
+    // A global instance's slot (decision 0370), unless a local of that name hides the global.
+    const VarSym* inst = lookupVar(upper(instance.name));
+    return !slot->owner && inst && !inst->owner ? slot : nullptr;
 }
 
 bool Checker::usesFbEnEno(const Checked& inst, const ast::Expr& call) {

@@ -96,6 +96,11 @@ void Checker::buildClasses() {
         }
         for (const auto& name : fb->ast->implements) {
             PouInfo* itf = pouNamed(name);  // also `IMPLEMENTS __SYSTEM.IQueryInterface`
+            if (!itf && !typeDecls_.count(scopedKey(upper(name)))) {
+                // Declared nowhere (a library strun lacks: its name is answered, decision 0370).
+                suggest(error(diag::E0102, fb->ast->loc, fmt::format("unknown interface '{}' in IMPLEMENTS", name)), name, typeNames());
+                continue;
+            }
             if (!itf || itf->kind != ast::PouKind::Interface) {
                 error(diag::E0405, fb->ast->loc, fmt::format("'{}' in IMPLEMENTS is not an interface", name));
                 continue;

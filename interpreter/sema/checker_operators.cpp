@@ -251,6 +251,8 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
                 result = ka == TK::LTime || kb == TK::LTime ? types().elementary(TK::LTime) : a.type;
             } else if (isDateLike(ka) && ka != TK::Date && ka != TK::LDate && isTimeLike(kb)) {
                 result = a.type;  // TOD/DT +- TIME
+            } else if (!options_.strict && (ka == TK::Date || ka == TK::LDate) && isTimeLike(kb)) {
+                result = a.type;  // DATE +- TIME: computed as DT +- TIME, as TwinCAT compiles it (decision 0368)
             } else if (op == ast::Op::Add && isTimeLike(ka) && isDateLike(kb) && kb != TK::Date && kb != TK::LDate) {
                 return makeArith(op, b, a, loc);
             } else if (op == ast::Op::Sub && isDateLike(ka) && ka == kb) {

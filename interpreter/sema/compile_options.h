@@ -32,6 +32,10 @@ struct CompileOptions {
     // .TcDUT, .TcGVL, .TcIO): REAL_TO_STRING and friends write a whole
     // number as TwinCAT does, with '.0' (decision 0336). Set by compileProject.
     bool twincatRealText = false;
+    // The same projects keep TIME and LTIME as TwinCAT does: unsigned 32-bit
+    // milliseconds up to T#49d17h2m47s295ms and unsigned 64-bit nanoseconds
+    // up to LTIME#213503d23h34m33s709ms551us615ns (decision 0367).
+    bool twincatDurations = false;
     // The path of every source file, by SourceSet index: the value of an
     // input marked {CallerFilePath} (SIMATIC AX, decision 0363). Set by compileProject.
     std::vector<std::string> sourcePaths;

@@ -55,6 +55,24 @@ bool holdsInstances(ast::VarSection s) {
     return s == ast::VarSection::Var || s == ast::VarSection::Stat || s == ast::VarSection::Inst;
 }
 
+// A hidden BOOL `X$ENO` declared where the instance X is (`d` its declaration).
+ast::VarDecl slotFor(const ast::VarDecl& d, const std::string& name) {
+    ast::VarDecl slot;
+    slot.loc = d.loc;
+    slot.names.push_back(enoSlotName(name));
+    slot.nameLocs.push_back(d.loc);
+    slot.type = std::make_unique<ast::TypeSpec>();
+    slot.type->loc = d.loc;
+    slot.type->name = "BOOL";
+    slot.pragmas.push_back({d.loc, "attribute 'strun_hidden'"});  // out of --dump and --vcd (decision 0290)
+    return slot;
+}
+
+void usesOf(const ast::Pou& pou, EnoUses& uses) {
+    uses.stmts(pou.body);
+    for (const auto& m : pou.methods) usesOf(*m, uses);
+}
+
 void addSlots(ast::Pou& pou) {
     EnoUses uses;
     uses.stmts(pou.body);
@@ -70,18 +88,8 @@ void addSlots(ast::Pou& pou) {
         for (const ast::VarDecl& d : block.vars) {
             // Only a block instance: a variable of a named, non-array type.
             if (!d.type || d.type->kind != ast::TypeSpecKind::Named) continue;
-            for (const std::string& name : d.names) {
-                if (!uses.names.count(upperOf(name))) continue;
-                ast::VarDecl slot;
-                slot.loc = d.loc;
-                slot.names.push_back(enoSlotName(name));
-                slot.nameLocs.push_back(d.loc);
-                slot.type = std::make_unique<ast::TypeSpec>();
-                slot.type->loc = d.loc;
-                slot.type->name = "BOOL";
-                slot.pragmas.push_back({d.loc, "attribute 'strun_hidden'"});  // out of --dump and --vcd (decision 0290)
-                slots.push_back(std::move(slot));
-            }
+            for (const std::string& name : d.names)
+                if (uses.names.count(upperOf(name))) slots.push_back(slotFor(d, name));
         }
     }
     if (slots.empty()) return;
@@ -95,6 +103,38 @@ void addSlots(ast::Pou& pou) {
 }  // namespace
 
 std::string enoSlotName(const std::string& instance) { return instance + "$ENO"; }
+
+void addGlobalFbEnoSlots(std::vector<ast::CompilationUnit>& units) {
+    EnoUses uses;
+    for (const auto& u : units)
+        for (const auto& p : u.pous) usesOf(*p, uses);
+    if (uses.names.empty()) return;
+    // Added once: a parse kept from an earlier check comes back with them.
+    for (const auto& u : units)
+        for (const ast::GlobalList& list : u.globals)
+            for (const ast::VarBlock& block : list.blocks)
+                for (const ast::VarDecl& d : block.vars)
+                    for (const std::string& name : d.names)
+                        if (name.find('$') != std::string::npos) uses.names.erase(upperOf(name.substr(0, name.find('$'))));
+    for (auto& u : units)
+        for (ast::GlobalList& list : u.globals) {
+            std::vector<ast::VarDecl> slots;
+            for (const ast::VarBlock& block : list.blocks) {
+                if (block.constant) continue;
+                for (const ast::VarDecl& d : block.vars) {
+                    if (!d.type || d.type->kind != ast::TypeSpecKind::Named) continue;
+                    for (const std::string& name : d.names)
+                        if (uses.names.count(upperOf(name))) slots.push_back(slotFor(d, name));
+                }
+            }
+            if (slots.empty()) continue;
+            ast::VarBlock block;
+            block.loc = slots.front().loc;
+            block.section = list.blocks.front().section;
+            block.vars = std::move(slots);
+            list.blocks.push_back(std::move(block));
+        }
+}
 
 void addFbEnoSlots(ast::Pou& pou) {
     // Only the instances of a PROGRAM or a block persist from call to call.

@@ -21,4 +21,10 @@ std::string enoSlotName(const std::string& instance);
 // with EN or ENO or reads as `X.ENO`.
 void addFbEnoSlots(ast::Pou& pou);
 
+// The same for the instances of the global lists: a hidden global BOOL
+// `enoSlotName(X)` beside every global block instance X that some POU body
+// (or method, action) calls with EN or ENO or reads as `X.ENO`; such a
+// call in any POU writes it (decision 0370).
+void addGlobalFbEnoSlots(std::vector<ast::CompilationUnit>& units);
+
 }  // namespace strun::sema

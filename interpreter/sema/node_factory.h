@@ -19,8 +19,10 @@ inline Rep repOf(const Type* t) {
         case TK::Bool: return Rep::Bool;
         case TK::SInt: return Rep::I8;
         case TK::Int: return Rep::I16;
-        case TK::DInt: case TK::Time: return Rep::I32;
-        case TK::LInt: case TK::LTime: case TK::LDate: case TK::LTod: case TK::LDt: return Rep::I64;
+        case TK::Time: return t->unsignedDuration ? Rep::U32 : Rep::I32;  // decision 0367
+        case TK::DInt: return Rep::I32;
+        case TK::LTime: return t->unsignedDuration ? Rep::U64 : Rep::I64;  // decision 0367
+        case TK::LInt: case TK::LDate: case TK::LTod: case TK::LDt: return Rep::I64;
         case TK::USInt: case TK::Byte: case TK::Char: return Rep::U8;
         case TK::UInt: case TK::Word: case TK::WChar: return Rep::U16;
         case TK::UDInt: case TK::DWord: case TK::Date: case TK::Tod: case TK::Dt: return Rep::U32;

@@ -89,6 +89,11 @@ int64_t nanosPerUnit(TK k) {
     }
 }
 
+void TypeTable::makeDurationsUnsigned() {
+    for (Type& t : storage_)
+        if (&t == elementary(TK::LTime) || &t == elementary(TK::Time)) t.unsignedDuration = true;
+}
+
 TK integerView(TK k) {
     switch (k) {
         case TK::Byte: case TK::Char: return TK::USInt;

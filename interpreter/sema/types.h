@@ -85,6 +85,10 @@ struct Type {
     // Struct / FB whose layout is still being computed: containing it by value
     // (directly, through an array or another type) is a cycle (checker_cycles.cpp).
     bool incomplete = false;
+    // TIME / LTIME of a TwinCAT project: an unsigned count of milliseconds /
+    // nanoseconds as TwinCAT keeps it, compared, divided and printed
+    // unsigned (decision 0367).
+    bool unsignedDuration = false;
 
     // Member (with the members of `parent`s) and enumeration value by
     // upper-case name: hashed, the names folded once (a structure of
@@ -140,6 +144,8 @@ public:
     const Type* pointer(const Type* target);
     const Type* reference(const Type* target);
     Type* create(Type t);  // user types (enum, struct, FB, alias, subrange)
+    // TIME and LTIME become TwinCAT's unsigned ones (decision 0367); before any user type copies them.
+    void makeDurationsUnsigned();
     const Type* voidType() const { return elementary(TK::Void); }
 
 private:

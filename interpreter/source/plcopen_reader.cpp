@@ -222,7 +222,8 @@ struct PlcopenReader : XmlConversion {
         pugi::xml_node t = firstElement(base);
         written(dt, "TYPE");
         if (t && localName(t) == "struct") {
-            written(dt, std::string(dt.attribute("name").value()) + " :");
+            // CODESYS keeps a structure's EXTENDS in <addData><data name=".../datatypeinheritance"> (decision 0371).
+            written(dt, std::string(dt.attribute("name").value()) + inheritanceClause(dt) + " :");
             written(t, "STRUCT");
             for (pugi::xml_node v : children(t, "variable")) variable(v);
             written(t, "END_STRUCT");
@@ -236,6 +237,34 @@ struct PlcopenReader : XmlConversion {
         }
         written(dt, line + ";");
         written(dt, "END_TYPE");
+    }
+
+    // A CODESYS interface: <addData><data name=".../interface"><Interface
+    // name="I"><Methods><Method name="M"><interface>..., kept in the project's
+    // own addData, outside <types> (decision 0371).
+    void codesysInterface(const pugi::xml_node& i) {
+        written(i, std::string("INTERFACE ") + i.attribute("name").value() + inheritanceClause(i));
+        for (pugi::xml_node method : children(child(i, "Methods"), "Method")) {
+            pugi::xml_node mitf = child(method, "interface");
+            std::string mhead = std::string("METHOD ") + method.attribute("name").value();
+            if (pugi::xml_node r = child(mitf, "returnType")) mhead += " : " + typeText(r);
+            written(method, mhead);
+            interfaceOf(mitf);
+            written(method, "END_METHOD");
+        }
+        written(i, "END_INTERFACE");
+    }
+
+    void codesysInterfaces(const pugi::xml_node& n, int depth, std::set<std::string>& declared) {
+        if (depth > kMaxTypeDepth) return;
+        for (pugi::xml_node c : n.children()) {
+            if (c.type() != pugi::node_element) continue;
+            if (localName(c) == "Interface" && localName(c.parent()) == "data") {
+                if (declared.insert(upperCase(c.attribute("name").value())).second) codesysInterface(c);
+            } else if (localName(c) != "pou" && localName(c) != "dataType" && localName(c) != "body") {
+                codesysInterfaces(c, depth + 1, declared);
+            }
+        }
     }
 
     void pou(const pugi::xml_node& p) {
@@ -460,6 +489,8 @@ struct PlcopenReader : XmlConversion {
             declared.insert(p.attribute("name").value());
         }
         addDataDeclarations(child(project, "instances"), 0, declared);
+        std::set<std::string> interfaces;
+        codesysInterfaces(project, 0, interfaces);
         namedGlobalLists(project, 0);
         // A CODESYS project with several devices exports one configuration per
         // device's application; strun runs one PLC: the first (decision 0337).

@@ -61,8 +61,11 @@ std::string assertText(const sema::Type* t, const uint8_t* p) {
             return fmt::format("0x{:0{}X}", loadUnsigned(p, t->size), t->size * 2);
         case TK::Real: return stdlib::formatRealTwinCat(loadAs<float>(p));  // TcUnit's text is TwinCAT's
         case TK::LReal: return stdlib::formatLRealTwinCat(loadAs<double>(p));
-        case TK::Time: return stdlib::formatDuration(stdlib::timeValueToNs(loadAs<int32_t>(p)), "T#");
-        case TK::LTime: return stdlib::formatDuration(loadAs<int64_t>(p), "LTIME#");
+        case TK::Time:  // unsigned in a TwinCAT project (decision 0367)
+            return t->unsignedDuration ? stdlib::formatUnsignedDuration(uint64_t{loadAs<uint32_t>(p)} * 1000000u, "T#")
+                                       : stdlib::formatDuration(stdlib::timeValueToNs(loadAs<int32_t>(p)), "T#");
+        case TK::LTime:  // unsigned in a TwinCAT project (decision 0367)
+            return t->unsignedDuration ? stdlib::formatUnsignedDuration(loadAs<uint64_t>(p), "LTIME#") : stdlib::formatDuration(loadAs<int64_t>(p), "LTIME#");
         case TK::Date: return stdlib::formatDate(stdlib::dateValueToNs(loadAs<uint32_t>(p)), "D#");
         case TK::LDate: return stdlib::formatDate(loadAs<int64_t>(p), "LDATE#");
         case TK::Tod: return stdlib::formatTimeOfDay(stdlib::todValueToNs(loadAs<uint32_t>(p)), "TOD#");
