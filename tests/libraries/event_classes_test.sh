@@ -4,7 +4,8 @@
 # the .tmc's own class become the globals, events carry their class' texts
 # with the arguments in {n}, in the log lines, sEventText, sEventClassName,
 # RequestEventText and FB_RequestEventText. A folder whose sources do not
-# name the lists gets none; a POU named alone gets help instead.
+# name the lists gets none; a broken .tmc adds nothing; a POU named alone
+# gets help instead.
 #   event_classes_test.sh STRUN TEST_SOURCE_DIR
 set -eu
 strun=$1
@@ -34,6 +35,16 @@ VAR n : INT; END_VAR
 XML
 "$strun" run --virtual --cycles 1 --dump "$tmp/plain" > "$tmp/plain.json" 2> "$tmp/err" || fail "the plain project did not run"
 if grep -q 'TC_EVENTS\|PumpEvents' "$tmp/plain.json"; then fail "lists made for a project that does not name them"; fi
+# A .tmc that is not XML, or whose classes lack a GUID or an Id, adds nothing and breaks nothing.
+cp -r "$src/event_classes" "$tmp/broken"
+printf '<TcModuleClass><DataTypes><DataType><Name GUID="{0A0B' > "$tmp/broken/Plant/Plant.tmc"
+set +e
+"$strun" check "$tmp/broken" > "$tmp/err" 2>&1
+rc=$?
+set -e
+[ "$rc" = 1 ] || fail "a broken .tmc: exit $rc, expected 1 (the program names ValveEvents)"
+grep -q "ValveEvents" "$tmp/err" || fail "no error for the class the broken .tmc held"
+if grep -q "PumpEvents" "$tmp/err"; then fail "the .tsproj's class was lost"; fi
 # Without the folder (one POU named alone) TC_EVENTS is unknown, and the help says where it comes from.
 if "$strun" check "$src/event_classes/Plant/POUs/MAIN.TcPOU" > "$tmp/err" 2>&1; then fail "TC_EVENTS without event classes compiled"; fi
 grep -q "help: 'TC_EVENTS' is generated from the project's event classes" "$tmp/err" || fail "no help for TC_EVENTS"
