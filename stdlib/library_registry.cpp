@@ -33,6 +33,10 @@ const LibraryInfo* findLibrary(std::string_view name) {
 }
 
 std::string libraryHint(std::string_view name) {
+    // Not a library's: TwinCAT generates these lists from the project's event classes (decision 0372).
+    if (const std::string upper = upperOf(name); upper == "TC_EVENTS" || upper == "TC_EVENT_CLASSES")
+        return "'" + std::string(name) + "' is generated from the project's event classes: strun makes it when the TwinCAT project "
+               "folder is given whole and its .tsproj or .tmc files declare event classes (docs/libraries.md)";
     // `FILE.DirOpen`: the library's own name after its namespace.
     if (libraryNamesFor(name).empty() && name.rfind('.') != std::string_view::npos) name = name.substr(name.rfind('.') + 1);
     for (const LibraryName& n : libraryNamesFor(name)) {

@@ -10,6 +10,7 @@
 #include "interpreter/source/beremiz_standard_blocks.h"
 #include "interpreter/source/read_source.h"
 #include "interpreter/source/st_textual_sfc.h"
+#include "interpreter/source/twincat_event_classes.h"
 #include "interpreter/source/twincat_plc_project.h"
 #include "interpreter/source/xml_inputs.h"
 
@@ -130,6 +131,34 @@ void addBeremizProject(BeremizFolder& folder, bool warnSkipped, SourceSet& sourc
     for (const std::string& f : folder.skipped) d.note(beremizSkipReason(folder, f));
 }
 
+// A TwinCAT type system: a .tsproj (the System's) or a .tmc (a PLC project's).
+bool isTwinCatTypeSystem(const std::string& path) {
+    const std::string ext = lowerExtension(path);
+    return ext == ".tsproj" || ext == ".tmc";
+}
+
+// TC_EVENT_CLASSES and TC_EVENTS from the event classes of the folder's
+// .tsproj and .tmc files, when its sources (from `firstFile` on) name them
+// (decision 0372): a project that does not name them reads no type system.
+// The .tsproj comes first (it is the type system; the .tmc repeat it).
+void addEventClassLists(std::vector<std::string> typeSystems, size_t firstFile, SourceSet& sources, std::vector<int>& userFiles) {
+    if (typeSystems.empty()) return;
+    bool named = false;
+    for (size_t k = firstFile; k < userFiles.size() && !named; ++k) named = mentionsTwinCatEventLists(sources.file(userFiles[k]).text);
+    if (!named) return;
+    std::stable_sort(typeSystems.begin(), typeSystems.end(), [](const std::string& a, const std::string& b) {
+        return (lowerExtension(a) == ".tsproj") > (lowerExtension(b) == ".tsproj");
+    });
+    std::vector<TwinCatEventClass> classes;
+    for (const std::string& path : typeSystems) {
+        std::string xml, unused;
+        if (readSourceText(path, 0, xml, unused)) readTwinCatEventClasses(xml, classes);  // a type system is not a source: its own limit only
+    }
+    std::string st = twinCatEventClassesSource(classes);
+    if (st.empty()) return;
+    userFiles.push_back(sources.add(typeSystems.front() + " (TC_EVENTS)", std::move(st)));
+}
+
 // The sources under `dir`, recursively (an unreadable part is left out).
 std::vector<std::string> sourcesUnder(const std::string& dir) {
     std::vector<std::string> found;
@@ -167,12 +196,13 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
         if (fs::is_directory(path, ec)) {
             // Every source under the directory, in a stable (name) order; project
             // files of the IDEs (.plcproj, .tsproj, .sln, ...) are not sources.
-            std::vector<std::string> found, plcProjects;
+            std::vector<std::string> found, plcProjects, typeSystems;
             fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
             for (; !ec && it != end; it.increment(ec)) {
                 if (!it->is_regular_file(ec)) continue;
                 if (isProjectSource(it->path().string())) found.push_back(it->path().string());
                 else if (lowerExtension(it->path().string()) == ".plcproj") plcProjects.push_back(it->path().string());
+                else if (isTwinCatTypeSystem(it->path().string())) typeSystems.push_back(it->path().string());
             }
             if (ec) {
                 usageError = "cannot read directory '" + path + "'";
@@ -188,11 +218,13 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
                 return false;
             }
             std::sort(found.begin(), found.end());
+            const size_t firstOfDirectory = userFiles.size();
             for (const auto& f : found) {
                 std::string text;
                 if (!readSourceText(f, projectBytes(sources), text, usageError)) return false;
                 addFile(f, std::move(text), sources, userFiles, log, true);
             }
+            addEventClassLists(typeSystems, firstOfDirectory, sources, userFiles);
             continue;
         }
         std::string text;
