@@ -10,4 +10,53 @@ void runBodyOutOfLine(Ctx& c, const PouCode& code, uint8_t* inst, uint8_t* f) { 
 template struct CallFbStmtOf<false>;
 template struct CallFbStmtOf<true>;
 
+// The two forms of a FUNCTION / METHOD call, compiled here only (see
+// call_nodes.h): this file is compiled alone (cmake/build_cost.cmake), so
+// GCC's inlining limits are those of this small unit, and runBody's
+// statement loop of the callee (Block::exec) is inlined.
+uint8_t* CallPou::runFramed(Ctx& c) {
+    uint8_t* inst = instance ? instance->addr(c) : c.self;
+    PouCode* code = callee;
+    if (virtualSlot >= 0) {
+        code = dispatch(c, inst);
+        if (!code) return nullptr;
+    }
+    uint8_t* f = pushFrame(c, *code, site);
+    if (!f) return nullptr;
+    if (directInputs && outputs.empty()) {
+        // Lean call (decision 0267): nothing reads Ctx::pending.
+        bindArgs(c, f, binds);
+        runBody(c, *code, inst, f);
+        c.stackTop = f;
+        return f;
+    }
+    uint8_t* savedPending = c.pending;
+    c.pending = f;
+    if (directInputs) bindArgs(c, f, binds);
+    else
+        for (Stmt* s : inputs) s->exec(c);
+    runBody(c, *code, inst, f);
+    for (Stmt* s : outputs) s->exec(c);
+    c.pending = savedPending;
+    c.stackTop = f;
+    return f;
+}
+
+template <bool OnInstance>
+uint8_t* CallPou::runInlined(Ctx& c) {
+    uint8_t* inst = nullptr;
+    if constexpr (OnInstance) inst = instance->addr(c);  // before the arguments, as in runFramed
+    if (__builtin_expect(c.depth >= kMaxCallDepth, 0)) {
+        reportCallDepth(c, site, callee->name);
+        return nullptr;
+    }
+    const InlinedCall& in = *inlined;
+    uint8_t* f = initInlinedArea(c, in);
+    bindArgs(c, f, binds);
+    runInlinedBody<OnInstance>(c, in, callee->name, inst);
+    return f;
+}
+template uint8_t* CallPou::runInlined<false>(Ctx&);
+template uint8_t* CallPou::runInlined<true>(Ctx&);
+
 }  // namespace strun::exec

@@ -235,50 +235,15 @@ struct CallPou final : Expr {
         if (!inlined) return runFramed(c);
         return inlined->onInstance ? runInlined<true>(c) : runInlined<false>(c);
     }
-    [[gnu::noinline]] uint8_t* runFramed(Ctx& c) {
-        uint8_t* inst = instance ? instance->addr(c) : c.self;
-        PouCode* code = callee;
-        if (virtualSlot >= 0) {
-            code = dispatch(c, inst);
-            if (!code) return nullptr;
-        }
-        uint8_t* f = pushFrame(c, *code, site);
-        if (!f) return nullptr;
-        if (directInputs && outputs.empty()) {
-            // Lean call (decision 0267): nothing reads Ctx::pending.
-            bindArgs(c, f, binds);
-            runBody(c, *code, inst, f);
-            c.stackTop = f;
-            return f;
-        }
-        uint8_t* savedPending = c.pending;
-        c.pending = f;
-        if (directInputs) bindArgs(c, f, binds);
-        else
-            for (Stmt* s : inputs) s->exec(c);
-        runBody(c, *code, inst, f);
-        for (Stmt* s : outputs) s->exec(c);
-        c.pending = savedPending;
-        c.stackTop = f;
-        return f;
-    }
+    // Defined once, in call_nodes.cpp: inline here, every file that built a
+    // CallPou compiled a copy, GCC inlined the callee's statements into some
+    // copies and not others, and the linker kept whichever came first.
+    [[gnu::noinline]] uint8_t* runFramed(Ctx& c);
     // The inlined form: the same depth rule as pushFrame (the callee is a leaf,
     // so nothing inside it looks at the depth), the callee's variables
     // initialised and its inputs bound in the caller's frame, then its body.
     template <bool OnInstance>
-    [[gnu::noinline]] uint8_t* runInlined(Ctx& c) {
-        uint8_t* inst = nullptr;
-        if constexpr (OnInstance) inst = instance->addr(c);  // before the arguments, as in runFramed
-        if (__builtin_expect(c.depth >= kMaxCallDepth, 0)) {
-            reportCallDepth(c, site, callee->name);
-            return nullptr;
-        }
-        const InlinedCall& in = *inlined;
-        uint8_t* f = initInlinedArea(c, in);
-        bindArgs(c, f, binds);
-        runInlinedBody<OnInstance>(c, in, callee->name, inst);
-        return f;
-    }
+    [[gnu::noinline]] uint8_t* runInlined(Ctx& c);
     PouCode* dispatch(Ctx& c, uint8_t* inst);  // faults.cpp: NULL_POINTER when unbound
     int64_t i(Ctx& c) override {
         uint8_t* f = run(c);
