@@ -73,3 +73,17 @@ set(STRUN_PARSER_OPT "-O1" CACHE STRING "optimisation of the generated parser (e
 if(STRUN_PARSER_OPT AND CMAKE_BUILD_TYPE STREQUAL "Release")
   target_compile_options(strun_grammar PRIVATE ${STRUN_PARSER_OPT})
 endif()
+
+# ---- the test executables' own files (tests/): the code they run is the
+# libraries', built as above; their own is assertions and setup, run once.
+# Compiled at -O1 and (unit tests) in unity batches, since most of their
+# compile time is parsing the same headers again in each file.
+set(STRUN_TEST_OPT "-O1" CACHE STRING "optimisation of the test executables' own files (empty: as the build type)")
+function(strun_test_build_cost target)
+  if(STRUN_TEST_OPT AND CMAKE_BUILD_TYPE STREQUAL "Release")
+    target_compile_options(${target} PRIVATE ${STRUN_TEST_OPT})
+  endif()
+  if(STRUN_UNITY)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${STRUN_UNITY_BATCH})
+  endif()
+endfunction()

@@ -31,7 +31,9 @@ def case_page_and_state(strun):
         for key in ("name", "kind", "priority", "cycles", "overruns", "max_exec_us"):
             check(key in task, f"task has no {key}: {task}")
         check(task["name"] == "Fast", f"task {task['name']}")
-        check(state["forces"] == {} and state["diagnostics"] == [], "no forces, no diagnostics")
+        # OVERRUN is the real clock's verdict on a loaded machine, not the API's.
+        others = [d for d in state["diagnostics"] if d["code"] != "OVERRUN"]
+        check(state["forces"] == {} and others == [], f"no forces, no diagnostics: {state['forces']} {others}")
         s.wait_for(lambda: s.get("/api/state")["tasks"][0]["cycles"], lambda c: c >= 3)
         check(s.request("GET", "/api/nothing")[0] == 404, "unknown path: 404")
         check(s.request("GET", "/nothing.html")[0] == 404, "unknown page: 404")
@@ -206,8 +208,9 @@ def case_paused_real_clock(strun):
         s.post("/api/resume")
         s.wait_for(lambda: s.get("/api/state")["tasks"][0]["cycles"], lambda c: c > 12)
         st = s.get("/api/state")
-        check(st["tasks"][0]["overruns"] == 0 or st["tasks"][0]["overruns"] < st["tasks"][0]["cycles"] // 2,
-              f"a pause causes no overruns by itself: {st['tasks'][0]}")
+        # Counted as overruns, the 0.6 s paused would be 60 of the 10 ms task;
+        # a loaded machine drops a few activations of its own (6-11 seen at load 12).
+        check(st["tasks"][0]["overruns"] < 30, f"a pause causes no overruns by itself: {st['tasks'][0]}")
     finally:
         s.stop()
 

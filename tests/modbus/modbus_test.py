@@ -6,9 +6,11 @@ peer (pymodbus as client and as device, raw sockets for hostile frames).
 Each case starts strun on the real clock, talks to it, and checks what it
 answers and what its --dump says at the end. No assertion on wall-clock
 speed: waits are generous upper bounds, never measurements."""
+import atexit
 import json
 import os
 import re
+import signal
 import socket
 import struct
 import subprocess
@@ -57,6 +59,7 @@ class Strun:
     def __init__(self, args, serve=True):
         cmd = [STRUN, "run", "--dump"] + (["--modbus", "127.0.0.1:0"] if serve else []) + args
         self.proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        atexit.register(lambda: self.proc.poll() is None and self.proc.kill())  # a case that dies early
         self.stderr = []
         self.port = None
         ready = threading.Event()
@@ -81,7 +84,13 @@ class Strun:
         c.connect()
         return c
 
-    def finish(self):
+    def finish(self, interrupt=True):
+        # The interactive cases run strun with a long --for and end it with
+        # Ctrl-C once their checks are done (docs/cli.md: SIGINT ends a run
+        # cleanly, with its --dump): on a loaded machine a short --for ran
+        # out while the checks were still waiting for the peer.
+        if interrupt and self.proc.poll() is None:
+            self.proc.send_signal(signal.SIGINT)
         out, _ = self.proc.communicate(timeout=120)
         time.sleep(0.1)
         try:
@@ -105,7 +114,7 @@ def raw_request(port, pdu, unit=1, tid=7):
 
 # ---------------------------------------------------------------- server
 def case_server():
-    run = Strun(["--for", "6s", "--set", "%IX0.3=TRUE", "--set", "%IW5=1234", "--force", "%QW300=7",
+    run = Strun(["--for", "120s", "--set", "%IX0.3=TRUE", "--set", "%IW5=1234", "--force", "%QW300=7",
                  os.path.join(HERE, "server_image.st")])
     c = run.client()
     # FC 3: the counter of a 1 ms task moves.
@@ -207,7 +216,7 @@ def case_client():
     with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
         json.dump(mapping, f)
     dev = device(port, {"di": [1, 0, 1, 1, 0, 0, 0, 1], "ir": [111, 222]})
-    run = Strun(["--for", "8s", "--modbus-client", f.name, os.path.join(HERE, "client_copy.st")])
+    run = Strun(["--for", "120s", "--modbus-client", f.name, os.path.join(HERE, "client_copy.st")])
     peer = ModbusTcpClient("127.0.0.1", port=port, timeout=3, retries=0)
     peer.connect()
     check(wait_until(lambda: peer.read_holding_registers(0, 1, slave=1).registers[0] == 333),
@@ -242,7 +251,7 @@ def case_client():
 
 # ---------------------------------------------------------------- hostile
 def case_hostile():
-    run = Strun(["--for", "8s", os.path.join(HERE, "server_image.st")])
+    run = Strun(["--for", "120s", os.path.join(HERE, "server_image.st")])
     good = run.client()
     check(not good.read_holding_registers(0, 1, slave=1).isError(), "a good client is answered")
     attacks = {
@@ -364,7 +373,7 @@ def case_bench():
                              stderr=subprocess.DEVNULL, text=True)
     check(plant.stdout.readline().startswith("plant:"), "the plant starts")
     run = Strun(["--for", "12s", "--modbus-client", f.name, os.path.join(bench, "tank_control.st")], serve=False)
-    dump = run.finish()
+    dump = run.finish(interrupt=False)
     plant.kill()
     tank = dump["programs"]["Tank"]
     print("pumpStarts", tank["pumpStarts"], "minLevel", tank["minLevel"], "maxLevel", tank["maxLevel"])

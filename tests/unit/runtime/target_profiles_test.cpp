@@ -5,12 +5,12 @@
 #include "runtime/plc_profile.h"
 #include "runtime/system_area.h"
 #include "runtime/task_rules.h"
+#include "fake_body.h"  // the test unit `ms`
 
 using namespace strun::rt;
+using strun::rt::test::ms;
 
 namespace {
-constexpr PlcTime ms = kMillisecond;
-
 TaskSpec named(const char* name, TaskKind kind = TaskKind::Freewheeling) {
     TaskSpec spec;
     spec.name = name;
