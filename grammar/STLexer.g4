@@ -98,6 +98,8 @@ tokens {
     WITH,
     READ_ONLY,
     READ_WRITE,
+    R_EDGE,
+    F_EDGE,
     IF,
     THEN,
     ELSIF,
@@ -216,6 +218,8 @@ fragment TOD_VALUE  : [0-9]+ ':' [0-9]+ (':' [0-9]+ ('.' [0-9]+)?)?;
 // interpreter/ast/st_scanner.cpp), so this lexer reports them as IDENTIFIER.
 // GET, SET, TASK, ON, WITH, READ_ONLY, READ_WRITE are soft keywords: the
 // parser also accepts them as names (SET is an input of the standard RS block).
+// R_EDGE and F_EDGE are names everywhere except after `: TYPE` in a
+// declaration (interpreter/ast/edge_keyword.h).
 
 // ------------------------------------------------------------------ names
 // Letters, digits and underscores. IEC forbids double and trailing underscores,

@@ -235,10 +235,11 @@ varQualifier
     ;
 
 // `a, b AT %IX0.0 : INT := 5;` — also the looser form of VAR_CONFIG
-// (`prog.x AT %QW1 : INT;`).
+// (`prog.x AT %QW1 : INT;`), IEC's located declaration without a name
+// (`AT %MW1 : INT := 2;`) and its edge-detecting inputs (`x : BOOL R_EDGE;`).
 varDecl
-    : names+=varName (COMMA names+=varName)* (AT address=DIRECT_ADDRESS)? COLON
-        type=typeSpec (ASSIGN init=initializer)? semi=SEMI?   // a missing ';' is reported by the AST builder
+    : (names+=varName (COMMA names+=varName)*)? (AT address=DIRECT_ADDRESS)? COLON
+        type=typeSpec edge=(R_EDGE | F_EDGE)? (ASSIGN init=initializer)? semi=SEMI?   // a missing ';' is reported by the AST builder
     ;
 
 accessDecl

@@ -182,6 +182,9 @@ struct VarDecl {
     // written (e.g. "prog.var") and whether the access is READ_ONLY.
     std::string accessPath;
     bool readOnly = false;
+    // `x : BOOL R_EDGE;` / `F_EDGE` (IEC 61131-3 edge-detecting input; decision 0339).
+    enum class Edge { None, Rising, Falling };
+    Edge edge = Edge::None;
 };
 
 enum class VarSection {

@@ -88,7 +88,23 @@ VarDecl AstBuilder::varDecl(P::VarDeclContext* c, VarSection section) {
             error(diag::E0009, loc(n), "'" + out.names.back() + "' is not a simple name; paths are only allowed in VAR_CONFIG");
     }
     if (c->address != nullptr) out.address = c->address->getText();
+    if (c->names.empty()) {
+        // IEC's located declaration without a name, `AT %MW1 : INT := 2;`:
+        // the address is the variable's only name (code writes `%MW1`), so
+        // the declaration gives it its type and initial value; hidden from
+        // --dump and --vcd, which list named variables (decision 0339).
+        if (c->address == nullptr) {
+            error(diag::E0001, loc(c), "a declaration needs a name, or AT and an address");
+        } else if (section != VarSection::Var && section != VarSection::Global) {
+            error(diag::E0009, loc(c), "a declaration without a name ('AT " + out.address + " : ...') is only allowed in VAR and VAR_GLOBAL");
+        } else {
+            out.names.push_back(out.address);
+            out.nameLocs.push_back(loc(c->address));
+            out.pragmas.push_back({out.loc, "attribute 'strun_hidden'"});
+        }
+    }
     out.type = typeSpec(c->type);
+    if (c->edge != nullptr) out.edge = c->edge->getType() == L::R_EDGE ? VarDecl::Edge::Rising : VarDecl::Edge::Falling;
     if (c->init != nullptr) out.init = initializer(c->init);
     // TwinCAT `r : REFERENCE TO INT REF= x;`: bound to x once per instance (decision 0201).
     if (auto* ref = exactly<P::ReferenceTypeContext>(c->type); ref != nullptr && ref->refOperator != nullptr) {

@@ -106,6 +106,7 @@ VarDecl cloneVarDecl(const VarDecl& d) {
     out.pragmas = d.pragmas;
     out.accessPath = d.accessPath;
     out.readOnly = d.readOnly;
+    out.edge = d.edge;
     return out;
 }
 

@@ -24,6 +24,7 @@
 #include "grammar/STLexer.h"
 #include "grammar/STParser.h"
 #include "interpreter/ast/action_keyword.h"
+#include "interpreter/ast/edge_keyword.h"
 #include "interpreter/ast/ax_twincat_tokens.h"
 #include "interpreter/ast/ast_builder.h"
 #include "interpreter/ast/large_stack.h"
@@ -73,6 +74,7 @@ std::string lexerErrorMessage(const antlr4::Token& token) {
 ScanResult scanWithActionKeyword(std::string_view text) {
     ScanResult scan = scanSource(text, kMaxTokensPerFile);
     resolveActionKeyword(scan.tokens);
+    resolveEdgeKeyword(text, scan.tokens);  // `x : BOOL R_EDGE;`
     resolveAxTwinCatForms(text, scan.tokens, &scan.emptyDeclarations);  // OVERRIDE, `END_VAR;`, `{pragma};`, `;;`
     return scan;
 }

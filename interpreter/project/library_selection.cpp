@@ -91,6 +91,13 @@ LibrarySelection selectLibraries(const std::vector<std::string_view>& projectTex
     std::string folded;
     auto scan = [&](std::string_view text) {
         forEachWord(text, [&](std::string_view w, size_t end) {
+            // `x : BOOL R_EDGE;` is checked as a hidden R_TRIG (F_EDGE: F_TRIG; decision 0339).
+            if (w.size() == 6 && (w[0] == 'R' || w[0] == 'r' || w[0] == 'F' || w[0] == 'f') && (w[1] == '_')) {
+                folded.assign(w);
+                sema::upperInPlace(folded);
+                if (folded == "R_EDGE") w = "R_TRIG";
+                if (folded == "F_EDGE") w = "F_TRIG";
+            }
             if (!masks.mayBeName(w)) return;
             folded.assign(w);
             sema::upperInPlace(folded);

@@ -9,6 +9,7 @@
 #include "interpreter/sema/attributes.h"
 #include "interpreter/sema/any_argument.h"
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/edge_inputs.h"
 #include "interpreter/sema/fb_eno_slots.h"
 #include "interpreter/sema/node_factory.h"
 
@@ -86,6 +87,7 @@ PouInfo* Checker::pouNamed(const std::string& written) const {
 void Checker::declarePou(ast::Pou* pou, PouInfo* owner) {
     addNamespacePath(namespaces_, pou->nameSpace);
     addFbEnoSlots(*pou);  // the ENO of its instances called with EN/ENO (decision 0358)
+    lowerEdgeInputs(*pou);  // `x : BOOL R_EDGE;` as a hidden R_TRIG (decision 0339)
     auto info = std::make_unique<PouInfo>();
     info->ast = pou;
     info->kind = pou->kind;
@@ -697,6 +699,11 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 continue;
             }
             if (t && block.section != ast::VarSection::InOut && rejectByValueCycle(t, decl.type ? decl.type->loc : decl.loc)) continue;
+            if (decl.edge != ast::VarDecl::Edge::None &&
+                (block.section != ast::VarSection::Input || (pou->kind != ast::PouKind::FunctionBlock && pou->kind != ast::PouKind::Program) ||
+                 !t || t->kind != TK::Bool))
+                error(diag::E0407, decl.type ? decl.type->loc : decl.loc,
+                      "R_EDGE and F_EDGE belong to a BOOL input (VAR_INPUT) of a function block or program");
             for (size_t n = 0; n < decl.names.size(); ++n) {
                 const std::string& name = decl.names[n];
                 ast::Loc loc = n < decl.nameLocs.size() ? decl.nameLocs[n] : decl.loc;
