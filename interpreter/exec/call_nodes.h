@@ -182,8 +182,13 @@ struct InlinedCall {
     Body body;
     uint32_t base = 0;
     bool onInstance = false;      // a METHOD: its body runs on the call's instance (self)
-    uint32_t size = 0;            // bytes of `image` copied per call
+    uint32_t size = 0;            // bytes of `image` copied per call (0: nothing to initialise)
     std::vector<uint8_t> image;   // frameImageSize(size) bytes
+    uint32_t resultOffset = 0;    // a FUNCTION's / METHOD's result, from the start of the area
+    // A block call on a variable of the caller's instance: the instance is
+    // c.self + instanceOffset, without the virtual call to its place node.
+    bool instanceOnSelf = false;
+    uint32_t instanceOffset = 0;
 };
 
 // The area of an inlined call in the caller's frame, initialised from its image.
@@ -235,52 +240,25 @@ struct CallPou final : Expr {
         if (!inlined) return runFramed(c);
         return inlined->onInstance ? runInlined<true>(c) : runInlined<false>(c);
     }
-    [[gnu::noinline]] uint8_t* runFramed(Ctx& c) {
-        uint8_t* inst = instance ? instance->addr(c) : c.self;
-        PouCode* code = callee;
-        if (virtualSlot >= 0) {
-            code = dispatch(c, inst);
-            if (!code) return nullptr;
-        }
-        uint8_t* f = pushFrame(c, *code, site);
-        if (!f) return nullptr;
-        if (directInputs && outputs.empty()) {
-            // Lean call (decision 0267): nothing reads Ctx::pending.
-            bindArgs(c, f, binds);
-            runBody(c, *code, inst, f);
-            c.stackTop = f;
-            return f;
-        }
-        uint8_t* savedPending = c.pending;
-        c.pending = f;
-        if (directInputs) bindArgs(c, f, binds);
-        else
-            for (Stmt* s : inputs) s->exec(c);
-        runBody(c, *code, inst, f);
-        for (Stmt* s : outputs) s->exec(c);
-        c.pending = savedPending;
-        c.stackTop = f;
-        return f;
-    }
+    // Defined once, in call_nodes.cpp: inline here, every file that built a
+    // CallPou compiled a copy, GCC inlined the callee's statements into some
+    // copies and not others, and the linker kept whichever came first.
+    [[gnu::noinline]] uint8_t* runFramed(Ctx& c);
     // The inlined form: the same depth rule as pushFrame (the callee is a leaf,
     // so nothing inside it looks at the depth), the callee's variables
     // initialised and its inputs bound in the caller's frame, then its body.
     template <bool OnInstance>
-    [[gnu::noinline]] uint8_t* runInlined(Ctx& c) {
-        uint8_t* inst = nullptr;
-        if constexpr (OnInstance) inst = instance->addr(c);  // before the arguments, as in runFramed
-        if (__builtin_expect(c.depth >= kMaxCallDepth, 0)) {
-            reportCallDepth(c, site, callee->name);
-            return nullptr;
-        }
-        const InlinedCall& in = *inlined;
-        uint8_t* f = initInlinedArea(c, in);
-        bindArgs(c, f, binds);
-        runInlinedBody<OnInstance>(c, in, callee->name, inst);
-        return f;
-    }
+    [[gnu::noinline]] uint8_t* runInlined(Ctx& c);
+    // An inlined FUNCTION call and the use of its integer result fused in one
+    // function (call_nodes.cpp): the value (iInlined) or the result's Bytes
+    // stored at `dst` (x := F(...) of the result's own type), so that the
+    // node holding the call pays no second call and register saves.
+    [[gnu::noinline]] int64_t iInlined(Ctx& c);
+    template <unsigned Bytes>
+    [[gnu::noinline]] Flow runInlinedInto(Ctx& c, uint8_t* dst);  // Flow::Next
     PouCode* dispatch(Ctx& c, uint8_t* inst);  // faults.cpp: NULL_POINTER when unbound
     int64_t i(Ctx& c) override {
+        if (inlined && !inlined->onInstance) return iInlined(c);
         uint8_t* f = run(c);
         return f ? loadIntRep(f + callee->resultOffset, rep) : 0;
     }
@@ -321,6 +299,19 @@ struct AssignCallLocal final : Stmt {
     bool sameType;  // the result is stored as T: copied without the ResultRep switch
     AssignCallLocal(uint32_t o, CallPou* k) : off(o), call(k), sameType(k->rep == resultRepFor<T>() && k->rep != ResultRep::None) {}
     Flow exec(Ctx& c) override {
+        if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
+            // An inlined FUNCTION whose result has T's own type: one function
+            // does the call and the store, tail-called (c.self and c.frame are
+            // the same after an inlined FUNCTION, so the target is too).
+            const InlinedCall* in = call->inlined;
+            if (sameType && in && !in->onInstance) return call->runInlinedInto<sizeof(T)>(c, (FRAME ? c.frame : c.self) + off);
+            return storeOutOfLine(c);  // keeps this function free of register saves
+        } else {
+            return store(c);
+        }
+    }
+    [[gnu::noinline]] Flow storeOutOfLine(Ctx& c) { return store(c); }
+    [[gnu::always_inline]] Flow store(Ctx& c) {
         if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
             if (sameType) {
                 uint8_t* f = call->run(c);
@@ -370,16 +361,30 @@ struct CallFbStmtOf final : Stmt {
         for (Stmt* s : inputs) s->exec(c);
         return instance->addr(c);
     }
+    // bindInputs of the inlined form: the instance's address read inline
+    // when it is a variable of the caller's instance.
+    // One bindArgs in the function (with two, GCC checked the range of the
+    // binding kind at every argument).
+    [[gnu::always_inline]] uint8_t* bindInlinedInputs(Ctx& c, const InlinedCall& in) {
+        uint8_t* inst = in.instanceOnSelf ? c.self + in.instanceOffset : nullptr;
+        if (directInputs) {
+            if (!inst) inst = instance->addr(c);
+            bindArgs(c, inst, binds);
+            return inst;
+        }
+        for (Stmt* s : inputs) s->exec(c);
+        return inst ? inst : instance->addr(c);
+    }
     // The inlined form, as CallPou::runInlined: the block's VAR_TEMP in an
     // area of the caller's frame, its body run on the instance.
     [[gnu::noinline]] Flow runInlined(Ctx& c) {
-        uint8_t* inst = bindInputs(c);
+        const InlinedCall& in = *inlined;
+        uint8_t* inst = bindInlinedInputs(c, in);
         if (__builtin_expect(c.depth >= kMaxCallDepth, 0)) {
             reportCallDepth(c, site, body->name);
             return Flow::Next;
         }
-        const InlinedCall& in = *inlined;
-        initInlinedArea(c, in);
+        if (in.size) initInlinedArea(c, in);  // a block without VAR_TEMP has nothing to initialise
         runInlinedBody<true>(c, in, body->name, inst);
         if (c.aborting) return Flow::Abort;
         for (Stmt* s : outputs) s->exec(c);

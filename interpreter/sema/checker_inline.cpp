@@ -117,6 +117,7 @@ void Checker::inlineLeafCalls() {
         in->onInstance = site.onInstance;
         in->size = fn->code->initSize;
         in->image = fn->code->frameInit;
+        in->resultOffset = fn->code->resultOffset;
         if (site.call) {
             // Constant arguments are part of the image: stored once, here.
             auto& binds = site.call->binds;
@@ -124,6 +125,11 @@ void Checker::inlineLeafCalls() {
             site.call->inlined = in;
         } else {
             site.fbCall->inlined = in;  // its inputs are stored into the instance, not the frame
+            // A block instance that is a variable of the caller's instance: its address read inline.
+            if (auto* var = dynamic_cast<exec::VarNode<void, exec::BaseKind::Self>*>(site.fbCall->instance)) {
+                in->instanceOnSelf = true;
+                in->instanceOffset = var->off;
+            }
         }
         caller->frameSize = alignInlineBase(frameTop_, 16);
         model_.maxFrameSize = std::max(model_.maxFrameSize, caller->frameSize);
