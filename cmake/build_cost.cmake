@@ -21,9 +21,9 @@ if(STRUN_UNITY)
   # And the evaluator's own files (interpreter/exec) and the checker's files
   # that build call nodes: in a batch, GCC's inlining limits for the larger
   # unit made it call the statement loop of the callee's body out of line in
-  # CallFbStmtOf (instantiated in call_nodes.cpp) and CallPou::runFramed
-  # (whose copy the linker keeps comes from a file that builds CallPou):
-  # fb_io +5.3 %, fb_methods +6.2 %, many_args +3.1 % instructions.
+  # CallFbStmtOf and CallPou::runFramed (both defined once, in call_nodes.cpp,
+  # which is compiled alone): fb_io +5.3 %, fb_methods +6.2 %, many_args +3.1 %
+  # instructions.
   file(GLOB EXEC_SOURCES ${CMAKE_SOURCE_DIR}/interpreter/exec/*.cpp)
   set_source_files_properties(${EXEC_SOURCES}
     ${CMAKE_SOURCE_DIR}/interpreter/sema/checker_call.cpp ${CMAKE_SOURCE_DIR}/interpreter/sema/checker_oop.cpp
@@ -33,16 +33,6 @@ if(STRUN_UNITY)
     ${CMAKE_SOURCE_DIR}/interpreter/sema/fuse_binary_real.cpp ${CMAKE_SOURCE_DIR}/interpreter/sema/fuse_binary_lreal.cpp
     ${CMAKE_SOURCE_DIR}/stdlib/fmt_library.cpp
     PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
-  # checker_oop.cpp first in the archive: three of these files each compile a
-  # copy of CallPou::runFramed (inline, in exec/call_nodes.h) and the linker
-  # keeps the copy of the member it takes first. checker_oop.cpp's copy runs
-  # the callee's statements inline; checker_call.cpp's and checker_stmt.cpp's
-  # call Body::run (fb_methods +1.2 % instructions when the batches changed
-  # the order). The lasting fix is one out-of-line definition in
-  # call_nodes.cpp, as for CallFbStmtOf.
-  get_target_property(INTERP_SOURCE_LIST strun_interp SOURCES)
-  list(REMOVE_ITEM INTERP_SOURCE_LIST ${CMAKE_SOURCE_DIR}/interpreter/sema/checker_oop.cpp)
-  set_target_properties(strun_interp PROPERTIES SOURCES "${CMAKE_SOURCE_DIR}/interpreter/sema/checker_oop.cpp;${INTERP_SOURCE_LIST}")
 endif()
 
 # ---- cold code at -O2 instead of the Release build type's -O3: the command
