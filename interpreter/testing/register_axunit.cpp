@@ -5,6 +5,7 @@
 #include "interpreter/sema/checker.h"
 #include "interpreter/exec/value_nodes.h"
 #include "interpreter/testing/axunit_nodes.h"
+#include "interpreter/testing/native_call_args.h"
 
 namespace strun::testing {
 
@@ -14,41 +15,6 @@ using sema::Checker;
 using sema::TK;
 
 namespace {
-
-// Binds the arguments by position or by the given names (any case); every
-// parameter is required.
-bool bind(Checker& ck, CallArgs& call, const std::vector<const char*>& names, const char* shown, std::vector<Checked>& out) {
-    out.assign(names.size(), Checked{});
-    if (call.args.size() != names.size()) {
-        ck.error(diag::E0301, call.loc, fmt::format("'{}' takes {} argument(s), not {}", shown, names.size(), call.args.size()));
-        return false;
-    }
-    for (size_t k = 0; k < call.args.size(); ++k) {
-        size_t idx = k;
-        if (!call.names[k].empty()) {
-            idx = names.size();
-            for (size_t j = 0; j < names.size(); ++j)
-                if (call.names[k] == sema::upper(names[j])) idx = j;
-            if (idx == names.size()) {
-                ck.error(diag::E0302, call.loc, fmt::format("'{}' has no parameter '{}'", shown, call.names[k]));
-                return false;
-            }
-        }
-        out[idx] = call.args[k];
-    }
-    return true;
-}
-
-Checked result(Checker& ck, exec::Expr* node, const CallArgs& call) {
-    node->type = ck.types().elementary(TK::Void);
-    Checked r;
-    r.ok = true;
-    r.loc = call.loc;
-    r.type = node->type;
-    r.node = node;
-    r.hasCall = true;
-    return r;
-}
 
 bool placeOf(Checker& ck, const Checked& file, const Checked& line, const char* shown, CallerPlace& out) {
     if (!file.type || !sema::isStringType(file.type->kind)) {
@@ -68,12 +34,12 @@ bool placeOf(Checker& ck, const Checked& file, const Checked& line, const char* 
 void registerAxUnit(Checker& ck, TestRegistry& reg) {
     ck.addBuiltin("AXUNIT_SUCCEED", [](Checker& ck, CallArgs& call) -> Checked {
         std::vector<Checked> a;
-        if (!bind(ck, call, {}, "axunit_Succeed", a)) return ck.bad(call.loc);
-        return result(ck, ck.pool().make<exec::ConstInt>(0), call);
+        if (!native_call::bindArgs(ck, call, {}, a)) return ck.bad(call.loc);
+        return native_call::result(ck, ck.pool().make<exec::ConstInt>(0), TK::Void, call);
     });
     ck.addBuiltin("AXUNIT_FAIL", [&reg](Checker& ck, CallArgs& call) -> Checked {
         std::vector<Checked> a;
-        if (!bind(ck, call, {"message", "file", "line"}, "axunit_Fail", a)) return ck.bad(call.loc);
+        if (!native_call::bindArgs(ck, call, {{"message", true}, {"file", true}, {"line", true}}, a)) return ck.bad(call.loc);
         if (!a[0].type || !sema::isStringType(a[0].type->kind)) {
             ck.error(diag::E0201, a[0].loc, fmt::format("axunit_Fail: the message must be a STRING or WSTRING, not {}", sema::typeName(a[0].type)));
             return ck.bad(call.loc);
@@ -83,7 +49,7 @@ void registerAxUnit(Checker& ck, TestRegistry& reg) {
         n->message = a[0].node;
         n->messageType = a[0].type;
         if (!placeOf(ck, a[1], a[2], "axunit_Fail", n->place)) return ck.bad(call.loc);
-        return result(ck, n, call);
+        return native_call::result(ck, n, TK::Void, call);
     });
     static const std::pair<const char*, AxCompareNode::Kind> comparisons[] = {
         {"__AXUNIT_EQUAL", AxCompareNode::Kind::Equal},
@@ -96,7 +62,7 @@ void registerAxUnit(Checker& ck, TestRegistry& reg) {
         const char* shown = name;
         ck.addBuiltin(name, [&reg, k, shown](Checker& ck, CallArgs& call) -> Checked {
             std::vector<Checked> a;
-            if (!bind(ck, call, {"a", "b", "file", "line"}, shown, a)) return ck.bad(call.loc);
+            if (!native_call::bindArgs(ck, call, {{"a", true}, {"b", true}, {"file", true}, {"line", true}}, a)) return ck.bad(call.loc);
             // The ST assertions pass two values of one elementary type (their overload's).
             Checked x = ck.settle(a[0]), y = ck.settle(a[1]);
             if (!x.ok || !y.ok) return ck.bad(call.loc);
@@ -111,7 +77,7 @@ void registerAxUnit(Checker& ck, TestRegistry& reg) {
             n->a = {x.node, x.type};
             n->b = {y.node, y.type};
             if (!placeOf(ck, a[2], a[3], shown, n->place)) return ck.bad(call.loc);
-            return result(ck, n, call);
+            return native_call::result(ck, n, TK::Void, call);
         });
     }
 }
