@@ -207,4 +207,29 @@ Result<std::u16string> parseWideStringLiteral(std::string_view text) {
     return Result<std::u16string>::success(std::move(out));
 }
 
+std::string quoteStringLiteral(std::string_view text, bool wide) {
+    const char quote = wide ? '"' : '\'';
+    std::string out(1, quote);
+    out.reserve(text.size() + 2);
+    for (const char ch : text) {
+        const auto c = static_cast<unsigned char>(ch);
+        if (ch == '$' || ch == quote) {
+            out.push_back('$');
+            out.push_back(ch);
+        } else if (ch == '\n') {
+            out += "$N";
+        } else if (ch == '\r') {
+            out += "$R";
+        } else if (ch == '\t') {
+            out += "$T";
+        } else if (c < 0x20) {
+            out += wide ? fmt::format("${:04X}", c) : fmt::format("${:02X}", c);
+        } else {
+            out.push_back(ch);
+        }
+    }
+    out.push_back(quote);
+    return out;
+}
+
 }  // namespace strun::stdlib

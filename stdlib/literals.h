@@ -30,6 +30,12 @@ Result<int64_t> parseSignedIntegerLiteral(std::string_view text);
 // one too small rounds to 0.
 Result<double> parseRealLiteral(std::string_view text);
 
+// The ST literal of a text: `it's` -> `'it$'s'` (`"..."` when wide): `$`,
+// the quote, newline, CR and tab escaped, other control bytes as $hh
+// ($00hh when wide); everything else (UTF-8 text) as it is. What
+// parseStringLiteral / parseWideStringLiteral read back.
+std::string quoteStringLiteral(std::string_view text, bool wide = false);
+
 // Single-byte string literal including its quotes: `'a$Nb'` -> "a\nb".
 // Escapes (letters case-insensitive): $$ $' $" $L (LF) $N (newline = LF)
 // $P (form feed) $R (CR) $T (tab) and $hh (two hex digits, one byte).

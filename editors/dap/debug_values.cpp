@@ -4,27 +4,11 @@
 #include <memory>
 
 #include "interpreter/project/dump_json.h"
+#include "stdlib/literals.h"
 
 namespace strun::editors::dap {
 
 using sema::TK;
-
-namespace {
-
-std::string quoted(const std::string& text, char quote) {
-    std::string out(1, quote);
-    for (char c : text) {
-        if (c == '$' || c == quote) out.push_back('$');
-        if (c == '\n') { out += "$N"; continue; }
-        if (c == '\r') { out += "$R"; continue; }
-        if (c == '\t') { out += "$T"; continue; }
-        out.push_back(c);
-    }
-    out.push_back(quote);
-    return out;
-}
-
-}  // namespace
 
 bool expandable(const sema::Type* t) {
     return t && (t->kind == TK::Array || t->kind == TK::Struct || t->kind == TK::FunctionBlock);
@@ -46,10 +30,10 @@ std::string stLiteral(const sema::Type* t, const uint8_t* p, int bit) {
             if (s.find_first_of(".eE") == std::string::npos) s += ".0";
             return s;
         }
-        case TK::String: return quoted(project::valueToJson(t, p).get<std::string>(), '\'');
-        case TK::WString: return quoted(project::valueToJson(t, p).get<std::string>(), '"');
-        case TK::Char: return quoted(project::valueToJson(t, p).get<std::string>(), '\'');
-        case TK::WChar: return quoted(project::valueToJson(t, p).get<std::string>(), '"');
+        case TK::String: return stdlib::quoteStringLiteral(project::valueToJson(t, p).get<std::string>());
+        case TK::WString: return stdlib::quoteStringLiteral(project::valueToJson(t, p).get<std::string>(), true);
+        case TK::Char: return stdlib::quoteStringLiteral(project::valueToJson(t, p).get<std::string>());
+        case TK::WChar: return stdlib::quoteStringLiteral(project::valueToJson(t, p).get<std::string>(), true);
         case TK::Enum: {
             const auto j = project::valueToJson(t, p);
             return j.is_string() ? t->name + "#" + j.get<std::string>() : t->name + "#" + j.dump();

@@ -14,6 +14,7 @@
 #include "interpreter/source/plcopen_graphical.h"
 #include "interpreter/source/plcopen_xml.h"
 #include "interpreter/source/xml_conversion.h"
+#include "stdlib/literals.h"
 
 namespace strun::source {
 
@@ -144,14 +145,8 @@ struct PlcopenReader : XmlConversion {
         const std::string kind = localName(firstElement(type));
         const bool wide = kind == "wstring";
         if ((kind != "string" && !wide) || localName(firstElement(init)) != "simpleValue") return v;
-        const char quote = wide ? '"' : '\'';
-        if (!v.empty() && v.front() == quote) return v;
-        std::string out(1, quote);
-        for (char c : v) {
-            if (c == '$' || c == quote) out.push_back('$');
-            out.push_back(c);
-        }
-        return out + quote;
+        if (!v.empty() && v.front() == (wide ? '"' : '\'')) return v;
+        return stdlib::quoteStringLiteral(v, wide);
     }
 
     void variable(const pugi::xml_node& var) {

@@ -5,14 +5,12 @@
 #include <cstdio>
 #include <pugixml.hpp>
 
+#include "stdlib/literals.h"
+#include "stdlib/number_scan.h"
+
 namespace strun::source {
 
 namespace {
-
-std::string ecLower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return s;
-}
 
 std::string ecTrimmed(const std::string& s) {
     const auto blank = [](unsigned char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
@@ -55,35 +53,12 @@ bool ecParseGuid(std::string text, std::uint8_t out[16]) {
 std::string ecSeverity(const std::string& s) {
     static const char* const names[] = {"Verbose", "Info", "Warning", "Error", "Critical"};
     for (const char* n : names)
-        if (ecLower(s) == ecLower(n)) return n;
+        if (stdlib::equalsIgnoreCase(s, n)) return n;
     return "Info";
 }
 
-// An ST string literal (cut to 255 bytes, never inside a $-escape).
-std::string ecStString(const std::string& text) {
-    std::string out = "'";
-    size_t bytes = 0;
-    for (unsigned char c : text) {
-        if (bytes == 255) break;
-        ++bytes;
-        switch (c) {
-            case '\'': out += "$'"; break;
-            case '$': out += "$$"; break;
-            case '\n': out += "$N"; break;
-            case '\r': out += "$R"; break;
-            case '\t': out += "$T"; break;
-            default:
-                if (c < 0x20) {
-                    char buf[4];
-                    std::snprintf(buf, sizeof buf, "$%02X", c);
-                    out += buf;
-                } else {
-                    out += static_cast<char>(c);
-                }
-        }
-    }
-    return out + "'";
-}
+// An ST string literal of at most 255 bytes of text.
+std::string ecStString(const std::string& text) { return stdlib::quoteStringLiteral(std::string_view(text).substr(0, 255)); }
 
 std::string ecHexByte(std::uint8_t b) {
     char buf[8];
@@ -112,7 +87,7 @@ void readTwinCatEventClasses(const std::string& xml, std::vector<TwinCatEventCla
         const pugi::xml_node name = dataType.child("Name");
         cls.name = ecTrimmed(name.text().as_string());
         if (!ecIsIdentifier(cls.name) || !ecParseGuid(name.attribute("GUID").as_string(), cls.guid)) continue;
-        const bool known = std::any_of(out.begin(), out.end(), [&](const TwinCatEventClass& c) { return ecLower(c.name) == ecLower(cls.name); });
+        const bool known = std::any_of(out.begin(), out.end(), [&](const TwinCatEventClass& c) { return stdlib::equalsIgnoreCase(c.name, cls.name); });
         if (known) continue;
         cls.text = dataType.child("DisplayName").text().as_string();
         for (pugi::xml_node ev : dataType.children("EventId")) {
@@ -130,7 +105,7 @@ void readTwinCatEventClasses(const std::string& xml, std::vector<TwinCatEventCla
             e.id = static_cast<std::uint32_t>(value);
             e.text = ev.child("DisplayName").text().as_string();
             e.severity = ecSeverity(ecTrimmed(ev.child("Severity").text().as_string()));
-            const bool twice = std::any_of(cls.events.begin(), cls.events.end(), [&](const TwinCatEvent& o) { return ecLower(o.name) == ecLower(e.name); });
+            const bool twice = std::any_of(cls.events.begin(), cls.events.end(), [&](const TwinCatEvent& o) { return stdlib::equalsIgnoreCase(o.name, e.name); });
             if (!twice) cls.events.push_back(std::move(e));
         }
         out.push_back(std::move(cls));

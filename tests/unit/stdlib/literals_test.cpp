@@ -145,3 +145,14 @@ TEST_CASE("wide string literals: errors", "[literals]") {
     }
     CHECK(parseWideStringLiteral("\"\xC3(\"").error().find("UTF-8") != std::string::npos);
 }
+
+TEST_CASE("quoteStringLiteral writes what parseStringLiteral reads back", "[literals]") {
+    CHECK(quoteStringLiteral("it's 100$") == "'it$'s 100$$'");
+    CHECK(quoteStringLiteral("a\nb\tc\r") == "'a$Nb$Tc$R'");
+    CHECK(quoteStringLiteral(std::string("x\x01y", 3)) == "'x$01y'");
+    CHECK(quoteStringLiteral("say \"hi\"", true) == "\"say $\"hi$\"\"");
+    CHECK(quoteStringLiteral(std::string("\x02", 1), true) == "\"$0002\"");
+    for (const std::string text : {std::string("plain"), std::string("it's $5\n\t"), std::string("\xC3\xA4 UTF-8"), std::string("\x1F\x7F", 2)})
+        CHECK(parseStringLiteral(quoteStringLiteral(text)).value() == text);
+    CHECK(parseWideStringLiteral(quoteStringLiteral("wide \"w\" $", true)).value() == u"wide \"w\" $");
+}
