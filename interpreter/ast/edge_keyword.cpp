@@ -1,5 +1,7 @@
 #include "interpreter/ast/edge_keyword.h"
 
+#include <cstring>
+
 #include <antlr4-runtime.h>
 
 #include "grammar/STLexer.h"
@@ -13,9 +15,25 @@ using L = strun_grammar::STLexer;
 
 std::string_view textOf(std::string_view text, const ScannedToken& t) { return text.substr(t.start, t.stop + 1 - t.start); }
 
+// Whether `_EDGE` (any case) occurs in the text at all: most sources have no
+// R_EDGE / F_EDGE, and memchr over the text is far cheaper than a walk over
+// its tokens.
+bool mentionsEdge(std::string_view text) {
+    const char* p = text.data();
+    const char* end = p + text.size();
+    while (end - p >= 5) {
+        const void* hit = std::memchr(p, '_', static_cast<size_t>(end - p - 4));
+        if (!hit) return false;
+        p = static_cast<const char*>(hit) + 1;
+        if ((p[0] | 0x20) == 'e' && (p[1] | 0x20) == 'd' && (p[2] | 0x20) == 'g' && (p[3] | 0x20) == 'e') return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 void resolveEdgeKeyword(std::string_view text, std::vector<ScannedToken>& tokens) {
+    if (!mentionsEdge(text)) return;
     // `: TYPE R_EDGE ;` (or `:=`, END_VAR): the two default-channel tokens
     // before each six-letter IDENTIFIER, and the one after it.
     std::size_t before = tokens.size(), beforeThat = tokens.size();
