@@ -8,13 +8,6 @@ namespace strun::sema {
 
 namespace {
 
-std::string upperOf(const std::string& s) {
-    std::string out = s;
-    for (char& c : out)
-        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-    return out;
-}
-
 bool isEnOrEno(const ast::Arg& a) {
     return (!a.output && stdlib::equalsIgnoreCase(a.name, "EN")) || (a.output && stdlib::equalsIgnoreCase(a.name, "ENO"));
 }
@@ -27,10 +20,10 @@ struct EnoUses {
         if (!e) return;
         const ast::Expr* first = e->kids.empty() ? nullptr : e->kids[0].get();
         if (e->kind == ast::ExprKind::Member && first && first->kind == ast::ExprKind::Name && stdlib::equalsIgnoreCase(e->name, "ENO"))
-            names.insert(upperOf(first->name));
+            names.insert(stdlib::upperAscii(first->name));
         if (e->kind == ast::ExprKind::Call && first && first->kind == ast::ExprKind::Name)
             for (const ast::Arg& a : e->args)
-                if (isEnOrEno(a)) names.insert(upperOf(first->name));
+                if (isEnOrEno(a)) names.insert(stdlib::upperAscii(first->name));
         for (const auto& k : e->kids) expr(k.get());
         for (const ast::Arg& a : e->args) expr(a.value.get());
     }
@@ -73,31 +66,42 @@ void usesOf(const ast::Pou& pou, EnoUses& uses) {
     for (const auto& m : pou.methods) usesOf(*m, uses);
 }
 
-void addSlots(ast::Pou& pou) {
-    EnoUses uses;
-    uses.stmts(pou.body);
-    if (uses.names.empty()) return;
-    // Added once: a parse kept from an earlier check (the editors', a live reload) comes back with them.
-    for (const ast::VarBlock& block : pou.vars)
+// A kept parse (the editors', a live reload) comes back with its slots: forget
+// the instances that have one already.
+void forgetSlotted(const std::vector<ast::VarBlock>& blocks, EnoUses& uses) {
+    for (const ast::VarBlock& block : blocks)
         for (const ast::VarDecl& d : block.vars)
             for (const std::string& name : d.names)
-                if (name.find('$') != std::string::npos) uses.names.erase(upperOf(name.substr(0, name.find('$'))));
+                if (name.find('$') != std::string::npos) uses.names.erase(stdlib::upperAscii(name.substr(0, name.find('$'))));
+}
+
+// The slots of the instances `uses` names among `blocks` (those of the
+// sections `holds` accepts), appended to `blocks` as a block of `section`.
+void addSlotsTo(std::vector<ast::VarBlock>& blocks, const EnoUses& uses, bool (*holds)(ast::VarSection), ast::VarSection section) {
     std::vector<ast::VarDecl> slots;
-    for (const ast::VarBlock& block : pou.vars) {
-        if (!holdsInstances(block.section) || block.constant) continue;
+    for (const ast::VarBlock& block : blocks) {
+        if (!holds(block.section) || block.constant) continue;
         for (const ast::VarDecl& d : block.vars) {
             // Only a block instance: a variable of a named, non-array type.
             if (!d.type || d.type->kind != ast::TypeSpecKind::Named) continue;
             for (const std::string& name : d.names)
-                if (uses.names.count(upperOf(name))) slots.push_back(slotFor(d, name));
+                if (uses.names.count(stdlib::upperAscii(name))) slots.push_back(slotFor(d, name));
         }
     }
     if (slots.empty()) return;
     ast::VarBlock block;
     block.loc = slots.front().loc;
-    block.section = ast::VarSection::Var;
+    block.section = section;
     block.vars = std::move(slots);
-    pou.vars.push_back(std::move(block));
+    blocks.push_back(std::move(block));
+}
+
+void addSlots(ast::Pou& pou) {
+    EnoUses uses;
+    uses.stmts(pou.body);
+    if (uses.names.empty()) return;
+    forgetSlotted(pou.vars, uses);
+    addSlotsTo(pou.vars, uses, holdsInstances, ast::VarSection::Var);
 }
 
 }  // namespace
@@ -109,31 +113,12 @@ void addGlobalFbEnoSlots(std::vector<ast::CompilationUnit>& units) {
     for (const auto& u : units)
         for (const auto& p : u.pous) usesOf(*p, uses);
     if (uses.names.empty()) return;
-    // Added once: a parse kept from an earlier check comes back with them.
     for (const auto& u : units)
-        for (const ast::GlobalList& list : u.globals)
-            for (const ast::VarBlock& block : list.blocks)
-                for (const ast::VarDecl& d : block.vars)
-                    for (const std::string& name : d.names)
-                        if (name.find('$') != std::string::npos) uses.names.erase(upperOf(name.substr(0, name.find('$'))));
+        for (const ast::GlobalList& list : u.globals) forgetSlotted(list.blocks, uses);
     for (auto& u : units)
-        for (ast::GlobalList& list : u.globals) {
-            std::vector<ast::VarDecl> slots;
-            for (const ast::VarBlock& block : list.blocks) {
-                if (block.constant) continue;
-                for (const ast::VarDecl& d : block.vars) {
-                    if (!d.type || d.type->kind != ast::TypeSpecKind::Named) continue;
-                    for (const std::string& name : d.names)
-                        if (uses.names.count(upperOf(name))) slots.push_back(slotFor(d, name));
-                }
-            }
-            if (slots.empty()) continue;
-            ast::VarBlock block;
-            block.loc = slots.front().loc;
-            block.section = list.blocks.front().section;
-            block.vars = std::move(slots);
-            list.blocks.push_back(std::move(block));
-        }
+        for (ast::GlobalList& list : u.globals)
+            if (!list.blocks.empty())
+                addSlotsTo(list.blocks, uses, [](ast::VarSection) { return true; }, list.blocks.front().section);
 }
 
 void addFbEnoSlots(ast::Pou& pou) {
