@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "interpreter/ast/synthesized_expr.h"
 #include "stdlib/number_scan.h"
 
 namespace strun::sema {
@@ -9,15 +10,6 @@ namespace strun::sema {
 namespace {
 
 using Triggers = std::map<std::string, std::string>;  // input name (upper case) -> its trigger's name
-
-ast::ExprPtr nameExpr(const ast::Loc& loc, const std::string& name) {
-    auto e = std::make_unique<ast::Expr>();
-    e->kind = ast::ExprKind::Name;
-    e->loc = loc;
-    e->nameLoc = loc;
-    e->name = name;
-    return e;
-}
 
 // Makes every read of an edge input in the body read its trigger's Q.
 struct EdgeReads {
@@ -33,7 +25,7 @@ struct EdgeReads {
             q->loc = e->loc;
             q->nameLoc = e->loc;
             q->name = "Q";
-            q->kids.push_back(nameExpr(e->loc, it->second));
+            q->kids.push_back(ast::nameExpr(it->second, e->loc));
             e = std::move(q);
             return;
         }
@@ -97,11 +89,11 @@ void lowerEdgeInputs(ast::Pou& pou) {
                 auto call = std::make_unique<ast::Expr>();
                 call->kind = ast::ExprKind::Call;
                 call->loc = d.loc;
-                call->kids.push_back(nameExpr(d.loc, trigger));
+                call->kids.push_back(ast::nameExpr(trigger, d.loc));
                 ast::Arg clk;
                 clk.loc = d.loc;
                 clk.name = "CLK";
-                clk.value = nameExpr(d.loc, name);
+                clk.value = ast::nameExpr(name, d.loc);
                 call->args.push_back(std::move(clk));
                 auto stmt = std::make_unique<ast::Stmt>();
                 stmt->kind = ast::StmtKind::Call;
