@@ -8,6 +8,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -57,8 +58,16 @@ public:
     // In a generic block's specialisation the error says which one it is.
     Diagnostic& error(diag::Code code, const ast::Loc& loc, const std::string& message) {
         if (silent_) return silenced();
+        const PouInfo* s = specialisationBeingChecked();
+        // An error of a generic block's own code repeats in each specialisation:
+        // reported for the first only, so that a self-nesting block with one bad
+        // line gives one message, not one per level (fuzzing found 1 000).
+        if (s && !specialisationErrors_.insert({loc.file, loc.line, loc.col, message}).second) {
+            discarded_ = Diagnostic{};
+            return discarded_;
+        }
         Diagnostic& d = log_.error(code, loc, message);
-        if (const PouInfo* s = specialisationBeingChecked()) d.note("in the specialisation '" + s->name + "'");
+        if (s) d.note("in the specialisation '" + s->name + "'");
         return d;
     }
     // A warning, unless `loc` is in strun's embedded library (its sources are
@@ -281,6 +290,11 @@ private:
     std::string closestDeclared(const std::string& typed, const std::vector<std::string>& declared) const;
     // Adds "did you mean 'X'?" to `d` when a declared name is close to `typed`.
     void suggest(Diagnostic& d, const std::string& typed, const std::vector<std::string>& declared) const;
+    // The same with the candidates listed only when `d` will be printed (a
+    // list of every type or function name is long, and an error past the
+    // log's cap or a repeated one is never shown).
+    void suggest(Diagnostic& d, const std::string& typed, std::vector<std::string> (Checker::*candidates)() const) const;
+    bool shown(const Diagnostic& d) const { return &d != &discarded_ && !log_.isDropped(d); }
     std::vector<std::string> visibleVariableNames() const;
     std::vector<std::string> typeNames() const;
     std::vector<std::string> globalNames() const;
@@ -499,6 +513,7 @@ private:
     std::set<int> libraryFiles_;
     ExprObserver* observer_ = nullptr;
     Diagnostic discarded_;  // what warning() hands back for the library's own lines (never printed)
+    std::set<std::tuple<int, int, int, std::string>> specialisationErrors_;  // file, line, column, message
     const rt::PlcProfile* profile_ = &rt::defaultProfile();
 
 public:

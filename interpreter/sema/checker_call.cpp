@@ -472,7 +472,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             return bad(e.loc);
         }
         if (isUnresolved(key)) return bad(e.loc);
-        suggest(error(diag::E0105, callee.loc, fmt::format("undeclared function '{}'", callee.name)), callee.name, functionNames());
+        suggest(error(diag::E0105, callee.loc, fmt::format("undeclared function '{}'", callee.name)), callee.name, &Checker::functionNames);
         return bad(e.loc);
     }
     if (callee.kind == ast::ExprKind::Member) {

@@ -215,7 +215,7 @@ const Type* Checker::resolveNamedType(const std::string& name, const ast::Loc& l
         error(diag::E0102, loc, fmt::format("'{}' is declared in more than one namespace: write one of {}, or add a USING", name, candidates));
         return nullptr;
     }
-    suggest(error(diag::E0102, loc, fmt::format("unknown type '{}'", name)), name, typeNames());
+    suggest(error(diag::E0102, loc, fmt::format("unknown type '{}'", name)), name, &Checker::typeNames);
     return nullptr;
 }
 
@@ -744,7 +744,7 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 if (isExternal) {
                     auto g = globals_.find(key);
                     if (g == globals_.end()) {
-                        suggest(error(diag::E0406, loc, fmt::format("VAR_EXTERNAL '{}' names no global variable", name)), name, globalNames());
+                        suggest(error(diag::E0406, loc, fmt::format("VAR_EXTERNAL '{}' names no global variable", name)), name, &Checker::globalNames);
                         unresolvedVars_.insert({pou, key});
                         continue;
                     }

@@ -502,7 +502,7 @@ Checked Checker::checkName(const ast::Expr& e) {
     if (Checked later = laterConstant(key, e.loc); later.ok) return later;
     // A variable declared with an unknown type: that error is the root cause.
     if (isUnresolved(key)) return bad(e.loc);
-    suggest(error(diag::E0101, e.loc, fmt::format("undeclared identifier '{}'", e.name)), e.name, visibleVariableNames());
+    suggest(error(diag::E0101, e.loc, fmt::format("undeclared identifier '{}'", e.name)), e.name, &Checker::visibleVariableNames);
     return bad(e.loc);
 }
 

@@ -98,7 +98,7 @@ void Checker::buildClasses() {
             PouInfo* itf = pouNamed(name);  // also `IMPLEMENTS __SYSTEM.IQueryInterface`
             if (!itf && !typeDecls_.count(scopedKey(upper(name)))) {
                 // Declared nowhere (a library strun lacks: its name is answered, decision 0370).
-                suggest(error(diag::E0102, fb->ast->loc, fmt::format("unknown interface '{}' in IMPLEMENTS", name)), name, typeNames());
+                suggest(error(diag::E0102, fb->ast->loc, fmt::format("unknown interface '{}' in IMPLEMENTS", name)), name, &Checker::typeNames);
                 continue;
             }
             if (!itf || itf->kind != ast::PouKind::Interface) {

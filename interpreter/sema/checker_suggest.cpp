@@ -29,6 +29,7 @@ std::string Checker::closestDeclared(const std::string& typed, const std::vector
 }
 
 void Checker::suggest(Diagnostic& d, const std::string& typed, const std::vector<std::string>& declared) const {
+    if (!shown(d)) return;
     // A name of a vendor library (provided or not) says where it comes from (decision 0220).
     if (std::string hint = stdlib::libraryHint(typed); !hint.empty()) {
         d.withHelp(hint);
@@ -38,6 +39,11 @@ void Checker::suggest(Diagnostic& d, const std::string& typed, const std::vector
     if (typed.size() < 3) return;
     const std::string best = closestDeclared(typed, declared);
     if (!best.empty() && upper(best) != upper(typed)) d.withHelp(fmt::format("did you mean '{}'?", best));
+}
+
+void Checker::suggest(Diagnostic& d, const std::string& typed, std::vector<std::string> (Checker::*candidates)() const) const {
+    if (!shown(d)) return;
+    suggest(d, typed, (this->*candidates)());
 }
 
 std::vector<std::string> Checker::visibleVariableNames() const {

@@ -94,6 +94,8 @@ public:
         }));
     }
     size_t droppedCount() const { return dropped_; }
+    // True for the scratch diagnostic a reporter past the cap decorates.
+    bool isDropped(const Diagnostic& d) const { return &d == &overflow_; }
     // Removes the messages from position `count` on (a check whose result was discarded).
     void dropFrom(size_t count) {
         if (count >= messages_.size()) return;
