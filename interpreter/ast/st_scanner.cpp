@@ -95,10 +95,14 @@ private:
                 }
                 return single(L::SLASH, p);
             case '{': {
-                const size_t close = s_.find('}', p + 1);
+                // `{{ ... }}`: matiec/Beremiz inline C code, whose braces nest;
+                // it ends at the first `}}` (decision 0351).
+                const bool cBlock = c1 == '{';
+                const size_t close = cBlock ? s_.find("}}", p + 2) : s_.find('}', p + 1);
                 if (close == std::string_view::npos) return rest(L::UNTERMINATED_PRAGMA, p);
-                emit(L::PRAGMA, p, close + 1 - p, L::PRAGMAS);
-                return close + 1;
+                const size_t end = close + (cBlock ? 2 : 1);
+                emit(L::PRAGMA, p, end - p, L::PRAGMAS);
+                return end;
             }
             case '\'': return quotedToken(p, '\'', L::STRING_LITERAL, L::UNTERMINATED_STRING);
             case '"': return quotedToken(p, '"', L::WSTRING_LITERAL, L::UNTERMINATED_WSTRING);
