@@ -96,9 +96,11 @@ private:
                 return single(L::SLASH, p);
             case '{': {
                 // `{{ ... }}`: matiec/Beremiz inline C code, whose braces nest;
-                // it ends at the first `}}` (decision 0351).
-                const bool cBlock = c1 == '{';
-                const size_t close = cBlock ? s_.find("}}", p + 2) : s_.find('}', p + 1);
+                // it ends at the first `}}` (decision 0351). Without a `}}` it is
+                // an ordinary pragma, as the grammar's longest match has it.
+                const size_t cClose = c1 == '{' ? s_.find("}}", p + 2) : std::string_view::npos;
+                const bool cBlock = cClose != std::string_view::npos;
+                const size_t close = cBlock ? cClose : s_.find('}', p + 1);
                 if (close == std::string_view::npos) return rest(L::UNTERMINATED_PRAGMA, p);
                 const size_t end = close + (cBlock ? 2 : 1);
                 emit(L::PRAGMA, p, end - p, L::PRAGMAS);

@@ -42,14 +42,16 @@ bool Checker::fbEnoSlotPath(const ast::Expr& instance, ast::Expr& slot) {
         return false;
     const ast::Expr& q = *instance.kids[0];
     const std::string key = upper(slot.name);
-    bool found = false;
+    const VarSym* inst = nullptr;  // the instance X, when its slot exists
     if (auto p = pous_.find(upper(q.name)); p != pous_.end() && p->second->kind == ast::PouKind::Program) {
-        found = p->second->vars.count(key) > 0;
+        if (p->second->vars.count(key))
+            if (auto v = p->second->vars.find(upper(instance.name)); v != p->second->vars.end()) inst = v->second;
     } else if (isNamespace(q) && !lookupVar(upper(q.name))) {
         const VarSym* s = lookupVar(key);
-        found = s && !s->owner;
+        if (s && !s->owner) inst = lookupVar(upper(instance.name));
     }
-    if (!found) return false;
+    // Only a block's ENO: a structure member named like one is not.
+    if (!inst || !inst->type || inst->type->kind != TK::FunctionBlock || ownsEnEno(inst->type)) return false;
     slot.kids.push_back(ast::cloneExpr(q));
     return true;
 }
