@@ -165,7 +165,9 @@ BLOCK_COMMENT : '(*' { consumeNestedCommentBody(); };
 C_COMMENT     : '/*' .*? '*/' -> skip;
 UNTERMINATED_C_COMMENT : '/*' ( ~[*] | '*'+ ~[/*] )* '*'* EOF -> channel(ERRORS);
 LINE_COMMENT  : '//' ~[\r\n]* -> skip;
-PRAGMA        : '{' ~[}]* '}' -> channel(PRAGMAS);
+// `{{ ... }}`: matiec/Beremiz inline C code, whose own braces nest: it ends at
+// the first `}}` (the longer match wins over `{...}`; decision 0351).
+PRAGMA        : ( '{{' .*? '}}' | '{' ~[}]* '}' ) -> channel(PRAGMAS);
 UNTERMINATED_PRAGMA : '{' ~[}]* EOF -> channel(ERRORS);
 
 // ------------------------------------------------------------------ literals

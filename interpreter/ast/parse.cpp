@@ -234,6 +234,11 @@ private:
             antlr4::Token* t = &token;
             if (t->getChannel() != L::PRAGMAS) continue;
             const std::string text = t->getText();
+            if (text.size() >= 4 && text[1] == '{' && text[text.size() - 2] == '}') {  // matiec/Beremiz inline C code (0351)
+                const Loc at{fileIndex_, static_cast<int>(t->getLine()), static_cast<int>(t->getCharPositionInLine()) + 1};
+                log_.warning(diag::W0045, at, "inline C code ({{ ... }}) is not run: strun skips it");
+                continue;
+            }
             if (text.size() > 4096 || !mayBeMessagePragma(text)) continue;
             // Compiled on the first message pragma only: compiling it cost 7 %
             // of a one-line run that has none (decision 0156).

@@ -95,10 +95,16 @@ private:
                 }
                 return single(L::SLASH, p);
             case '{': {
-                const size_t close = s_.find('}', p + 1);
+                // `{{ ... }}`: matiec/Beremiz inline C code, whose braces nest;
+                // it ends at the first `}}` (decision 0351). Without a `}}` it is
+                // an ordinary pragma, as the grammar's longest match has it.
+                const size_t cClose = c1 == '{' ? s_.find("}}", p + 2) : std::string_view::npos;
+                const bool cBlock = cClose != std::string_view::npos;
+                const size_t close = cBlock ? cClose : s_.find('}', p + 1);
                 if (close == std::string_view::npos) return rest(L::UNTERMINATED_PRAGMA, p);
-                emit(L::PRAGMA, p, close + 1 - p, L::PRAGMAS);
-                return close + 1;
+                const size_t end = close + (cBlock ? 2 : 1);
+                emit(L::PRAGMA, p, end - p, L::PRAGMAS);
+                return end;
             }
             case '\'': return quotedToken(p, '\'', L::STRING_LITERAL, L::UNTERMINATED_STRING);
             case '"': return quotedToken(p, '"', L::WSTRING_LITERAL, L::UNTERMINATED_WSTRING);

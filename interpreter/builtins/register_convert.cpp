@@ -183,6 +183,30 @@ void addIntToBcd(Checker& ck, const std::string& name, const Type* from, const T
     });
 }
 
+// CODESYS Util's BCD functions (decision 0386): INT_TO_BCD(I : INT) : BYTE
+// (255 outside 0..99) and BCD_TO_INT(B : BYTE) : INT (-1 for a byte that is
+// not BCD; here any bit string, as before), BYTE/WORD/DWORD_TO_BCD and
+// BCD_TO_BYTE/WORD/DWORD (same width in and out; all ones outside the range,
+// decision 0036). With --strict, INT_TO_BCD is IEC 61131-3's conversion with
+// an ANY_BIT result, taken as WORD (Annex F's WEIGH returns it as a WORD).
+void addUtilBcd(Checker& ck, const std::string& name, TK fromKind, TK toKind, bool toBcd, const char* formal) {
+    ck.addBuiltin(name, [fromKind, toKind, toBcd, formal](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        std::string names = std::string(formal) + "|IN";
+        if (!bindFixed(ck, call, {{names.c_str()}}, a)) return ck.bad(call.loc);
+        TK target = toKind;
+        if (toBcd && fromKind == TK::Int && ck.compileOptions().strict) target = TK::Word;
+        const Type* from = ck.types().elementary(fromKind);
+        const Type* to = ck.types().elementary(target);
+        Checked x = ck.coerce(a[0], from, a[0].loc, call.name.c_str());
+        if (!x.ok) return x;
+        if (toBcd) return makeResult(ck, ck.pool().make<IntToBcdNode>(x.node, bytesOf(target)), to, call, a);
+        TK view = sema::integerView(target);
+        auto* n = ck.pool().make<BcdToIntNode>(x.node, bytesOf(fromKind), sema::bitWidth(view), sema::isSignedInt(view));
+        return makeResult(ck, n, to, call, a);
+    });
+}
+
 void addByteOrder(Checker& ck, const char* name, ByteOrderFn fn) {
     ck.addBuiltin(name, [fn](Checker& ck, CallArgs& call) -> Checked {
         std::vector<Checked> a;
@@ -244,6 +268,13 @@ void registerConvert(Checker& ck) {
         }
     }
     for (TK i : ints) addBcdToInt(ck, "BCD_TO_" + types.elementary(i)->name, nullptr, types.elementary(i));
+    addUtilBcd(ck, "INT_TO_BCD", TK::Int, TK::Byte, true, "I");
+    addUtilBcd(ck, "BYTE_TO_BCD", TK::Byte, TK::Byte, true, "B");
+    addUtilBcd(ck, "WORD_TO_BCD", TK::Word, TK::Word, true, "W");
+    addUtilBcd(ck, "DWORD_TO_BCD", TK::DWord, TK::DWord, true, "X");
+    addUtilBcd(ck, "BCD_TO_BYTE", TK::Byte, TK::Byte, false, "B");
+    addUtilBcd(ck, "BCD_TO_WORD", TK::Word, TK::Word, false, "W");
+    addUtilBcd(ck, "BCD_TO_DWORD", TK::DWord, TK::DWord, false, "X");
 
     addByteOrder(ck, "TO_BIG_ENDIAN", ByteOrderFn::ToBig);
     addByteOrder(ck, "FROM_BIG_ENDIAN", ByteOrderFn::FromBig);

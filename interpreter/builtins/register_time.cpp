@@ -64,6 +64,7 @@ Checked timeArithmetic(Checker& ck, const CallArgs& call, TimeOp op, Checked a, 
         n->k = k.node;
         n->divide = op == TimeOp::Div;
         n->bits = sema::bitWidth(a.type->kind);
+        n->isUnsigned = a.type->unsignedDuration;
         n->site = ck.site(call.loc);
         bool fold = !(op == TimeOp::Div && !n->realFactor && k.isConst && k.constInt == 0);
         return makeResult(ck, n, a.type, call, args, fold);

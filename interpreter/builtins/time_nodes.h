@@ -40,14 +40,16 @@ struct TimeCombineNode final : Expr {
 struct TimeScaleNode final : Expr {
     Expr *t, *k;
     bool realFactor, divide;
+    bool isUnsigned = false;  // a TwinCAT TIME/LTIME (decisions 0367, 0389): the duration's bits unsigned
     int bits;
     exec::Site site;
     int64_t i(Ctx& c) override {
         int64_t v = t->i(c);
         if (realFactor) {
             double f = k->f(c);
-            double r = divide ? static_cast<double>(v) / f : static_cast<double>(v) * f;
-            return static_cast<int64_t>(stdlib::realToInteger(r, bits, true));
+            double tv = isUnsigned ? static_cast<double>(static_cast<uint64_t>(v)) : static_cast<double>(v);
+            double r = divide ? tv / f : tv * f;
+            return static_cast<int64_t>(stdlib::realToInteger(r, bits, !isUnsigned));
         }
         int64_t n = k->i(c);
         if (divide) {
@@ -55,10 +57,11 @@ struct TimeScaleNode final : Expr {
                 exec::reportDivByZero(c, site);
                 n = 1;
             }
-            if (n == -1) return static_cast<int64_t>(stdlib::wrapToWidth(0 - static_cast<uint64_t>(v), bits, true));
-            return static_cast<int64_t>(stdlib::wrapToWidth(static_cast<uint64_t>(v / n), bits, true));
+            if (isUnsigned && n > 0) return static_cast<int64_t>(static_cast<uint64_t>(v) / static_cast<uint64_t>(n));
+            if (n == -1) return static_cast<int64_t>(stdlib::wrapToWidth(0 - static_cast<uint64_t>(v), bits, !isUnsigned));
+            return static_cast<int64_t>(stdlib::wrapToWidth(static_cast<uint64_t>(v / n), bits, !isUnsigned));
         }
-        return static_cast<int64_t>(stdlib::wrapToWidth(static_cast<uint64_t>(v) * static_cast<uint64_t>(n), bits, true));
+        return static_cast<int64_t>(stdlib::wrapToWidth(static_cast<uint64_t>(v) * static_cast<uint64_t>(n), bits, !isUnsigned));
     }
 };
 

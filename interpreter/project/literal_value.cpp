@@ -116,18 +116,26 @@ bool encodeEnum(const Type* t, std::string_view text, std::vector<uint8_t>& byte
 }
 
 bool encodeTimeLike(const Type* t, std::string_view text, std::vector<uint8_t>& bytes, std::string& error) {
+    // A TwinCAT project's TIME/LTIME is unsigned (decision 0367): up to
+    // T#49d17h2m47s295ms and 2^64-1 ns, as the literals in its code (decision 0389).
+    const bool unsignedRange = (t->kind == TK::Time || t->kind == TK::LTime) && t->unsignedDuration;
+    bool saturated = false;
+    uint64_t unsignedBits = 0;
     stdlib::Result<int64_t> r = [&] {
         switch (t->kind) {
-            case TK::Time: case TK::LTime: return stdlib::parseDurationLiteral(text);
+            case TK::Time: case TK::LTime: return stdlib::parseDurationLiteral(text, unsignedRange, &saturated, &unsignedBits);
             case TK::Date: case TK::LDate: return stdlib::parseDateLiteral(text);
             case TK::Tod: case TK::LTod: return stdlib::parseTimeOfDayLiteral(text);
             default: return stdlib::parseDateTimeLiteral(text);
         }
     }();
     if (!r) return error = "'" + std::string(text) + "' is not a " + t->name + " literal: " + r.error(), false;
+    if (saturated && t->kind == TK::LTime) return put(bytes, static_cast<int64_t>(unsignedBits)), true;
+    if (saturated) return error = std::string(text) + " does not fit " + t->name, false;
     int64_t units = r.value() / sema::nanosPerUnit(t->kind);
     if (t->size == 4) {
-        bool fits = t->kind == TK::Time ? (units >= std::numeric_limits<int32_t>::min() && units <= std::numeric_limits<int32_t>::max())
+        const int64_t highest = unsignedRange ? int64_t(std::numeric_limits<uint32_t>::max()) : std::numeric_limits<int32_t>::max();
+        bool fits = t->kind == TK::Time ? (units >= std::numeric_limits<int32_t>::min() && units <= highest)
                                         : (units >= 0 && units <= int64_t(std::numeric_limits<uint32_t>::max()));
         if (!fits) return error = std::string(text) + " does not fit " + t->name, false;
         putInt(bytes, 4, uint64_t(units));

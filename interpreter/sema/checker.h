@@ -183,6 +183,12 @@ private:
     uint8_t* mapAddress(const std::string& address, const Type* t, const ast::Loc& loc, int& bit);
     bool externalInput(const ast::Expr& value, rt::TaskSpec& spec);
     uint8_t* mapSystemAddress(const std::string& address, const Type* t, const ast::Loc& loc, int& bit);
+    // %IW2.5.7, %QX1.2.3.4: IEC hierarchical addresses, one location per path (checker_hierarchical_address.cpp)
+    uint8_t* mapHierarchicalAddress(rt::ImageArea& area, const std::string& address, const std::vector<uint64_t>& parts, uint64_t unit,
+                                    const Type* t, const ast::Loc& loc, int& bit);
+    struct HierarchicalSlot { size_t offset, size; };
+    std::map<std::string, HierarchicalSlot> hierarchicalSlots_;  // "IW2.5.7" -> its place at the top of its area
+    std::map<const rt::ImageArea*, size_t> hierarchicalUsed_, flatEnd_;  // bytes taken at the top / below
 
     // ---- cycles and depth of declarations (checker_cycles.cpp)
     void breakInheritanceCycles();
@@ -491,6 +497,7 @@ private:
     bool splitEnEno(const ast::Expr& e, EnEnoParts& out);
     // EN/ENO on a function-block call and `inst.ENO` (checker_fb_en_eno.cpp, decision 0358).
     VarSym* fbEnoSlot(const ast::Expr& instance);
+    bool fbEnoSlotPath(const ast::Expr& instance, ast::Expr& slot);
     bool usesFbEnEno(const Checked& inst, const ast::Expr& call);
     bool checkFbEnoRead(const ast::Expr& member, Checked& out);
     exec::Stmt* callFunctionBlockEnEno(Checked inst, const ast::Expr& e);

@@ -34,7 +34,7 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
     std::vector<VarSym*> inputsInOrder;
     for (VarSym* p : params)
         if (p->section != ast::VarSection::Output) inputsInOrder.push_back(p);
-    std::set<VarSym*> seen;
+    std::set<VarSym*> seen, named;  // bound, and bound by name
     // Named arguments by folded name, built once per call (not a scan per argument).
     std::unordered_map<std::string, VarSym*> byName;
     size_t positionalCount = 0;
@@ -130,11 +130,22 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
         // neither counts as the output's binding nor clashes with one (decision 0328).
         if (a.output && !a.value) continue;
         if (seen.count(param)) {
-            ck.error(diag::E0302, a.loc, fmt::format("parameter '{}' given twice", param->name));
+            // Named twice: TwinCAT compiles it (pcdshub lcls-twincat-motion,
+            // FB_HaltNC): both are bound in the written order, so the last value
+            // is the one the callee sees; an error with --strict (decision 0350).
+            // A positional argument landing on a named one stays an error (0204).
+            const std::string twice = fmt::format("parameter '{}' given twice", param->name);
+            if (a.name.empty() || !named.count(param)) {
+                ck.error(diag::E0302, a.loc, twice);
+            } else if (ck.lenient(diag::W0044, a.loc, ck.compileOptions().strict ? twice : twice + "; the last value is the one passed")) {
+                out.push_back({&a, param});
+                continue;
+            }
             ok = false;
             continue;
         }
         seen.insert(param);
+        if (!a.name.empty()) named.insert(param);
         out.push_back({&a, param});
     }
     return ok;
@@ -588,12 +599,15 @@ exec::Stmt* Checker::bindReference(VarSym* p, const Checked& v, exec::Expr* slot
 }
 
 namespace {
-// A FUNCTION declared without a result type gives the value of its first
-// VAR_OUTPUT, as TwinCAT 3 does (`bOk := F_Swap(a, b)`); not with --strict,
-// where it has no value (decision 0369). Methods (dispatched through their
-// class) keep no value.
+// A FUNCTION or METHOD declared without a result type gives the value of its
+// first VAR_OUTPUT, as TwinCAT 3 does (`bOk := F_Swap(a, b)`); not with
+// --strict, where it has no value (decisions 0369, 0387). Every such POU's
+// code keeps that output's offset as its result (layoutPou), so a call
+// dispatched to an override or through an interface reads the callee's own.
 const VarSym* implicitResultOutput(const PouInfo* fn, bool strict) {
-    if (fn->resultType || strict || fn->kind != ast::PouKind::Function || !fn->code) return nullptr;
+    if (fn->resultType || strict) return nullptr;
+    if (fn->kind != ast::PouKind::Function && fn->kind != ast::PouKind::Method) return nullptr;
+    if (fn->kind == ast::PouKind::Function && !fn->code) return nullptr;
     for (const VarSym* p : fn->params)
         if (p->section == ast::VarSection::Output) return p->byRef || !p->type ? nullptr : p;
     return nullptr;
@@ -678,7 +692,7 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
     r.type = fn->resultType ? fn->resultType : types().voidType();
     if (const VarSym* out = implicitResultOutput(fn, options_.strict)) {
         r.type = out->type;
-        fn->code->resultOffset = out->offset;  // a VOID function has no result of its own there
+        if (fn->code) fn->code->resultOffset = out->offset;  // a VOID function has no result of its own there
     }
     call->rep = resultRepOf(r.type);
     if (r.type != types().voidType() && isAggregate(r.type)) {

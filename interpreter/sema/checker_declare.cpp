@@ -661,6 +661,12 @@ void Checker::layoutPou(PouInfo* pou) {
     pou->code->frameSize = pou->frameSize;
     pou->code->initSize = pou->frameSize;
     pou->code->resultOffset = 0;
+    if (!pou->resultType && (pou->kind == ast::PouKind::Method || pou->kind == ast::PouKind::Function))
+        for (const VarSym* p : pou->params)  // TwinCAT's value of a VOID method or function (decision 0387)
+            if (p->section == ast::VarSection::Output) {
+                if (!p->byRef && p->type) pou->code->resultOffset = p->offset;
+                break;
+            }
     pou->code->frameInit.assign(exec::frameImageSize(pou->frameSize), 0);
     for (auto& v : pou->ownedVars) {
         if (v->storage != Storage::Frame || v->byRef) continue;
@@ -1162,6 +1168,7 @@ uint8_t* Checker::mapAddress(const std::string& address, const Type* t, const as
     }
     if (!any) return fail("malformed");
     parts.push_back(cur);
+    if (parts.size() > (unit == 0 ? 2u : 1u)) return mapHierarchicalAddress(*area, address, parts, unit, t, loc, bit);  // decision 0390
     uint64_t byte = 0;
     if (unit == 0) {
         if (parts.size() == 1) { byte = parts[0] / 8; bit = static_cast<int>(parts[0] % 8); }
@@ -1178,7 +1185,10 @@ uint8_t* Checker::mapAddress(const std::string& address, const Type* t, const as
             log_.warning(diag::W0008, loc, fmt::format("{} is larger than the {}-byte address '{}'", typeName(t), unit, address));
     }
     uint64_t end = byte + std::max<uint64_t>(t->size, 1);
-    if (end > area->size()) return fail("address outside the process image");
+    if (end > area->size() - hierarchicalUsed_[area]) {
+        return fail(hierarchicalUsed_[area] ? "address inside the part of the image the hierarchical addresses use" : "address outside the process image");
+    }
+    flatEnd_[area] = std::max<size_t>(flatEnd_[area], end);
     // Tasks copy only the addressed part of %I / %Q at their start and end.
     auto& image = model_.machine.image;
     if (area == &image.inputs) image.inputExtent = std::max<size_t>(image.inputExtent, end);

@@ -28,20 +28,51 @@ VarSym* Checker::fbEnoSlot(const ast::Expr& instance) {
     return !slot->owner && inst && !inst->owner ? slot : nullptr;
 }
 
+// The slot of `instance` as an expression: `X$ENO` for `X` (its own or a
+// global instance), `GVL.X$ENO` for `GVL.X` (a global list's instance) and
+// `Prog.X$ENO` for `Prog.X` (a program's instance), decision 0388. False
+// when the instance has no slot.
+bool Checker::fbEnoSlotPath(const ast::Expr& instance, ast::Expr& slot) {
+    slot.kind = instance.kind;
+    slot.loc = instance.loc;
+    slot.nameLoc = instance.nameLoc;
+    slot.name = enoSlotName(instance.name);
+    if (instance.kind == ast::ExprKind::Name) return fbEnoSlot(instance) != nullptr;
+    if (instance.kind != ast::ExprKind::Member || instance.kids.size() != 1 || instance.kids[0]->kind != ast::ExprKind::Name)
+        return false;
+    const ast::Expr& q = *instance.kids[0];
+    const std::string key = upper(slot.name);
+    const VarSym* inst = nullptr;  // the instance X, when its slot exists
+    if (auto p = pous_.find(upper(q.name)); p != pous_.end() && p->second->kind == ast::PouKind::Program) {
+        if (p->second->vars.count(key))
+            if (auto v = p->second->vars.find(upper(instance.name)); v != p->second->vars.end()) inst = v->second;
+    } else if (isNamespace(q) && !lookupVar(upper(q.name))) {
+        const VarSym* s = lookupVar(key);
+        if (s && !s->owner) inst = lookupVar(upper(instance.name));
+    }
+    // Only a block's ENO: a structure member named like one is not.
+    if (!inst || !inst->type || inst->type->kind != TK::FunctionBlock || ownsEnEno(inst->type)) return false;
+    slot.kids.push_back(ast::cloneExpr(q));
+    return true;
+}
+
 bool Checker::usesFbEnEno(const Checked& inst, const ast::Expr& call) {
     if (ownsEnEno(inst.type)) return false;
-    return hasEnEno(call) || (!call.kids.empty() && fbEnoSlot(*call.kids[0]));
+    ast::Expr slot;
+    return hasEnEno(call) || (!call.kids.empty() && fbEnoSlotPath(*call.kids[0], slot));
 }
 
 bool Checker::checkFbEnoRead(const ast::Expr& member, Checked& out) {
-    if (!stdlib::equalsIgnoreCase(member.name, "ENO") || member.kids.empty() || !fbEnoSlot(*member.kids[0])) return false;
-    const VarSym* v = lookupVar(upper(member.kids[0]->name));
-    if (!v || !v->type || v->type->kind != TK::FunctionBlock || ownsEnEno(v->type)) return false;
     ast::Expr slot;
-    slot.kind = ast::ExprKind::Name;
+    if (!stdlib::equalsIgnoreCase(member.name, "ENO") || member.kids.empty() || !fbEnoSlotPath(*member.kids[0], slot)) return false;
+    const ast::Expr& instance = *member.kids[0];
+    if (instance.kind == ast::ExprKind::Name) {
+        const VarSym* v = lookupVar(upper(instance.name));
+        if (!v || !v->type || v->type->kind != TK::FunctionBlock || ownsEnEno(v->type)) return false;
+    }
     slot.loc = member.loc;
-    slot.name = enoSlotName(member.kids[0]->name);
-    out = checkName(slot);
+    out = checkExpr(slot);
+    if (instance.kind != ast::ExprKind::Name && (!out.ok || out.type->kind != TK::Bool)) return false;
     out.readOnly = true;  // an output of the block, as `inst.Q`
     return true;
 }
@@ -69,13 +100,10 @@ exec::Stmt* Checker::callFunctionBlockEnEno(Checked inst, const ast::Expr& e) {
         if (!st) return nullptr;
         storeEno.push_back(st);
     }
-    if (!e.kids.empty() && fbEnoSlot(*e.kids[0])) {
-        ast::Expr slot;
-        slot.kind = ast::ExprKind::Name;
+    if (ast::Expr slot; !e.kids.empty() && fbEnoSlotPath(*e.kids[0], slot)) {
         slot.loc = e.loc;
-        slot.name = enoSlotName(e.kids[0]->name);
         flag.loc = e.loc;
-        Checked place = checkName(slot);
+        Checked place = checkExpr(slot);
         place.readOnly = false;
         if (exec::Stmt* st = place.ok ? assignChecked(place, flag, e.loc) : nullptr) storeEno.push_back(st);
     }

@@ -92,17 +92,20 @@ const char* opText(ast::Op op) {
     return "?";
 }
 
-// TIME * number: computed in the time's unit.
+// TIME * number: computed in the time's unit; a TwinCAT project's TIME/LTIME
+// is unsigned (decisions 0367, 0389), so its bits are read and rounded so.
 struct TimeMulReal final : exec::Expr {
     exec::Expr *t, *k;
     bool divide;
     int bits;
-    TimeMulReal(exec::Expr* a, exec::Expr* b, bool d, int n) : t(a), k(b), divide(d), bits(n) {}
+    bool isUnsigned;
+    TimeMulReal(exec::Expr* a, exec::Expr* b, bool d, int n, bool u) : t(a), k(b), divide(d), bits(n), isUnsigned(u) {}
     int64_t i(exec::Ctx& c) override {
-        double v = static_cast<double>(t->i(c));
+        const int64_t raw = t->i(c);
+        double v = isUnsigned ? static_cast<double>(static_cast<uint64_t>(raw)) : static_cast<double>(raw);
         double f = k->f(c);
         double r = divide ? v / f : v * f;
-        return exec::realToIntRounded(r, bits, true);
+        return exec::realToIntRounded(r, bits, !isUnsigned);
     }
 };
 
@@ -226,7 +229,7 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
             r.type = a.type;
             if (b.untypedReal || isReal(kb)) {
                 Checked bb = b.untypedReal ? coerce(b, types().elementary(TK::LReal), loc, "operand") : b;
-                r.node = pool().make<TimeMulReal>(a.node, bb.node, op == ast::Op::Div, bitWidth(ka));
+                r.node = pool().make<TimeMulReal>(a.node, bb.node, op == ast::Op::Div, bitWidth(ka), a.type->unsignedDuration);
             } else {
                 // TIME * ANY_INT: the count multiplies the time's own unit.
                 Checked bb = settle(b);

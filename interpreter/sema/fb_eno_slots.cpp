@@ -12,18 +12,28 @@ bool isEnOrEno(const ast::Arg& a) {
     return (!a.output && stdlib::equalsIgnoreCase(a.name, "EN")) || (a.output && stdlib::equalsIgnoreCase(a.name, "ENO"));
 }
 
-// Collects (upper case) the names X of `X(EN := ...)`, `X(ENO => ...)` and `X.ENO`.
+// Collects (upper case) the names X of `X(EN := ...)`, `X(ENO => ...)` and
+// `X.ENO`, and the pairs (Q, X) of `Q.X(EN := ...)` and `Q.X.ENO`, where Q is
+// a global list or a program (decision 0388).
 struct EnoUses {
     std::set<std::string> names;
+    std::set<std::pair<std::string, std::string>> qualified;
 
+    void note(const ast::Expr* instance) {
+        if (instance->kind == ast::ExprKind::Name) {
+            names.insert(stdlib::upperAscii(instance->name));
+        } else if (instance->kind == ast::ExprKind::Member && instance->kids.size() == 1 &&
+                   instance->kids[0]->kind == ast::ExprKind::Name) {
+            qualified.insert({stdlib::upperAscii(instance->kids[0]->name), stdlib::upperAscii(instance->name)});
+        }
+    }
     void expr(const ast::Expr* e) {
         if (!e) return;
         const ast::Expr* first = e->kids.empty() ? nullptr : e->kids[0].get();
-        if (e->kind == ast::ExprKind::Member && first && first->kind == ast::ExprKind::Name && stdlib::equalsIgnoreCase(e->name, "ENO"))
-            names.insert(stdlib::upperAscii(first->name));
-        if (e->kind == ast::ExprKind::Call && first && first->kind == ast::ExprKind::Name)
+        if (e->kind == ast::ExprKind::Member && first && stdlib::equalsIgnoreCase(e->name, "ENO")) note(first);
+        if (e->kind == ast::ExprKind::Call && first)
             for (const ast::Arg& a : e->args)
-                if (isEnOrEno(a)) names.insert(stdlib::upperAscii(first->name));
+                if (isEnOrEno(a)) note(first);
         for (const auto& k : e->kids) expr(k.get());
         for (const ast::Arg& a : e->args) expr(a.value.get());
     }
@@ -108,17 +118,44 @@ void addSlots(ast::Pou& pou) {
 
 std::string enoSlotName(const std::string& instance) { return instance + "$ENO"; }
 
+namespace {
+// The instances X of the uses `Q.X` whose Q is `name` (the last part of a
+// dotted list name: `GVL` of `Lib.GVL`).
+EnoUses qualifiedBy(const EnoUses& uses, const std::string& name) {
+    EnoUses here;
+    std::string key = stdlib::upperAscii(name);
+    if (auto dot = key.rfind('.'); dot != std::string::npos) key = key.substr(dot + 1);
+    for (const auto& [q, x] : uses.qualified)
+        if (q == key) here.names.insert(x);
+    return here;
+}
+bool anySection(ast::VarSection) { return true; }
+}  // namespace
+
 void addGlobalFbEnoSlots(std::vector<ast::CompilationUnit>& units) {
     EnoUses uses;
     for (const auto& u : units)
         for (const auto& p : u.pous) usesOf(*p, uses);
-    if (uses.names.empty()) return;
+    if (uses.names.empty() && uses.qualified.empty()) return;
     for (const auto& u : units)
         for (const ast::GlobalList& list : u.globals) forgetSlotted(list.blocks, uses);
     for (auto& u : units)
-        for (ast::GlobalList& list : u.globals)
-            if (!list.blocks.empty())
-                addSlotsTo(list.blocks, uses, [](ast::VarSection) { return true; }, list.blocks.front().section);
+        for (ast::GlobalList& list : u.globals) {
+            if (list.blocks.empty()) continue;
+            EnoUses here = qualifiedBy(uses, list.nameSpace);  // GVL.X.ENO
+            forgetSlotted(list.blocks, here);
+            here.names.insert(uses.names.begin(), uses.names.end());
+            addSlotsTo(list.blocks, here, anySection, list.blocks.front().section);
+        }
+    // Prog.inst.ENO read in another POU: the program keeps the slot its own calls write.
+    for (auto& u : units)
+        for (auto& p : u.pous) {
+            if (p->kind != ast::PouKind::Program || uses.qualified.empty()) continue;
+            EnoUses here = qualifiedBy(uses, p->name);
+            if (here.names.empty()) continue;
+            forgetSlotted(p->vars, here);
+            addSlotsTo(p->vars, here, holdsInstances, ast::VarSection::Var);
+        }
 }
 
 void addFbEnoSlots(ast::Pou& pou) {

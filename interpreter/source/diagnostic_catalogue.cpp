@@ -154,7 +154,8 @@ const std::vector<CodeInfo> kCatalogue = {
      "y := LIMIT(0, x);", "y := LIMIT(0, x, 100);"},
     {"E0302", K::Error, "no such parameter, or a parameter given twice",
      "A formal argument `name := value` names no input (or `name => var` no output) of the called POU, names one "
-     "twice, or mixes named and positional inputs where the function needs one or the other.",
+     "twice (a standard function's, or any with --strict; see W0044), or mixes named and positional inputs where "
+     "the function needs one or the other.",
      "t(IN := start, Time := T#1s);", "t(IN := start, PT := T#1s);"},
     {"E0303", K::Error, "input or output connected the wrong way",
      "Inputs are connected with `:=`, outputs with `=>`.",
@@ -327,6 +328,17 @@ const std::vector<CodeInfo> kCatalogue = {
      "strun runs one PLC, the first configuration, and skips the others with this warning (decision 0337). "
      "Export the one application you want to run to run another.",
      "", ""},
+    {"W0044", K::Warning, "a parameter given twice in one call",
+     "A call names the same input (or output) twice, as `fb(Execute := TRUE, Axis := a, Execute := TRUE)`. "
+     "TwinCAT compiles such calls; strun binds both in the order written, so the last value is the one the "
+     "called POU sees (decision 0350). With --strict it is an error: remove one of the two.",
+     "fbHalt(Execute := TRUE, Axis := axis, Execute := TRUE);", "fbHalt(Execute := TRUE, Axis := axis);"},
+    {"W0045", K::Warning, "inline C code is not run",
+     "matiec and Beremiz (OpenPLC) copy a `{{ ... }}` block of C code into the program they compile, where it "
+     "reaches the POU's variables through GetFbVar/SetFbVar. strun interprets ST and has no C compiler: the block "
+     "is read as a pragma and skipped, so whatever it computes does not happen (decision 0351). Write that part "
+     "in ST to have it run.",
+     "{{\n  SetFbVar(OUT, GetFbVar(IN) + 1);\n}}", "OUT := IN + 1;"},
     {"ARRAY_BOUNDS", K::Runtime, "array subscript out of range (runtime)",
      "An array subscript was outside the declared bounds while the program ran. The faulty read yields 0 and the "
      "faulty write is dropped; the program-error task runs if one is configured, otherwise the PLC goes to STOP "

@@ -25,7 +25,7 @@ namespace strun::diag {
     X(E0501) X(E0502) X(E0503) X(E0504)                                                                                 \
     X(E0601) X(E0602)                                                                                                   \
     X(W0001) X(W0002) X(W0003) X(W0004) X(W0005) X(W0006) X(W0007) X(W0008) X(W0009) X(W0010) X(W0011) X(W0012)        \
-    X(W0013) X(W0014) X(W0015) X(W0016) X(W0017) X(W0040) X(W0041) X(W0042) X(W0043)
+    X(W0013) X(W0014) X(W0015) X(W0016) X(W0017) X(W0040) X(W0041) X(W0042) X(W0043) X(W0044) X(W0045)
 
 enum class Code : uint8_t {
 #define STRUN_DIAGNOSTIC_CODE_ENUMERATOR(c) c,

@@ -247,7 +247,26 @@ struct PlcopenReader : XmlConversion {
             interfaceOf(mitf);
             written(method, "END_METHOD");
         }
+        // <Properties><Property name="P"><interface><returnType>..., with an
+        // empty <GetAccessor /> / <SetAccessor /> for each accessor it
+        // declares (decision 0391): `PROPERTY P : T` with those accessors.
+        for (pugi::xml_node prop : children(child(i, "Properties"), "Property")) {
+            written(prop, propertyHead(prop));
+            for (const char* acc : {"GetAccessor", "SetAccessor"})
+                if (pugi::xml_node a = child(prop, acc)) {
+                    const bool get = std::string(acc) == "GetAccessor";
+                    written(a, get ? "GET" : "SET");
+                    written(a, get ? "END_GET" : "END_SET");
+                }
+            written(prop, "END_PROPERTY");
+        }
         written(i, "END_INTERFACE");
+    }
+
+    std::string propertyHead(const pugi::xml_node& prop) {
+        std::string head = std::string("PROPERTY ") + prop.attribute("name").value();
+        if (pugi::xml_node r = child(child(prop, "interface"), "returnType")) head += " : " + typeText(r);
+        return head;
     }
 
     void codesysInterfaces(const pugi::xml_node& n, int depth, std::set<std::string>& declared) {
@@ -280,19 +299,27 @@ struct PlcopenReader : XmlConversion {
         for (pugi::xml_node t : children(child(p, "transitions"), "transition")) ctx.transitions[upperCase(t.attribute("name").value())] = t;
         Translation main;
         bodyOf(p, name, ctx, main);
-        std::vector<std::pair<pugi::xml_node, Translation>> methods, actions;
+        std::vector<std::pair<pugi::xml_node, Translation>> methods, actions, accessors;
         for (pugi::xml_node method : codesysMethods(p)) {
             Translation t;
             bodyOf(method, name + "." + method.attribute("name").value(), ctx, t);
             methods.push_back({method, std::move(t)});
         }
+        const std::vector<pugi::xml_node> properties = codesysProperties(p);
+        for (pugi::xml_node prop : properties)
+            for (const char* acc : {"GetAccessor", "SetAccessor"})
+                if (pugi::xml_node a = child(prop, acc)) {
+                    Translation t;
+                    bodyOf(a, name + "." + prop.attribute("name").value() + (std::string(acc) == "GetAccessor" ? ".GET" : ".SET"), ctx, t);
+                    accessors.push_back({a, std::move(t)});
+                }
         for (pugi::xml_node a : children(child(p, "actions"), "action")) {
             Translation t;
             bodyOf(a, name + "." + a.attribute("name").value(), ctx, t);
             actions.push_back({a, std::move(t)});
         }
         std::vector<StLine> hidden = main.declarations;
-        for (auto* group : {&methods, &actions})
+        for (auto* group : {&methods, &actions, &accessors})
             for (auto& [node, t] : *group) hidden.insert(hidden.end(), t.declarations.begin(), t.declarations.end());
 
         std::string head = std::string(keyword) + " " + name;
@@ -314,6 +341,23 @@ struct PlcopenReader : XmlConversion {
             interfaceOf(mitf);
             writeLines(t.body);
             written(method, "END_METHOD");
+        }
+        // CODESYS keeps a property in <addData><data name=".../property"><Property
+        // name="P"><interface><returnType>, with <GetAccessor> / <SetAccessor>
+        // (in either order), each with its own <interface> and <body> (decision 0391).
+        auto accessor = accessors.begin();
+        for (pugi::xml_node prop : properties) {
+            written(prop, propertyHead(prop));
+            for (const char* acc : {"GetAccessor", "SetAccessor"})
+                if (pugi::xml_node a = child(prop, acc)) {
+                    const bool get = std::string(acc) == "GetAccessor";
+                    written(a, get ? "GET" : "SET");
+                    interfaceOf(child(a, "interface"));
+                    writeLines(accessor->second.body);
+                    ++accessor;
+                    written(a, get ? "END_GET" : "END_SET");
+                }
+            written(prop, "END_PROPERTY");
         }
         for (auto& [a, t] : actions) {
             written(a, std::string("ACTION ") + a.attribute("name").value() + ":");
@@ -386,6 +430,14 @@ struct PlcopenReader : XmlConversion {
         std::vector<pugi::xml_node> out;
         for (pugi::xml_node data : children(child(p, "addData"), "data"))
             for (pugi::xml_node m : children(data, "Method")) out.push_back(m);
+        return out;
+    }
+
+    // CODESYS keeps properties in <addData><data name=".../property"><Property>.
+    static std::vector<pugi::xml_node> codesysProperties(const pugi::xml_node& p) {
+        std::vector<pugi::xml_node> out;
+        for (pugi::xml_node data : children(child(p, "addData"), "data"))
+            for (pugi::xml_node m : children(data, "Property")) out.push_back(m);
         return out;
     }
 

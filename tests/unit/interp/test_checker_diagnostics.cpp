@@ -355,9 +355,13 @@ TEST_CASE("calls with wrong arguments are errors", "[checker][calls]") {
     auto noParam = compileSt(fn + "PROGRAM Main\nVAR r : INT; END_VAR\nr := Add(a := 1, c := 2);\nEND_PROGRAM\n");
     INFO(noParam->printed());
     CHECK(noParam->hasError("'Add' has no parameter 'c'"));
-    auto twice = compileSt(fn + "PROGRAM Main\nVAR r : INT; END_VAR\nr := Add(a := 1, a := 2);\nEND_PROGRAM\n");
+    // Named twice: a warning as TwinCAT compiles it, an error with --strict (decision 0350).
+    auto twice = compileSt(fn + "PROGRAM Main\nVAR r : INT; END_VAR\nr := Add(a := 1, a := 2);\nEND_PROGRAM\n", true);
     INFO(twice->printed());
     CHECK(twice->hasError("parameter 'a' given twice"));
+    auto twiceDefault = compileSt(fn + "PROGRAM Main\nVAR r : INT; END_VAR\nr := Add(a := 1, a := 2, b := 3);\nEND_PROGRAM\n");
+    INFO(twiceDefault->printed());
+    CHECK(twiceDefault->hasWarning("parameter 'a' given twice; the last value is the one passed"));
 }
 
 // A function whose result is a structure may assign it member by member.
