@@ -12,6 +12,7 @@
 #include "interpreter/source/st_textual_sfc.h"
 #include "interpreter/source/twincat_event_classes.h"
 #include "interpreter/source/twincat_plc_project.h"
+#include "interpreter/source/twincat_system_event_classes.h"
 #include "interpreter/source/xml_inputs.h"
 
 namespace strun::source {
@@ -154,6 +155,7 @@ void addEventClassLists(std::vector<std::string> typeSystems, size_t firstFile, 
         std::string xml, unused;
         if (readSourceText(path, 0, xml, unused)) readTwinCatEventClasses(xml, classes);  // a type system is not a source: its own limit only
     }
+    addTwinCatSystemEventClasses(classes);  // TwinCAT's own, in no project file (decision 0400)
     std::string st = twinCatEventClassesSource(classes);
     if (st.empty()) return;
     userFiles.push_back(sources.add(typeSystems.front() + " (TC_EVENTS)", std::move(st)));
