@@ -3,9 +3,11 @@
 
 #include <fmt/format.h>
 
+#include "interpreter/exec/else_nodes.h"
 #include "interpreter/sema/case_lowering.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/fuse.h"
+#include "interpreter/sema/fuse_swap.h"
 #include "interpreter/sema/node_factory.h"
 #include "interpreter/sema/read_before_write.h"
 
@@ -183,6 +185,7 @@ exec::Block* Checker::checkBlock(const ast::StmtList& list) {
             block->stmts.push_back(st);
         }
     }
+    fuseSwaps(pool(), *block);  // t := a[i]; a[i] := a[j]; a[j] := t as one node (decision 0379)
     return block;
 }
 
@@ -456,7 +459,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                 conds.push_back(c.node);
                 blocks.push_back(b);
             }
-            exec::Stmt* chain = s.elseBlock ? checkBlock(*s.elseBlock) : nullptr;
+            exec::Stmt* chain = s.elseBlock ? exec::ElseStmts::of(pool(), checkBlock(*s.elseBlock)) : nullptr;  // decision 0378
             if (conds.empty()) return chain;
             // IF/ELSIF/ELSE as a chain of one-condition links, built from the end.
             for (size_t k = conds.size(); k-- > 0;) {

@@ -4,8 +4,10 @@
 #include <catch2/catch.hpp>
 
 #include "interpreter/exec/call_nodes.h"
+#include "interpreter/exec/else_nodes.h"
 #include "interpreter/exec/fused_nodes.h"
 #include "interpreter/exec/string_append_nodes.h"
+#include "interpreter/exec/swap_nodes.h"
 #include "tests/unit/interp/st_run.h"
 
 using namespace strun;
@@ -185,4 +187,66 @@ END_PROGRAM
     auto fbody = bodyOf(*c, "F");
     REQUIRE(fbody.size() == 2);
     CHECK(is<exec::AssignBinLocal<int32_t, exec::BinOp::Add, exec::OpNode<int32_t>, exec::OpConst<int32_t>, true>>(fbody[0]));
+}
+
+TEST_CASE("a short ELSE runs without its Block; a longer one, one with labels and an ELSIF stay as they were", "[fused]") {
+    auto c = compileSt(R"(
+PROGRAM Main
+VAR x : DINT; y : INT; f : BOOL; z : DINT; END_VAR
+IF x > 5 THEN z := 1; ELSE z := 2; END_IF;
+IF f THEN z := 1; ELSE z := 2; x := 3; END_IF;
+IF y > 5 THEN z := 1; ELSE z := 2; x := 3; y := 4; END_IF;
+IF x > 5 THEN z := 1; ELSIF f THEN z := 2; ELSE END_IF;
+IF x > 5 THEN z := 1; ELSE JMP l; l: z := 2; END_IF;
+END_PROGRAM
+)");
+    REQUIRE(c->ok());
+    auto body = bodyOf(*c, "Main");
+    REQUIRE(body.size() == 5);
+    using IfX = exec::IfCompare<int32_t, exec::BinOp::Gt, exec::OpVar<int32_t, exec::BaseKind::Self>, exec::OpConst<int32_t>>;
+    using IfF = exec::IfBool<exec::OpVar<uint8_t, exec::BaseKind::Self>>;
+    auto* one = dynamic_cast<IfX*>(body[0]);
+    REQUIRE(one);
+    auto* oneElse = dynamic_cast<exec::ElseStmts*>(one->otherwise);
+    REQUIRE(oneElse);
+    CHECK(oneElse->s0);
+    CHECK_FALSE(oneElse->s1);
+    auto* two = dynamic_cast<IfF*>(body[1]);
+    REQUIRE(two);
+    auto* twoElse = dynamic_cast<exec::ElseStmts*>(two->otherwise);
+    REQUIRE(twoElse);
+    CHECK(twoElse->s1);
+    auto* three = dynamic_cast<exec::If1Stmt*>(body[2]);  // an INT in DINT arithmetic: the general link
+    REQUIRE(three);
+    CHECK(is<exec::Block>(three->otherwise));
+    auto* chain = dynamic_cast<IfX*>(body[3]);
+    REQUIRE(chain);
+    auto* link = dynamic_cast<IfF*>(chain->otherwise);
+    REQUIRE(link);
+    CHECK_FALSE(link->otherwise);  // an empty ELSE is none
+    auto* labelled = dynamic_cast<IfX*>(body[4]);
+    REQUIRE(labelled);
+    CHECK(is<exec::Block>(labelled->otherwise));
+}
+
+TEST_CASE("t := a[i]; a[i] := a[i + 1]; a[i + 1] := t is one swap node, only where it computes the same", "[fused]") {
+    auto c = compileSt(R"(
+PROGRAM Main
+VAR a : ARRAY[1..8] OF DINT; b : ARRAY[1..8] OF LREAL; t : DINT; r : LREAL; i : DINT; s : INT; END_VAR
+t := a[i]; a[i] := a[i + 1]; a[i + 1] := t;
+r := b[i + 1]; b[i + 1] := b[i - 1]; b[i - 1] := r;
+i := a[i]; a[i] := a[i + 1]; a[i + 1] := i;
+t := a[i]; a[i] := a[i + 1]; a[i + 2] := t;
+s := 1;
+END_PROGRAM
+)");
+    REQUIRE(c->ok());
+    auto body = bodyOf(*c, "Main");
+    // 1 + 1 fused; the temporary that is the subscript and the mismatched
+    // third statement stay three statements each; then s := 1.
+    REQUIRE(body.size() == 9);
+    CHECK(is<exec::SwapElems<int32_t>>(body[0]));
+    CHECK(body[0]->line == 4);
+    CHECK(is<exec::SwapElems<double>>(body[1]));
+    for (size_t k = 2; k < 9; ++k) CHECK_FALSE(is<exec::SwapElems<int32_t>>(body[k]));
 }
