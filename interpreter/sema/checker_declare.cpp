@@ -725,7 +725,13 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 ast::Loc loc = n < decl.nameLocs.size() ? decl.nameLocs[n] : decl.loc;
                 std::string key = upper(name);
                 bool dup = pou->vars.count(key) != 0;
-                for (PouInfo* p = pou->parent; p && !dup; p = p->parent) dup = p->vars.count(key) != 0;
+                // A base class's VAR PRIVATE member is invisible here: the name is
+                // free for the derived class's own (SIMATIC AX, IEC Ed.3; decision 0393).
+                for (PouInfo* p = pou->parent; p && !dup; p = p->parent) {
+                    auto inherited = p->vars.find(key);
+                    dup = inherited != p->vars.end() &&
+                          !(inherited->second->access == ast::Access::Private && inherited->second->section == ast::VarSection::Var);
+                }
                 if (dup) {
                     error(diag::E0106, loc, fmt::format("duplicate variable '{}' in '{}'", name, pou->name));
                     continue;
@@ -763,9 +769,13 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 }
                 if (t->kind == TK::FunctionBlock && t->pou && t->pou->ast->abstract && !byRefSection(block.section))
                     error(diag::E0405, decl.type ? decl.type->loc : loc, fmt::format("'{}' is ABSTRACT: it cannot have instances", t->name));
-                if (t->kind == TK::Array && t->flexible && block.section != ast::VarSection::InOut)
-                    error(diag::E0407, loc, "ARRAY[*] is only allowed in VAR_IN_OUT");
-                const bool byRef = block.section == ast::VarSection::InOut;
+                // ARRAY[*] as a VAR_INPUT (SIMATIC AX, IEC Ed.3): bound like a
+                // VAR_IN_OUT CONSTANT, by address and bounds, read-only (decision 0395).
+                const bool flexibleInput = t->kind == TK::Array && t->flexible && block.section == ast::VarSection::Input;
+                if (t->kind == TK::Array && t->flexible && block.section != ast::VarSection::InOut && !flexibleInput)
+                    error(diag::E0407, loc, "ARRAY[*] is only allowed in VAR_IN_OUT and VAR_INPUT");
+                if (flexibleInput) v->constant = true;
+                const bool byRef = block.section == ast::VarSection::InOut || flexibleInput;
                 // ARRAY[*]: address and bounds (docs/decisions/0077); other in-outs: an address.
                 const uint32_t size = byRef ? (t->flexible ? 8 + 16 * static_cast<uint32_t>(t->dims.size()) : 8) : t->size;
                 const uint32_t align = byRef ? 8 : t->align;

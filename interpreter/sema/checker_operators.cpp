@@ -512,6 +512,19 @@ Checked Checker::makeLogic(ast::Op op, Checked a, Checked b, const ast::Loc& loc
         r.node->type = r.type;
         return foldIfConst(r, {&a, &b});
     }
+    // An enumeration declared on a bit-string type is a set of flags in
+    // SIMATIC AX: `(mode AND ConversionMode#FORCE_SIGN) = ConversionMode#FORCE_SIGN`
+    // computes on the base type and stays the enumeration (decision 0394).
+    if (a.type->kind == TK::Enum && a.type == b.type && a.type->base && isBitString(a.type->base->kind)) {
+        const Type* flags = a.type;
+        a.type = flags->base;
+        b.type = flags->base;
+        Checked r2 = makeLogic(op, a, b, loc);
+        if (!r2.ok) return r2;
+        r2.type = flags;
+        if (r2.node) r2.node->type = flags;
+        return r2;
+    }
     const Type* t = nullptr;
     if (a.type->kind == TK::Bool && b.type->kind == TK::Bool && !a.untypedInt && !b.untypedInt) t = a.type;
     else if (a.type->kind == TK::Bool || b.type->kind == TK::Bool) {
