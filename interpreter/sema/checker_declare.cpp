@@ -86,7 +86,17 @@ bool Checker::isNamespace(const ast::Expr& e) const {
         }
         // Namespaces are flattened, so a namespace or library name in front of another
         // namespace (`TcUnit.GVL_Param_TcUnit.X`, a library's global list) names that one.
-        return namespaces_.count(path) != 0 || namespaces_.count(upper(e.name)) != 0;
+        if (namespaces_.count(path) != 0 || namespaces_.count(upper(e.name)) != 0) return true;
+        // Relative, as a single name above: `Strings.ToArray.OfCharCount(...)`
+        // inside NAMESPACE Simatic.Ax.Conversion (simatic-ax/conversion's tests).
+        if (auto usings = usingsByFile_.find(nameScope_.file); usings != usingsByFile_.end())
+            for (const std::string& u : usings->second)
+                if (namespaces_.count(u + "." + path)) return true;
+        for (std::string ns = nameScope_.nameSpace; !ns.empty();) {
+            if (namespaces_.count(ns + "." + path)) return true;
+            const auto dot = ns.rfind('.');
+            ns = dot == std::string::npos ? std::string() : ns.substr(0, dot);
+        }
     }
     return false;
 }
