@@ -49,3 +49,29 @@ struct CharAsString final : Expr {
 };
 
 }  // namespace strun::exec
+
+namespace strun::exec {
+
+// s[i] on a STRING (WSTRING) in a SIMATIC AX project: the i-th character,
+// i from 1 to the declared length. A position outside reads the NUL
+// character and a write there is lost (AX's own tests read `str[0]` of a
+// text without brackets and expect no fault; decision 0394): the place is
+// then a scratch character, cleared at each use.
+struct AxCharPlace final : Expr {
+    Expr* base;
+    Expr* index;
+    uint64_t count;
+    uint32_t stride;
+    uint16_t scratch = 0;
+    AxCharPlace(Expr* b, Expr* i, uint64_t n, uint32_t s) : base(b), index(i), count(n), stride(s) {}
+    uint8_t* addr(Ctx& c) override {
+        const uint64_t k = static_cast<uint64_t>(index->i(c)) - 1;
+        if (__builtin_expect(k >= count, 0)) {
+            scratch = 0;
+            return reinterpret_cast<uint8_t*>(&scratch);
+        }
+        return base->addr(c) + k * stride;
+    }
+};
+
+}  // namespace strun::exec

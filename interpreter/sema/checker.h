@@ -46,6 +46,7 @@ public:
     void setCompileOptions(const CompileOptions& options) {
         options_ = options;
         if (options.twincatDurations) types().makeDurationsUnsigned();  // decision 0367
+        if (options.axStrings) types().setDefaultStringLength(254);     // SIMATIC AX (decision 0394)
     }
     const CompileOptions& compileOptions() const { return options_; }
 

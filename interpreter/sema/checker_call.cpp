@@ -182,6 +182,11 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
     }
     Checked a = checkExpr(*e.args[0].value);
     if (!a.ok) return a;
+    // SIMATIC AX: a one-character literal is a CHAR where no STRING is asked
+    // for, so TO_USINT('0') is its code, 48 (simatic-ax/conversion; decision 0394).
+    if (!from && a.isConst && a.type->kind == TK::String && options_.axStrings && !libraryFiles_.count(e.loc.file))
+        if (auto* bytes = dynamic_cast<exec::ConstBytes*>(a.node); bytes && bytes->bytes.size() >= 2 && bytes->bytes[0] != 0 && bytes->bytes[1] == 0)
+            a = coerce(a, types().elementary(TK::Char), e.args[0].value->loc, key.c_str());
     if (!from && isStringType(a.type->kind)) {
         handled = false;  // TO_INT('12'): a STRING source is a stdlib conversion (interpreter/builtins)
         return bad(e.loc);

@@ -386,8 +386,9 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
             if (!spec->genericArgs.empty()) return specialisedInstanceType(*spec);
             return resolveNamedType(spec->name, spec->loc);
         case ast::TypeSpecKind::String: {
-            int64_t len = 80;
-            if (spec->length && !constIntExpr(spec->length.get(), len, "a string length")) len = 80;
+            const int64_t standard = types().elementary(spec->wide ? TK::WString : TK::String)->maxLen;  // 80; AX 254 (decision 0394)
+            int64_t len = standard;
+            if (spec->length && !constIntExpr(spec->length.get(), len, "a string length")) len = standard;
             // STRING(0) (TwinCAT: one byte, always empty; Beckhoff's MQTT sample
             // passes ADR of one as an empty payload) is accepted (decision 0329).
             if (len < 0 || len > 65535) {

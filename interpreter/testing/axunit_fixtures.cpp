@@ -125,6 +125,7 @@ void nameAxSuites(TestRegistry& reg) {
         if (s.typeName.rfind(kBlockPrefix, 0) != 0) continue;
         const size_t k = std::stoul(s.typeName.substr(std::string(kBlockPrefix).size()));
         if (k >= 1 && k <= reg.axFixtures.size()) s.name = reg.axFixtures[k - 1].displayName;
+        s.axUnit = true;  // AxUnit has no MaxNumberOfTestsForEachTestSuite (simatic-ax/conversion: 108 in one fixture)
     }
 }
 
