@@ -453,6 +453,10 @@ Checked Checker::makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& l
         else if (b.type->kind == TK::Enum && b.type->base && isPlainInteger(a.type)) b = coerce(b, b.type->base, b.loc, "operand");
         if (!a.ok || !b.ok) return bad(loc);
     }
+    // Two interface values of different interfaces: `=` / `<>` compare the
+    // instances they designate (simatic-ax/json: `elem = _lastElement`; decision 0392).
+    if (a.type->kind == TK::Interface && b.type->kind == TK::Interface && a.type != b.type && (op == ast::Op::Eq || op == ast::Op::Ne))
+        b.type = a.type;
     const Type* t = commonType(a, b, loc, false);
     if (!t || t->kind == TK::Struct || t->kind == TK::FunctionBlock || t->kind == TK::Array) {
         if (t && (op == ast::Op::Eq || op == ast::Op::Ne) && sameType(a.type, b.type)) {
