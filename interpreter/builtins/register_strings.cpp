@@ -108,7 +108,13 @@ Checked checkConcat(Checker& ck, CallArgs& call) {
     if (!bindExtensible(ck, call, {}, strNames ? "STR" : "IN", 1, 2, a)) return ck.bad(call.loc);
     bool wide = false;
     int64_t total = 0;
+    // A CHAR (WCHAR) input is the string of that character, as SIMATIC AX's
+    // Concat takes it (the implicit CHAR -> STRING of decision 0394).
+    for (auto& v : a)
+        if (v.type && sema::isCharType(v.type->kind))
+            v = ck.coerce(v, ck.types().string(1, v.type->kind == TK::WChar), v.loc, call.name.c_str());
     for (const auto& v : a) {
+        if (!v.ok) return ck.bad(call.loc);
         if (!sema::isStringType(v.type->kind)) return argError(ck, v, call.name, "the inputs must be STRING or WSTRING");
         total += v.type->maxLen;
     }

@@ -1,4 +1,5 @@
 #include "interpreter/project/compile.h"
+#include "interpreter/project/ax_project.h"
 
 #include <algorithm>
 #include <exception>
@@ -124,6 +125,11 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     sema::CompileOptions effective = options;
     for (int f : userFiles) effective.twincatRealText = effective.twincatRealText || source::isTwinCatObject(sources.file(f).path);
     for (int f = 0; f < sources.size(); ++f) effective.sourcePaths.push_back(sources.file(f).path);
+    {
+        std::vector<std::string> userPaths;
+        for (int f : userFiles) userPaths.push_back(sources.file(f).path);
+        effective.axStrings = effective.axStrings || isAxProject(userPaths);  // decision 0394
+    }
     effective.twincatDurations = effective.twincatDurations || effective.twincatRealText;
     checker.setCompileOptions(effective);
     if (const rt::PlcProfile* profile = rt::findProfile(options.target)) checker.setProfile(*profile);

@@ -3,8 +3,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <set>
 
 #include "interpreter/exec/node.h"
+#include "stdlib/number_scan.h"
 #include "stdlib/text_encoding.h"
 #include "stdlib/value_format.h"
 
@@ -67,11 +69,19 @@ void append(json& obj, const std::string& key, json value) {
     members.emplace_back(key, std::move(value));
 }
 
-void membersJson(json& obj, const Type* t, const uint8_t* p) {
-    if (t->parent) membersJson(obj, t->parent, p);
+// `shadowed`: the names a derived class declares again (a base's PRIVATE
+// member, decision 0393); the base's member is written `Base.name` then.
+void membersJson(json& obj, const Type* t, const uint8_t* p, const std::set<std::string>* shadowed = nullptr) {
+    if (t->parent) {
+        std::set<std::string> names;
+        if (shadowed) names = *shadowed;
+        for (const auto& f : t->fields) names.insert(stdlib::upperAscii(f.name));
+        membersJson(obj, t->parent, p, &names);
+    }
     for (const auto& f : t->fields) {
         if (omitted(f.type) || f.hidden) continue;
-        append(obj, f.name, valueToJson(f.type, p + f.offset));
+        const bool hidden = shadowed && shadowed->count(stdlib::upperAscii(f.name));
+        append(obj, hidden ? t->name + "." + f.name : f.name, valueToJson(f.type, p + f.offset));
     }
 }
 

@@ -47,6 +47,7 @@ public:
     void setCompileOptions(const CompileOptions& options) {
         options_ = options;
         if (options.twincatDurations) types().makeDurationsUnsigned();  // decision 0367
+        if (options.axStrings) types().setDefaultStringLength(254);     // SIMATIC AX (decision 0394)
     }
     const CompileOptions& compileOptions() const { return options_; }
 
@@ -247,6 +248,10 @@ private:
     // TwinCAT/CODESYS forms (checker_lang_forms.cpp): s[i] on a STRING, p[i] on a
     // POINTER, `(x := v)` used as a value.
     Checked checkStringOrPointerIndex(const ast::Expr& e, const Checked& base);
+    // CASE on CHAR / STRING selectors (SIMATIC AX, checker_case_text.cpp).
+    exec::Expr* caseTextSelector(const Checked& sel);
+    bool caseTextLabel(exec::Expr* key, const Type* selector, Checked& label, const ast::Loc& loc, int64_t& out);
+    exec::Expr* charAsString(const Checked& ch, const Type* target);
     Checked checkAssignmentValue(const ast::Expr& e);
     std::vector<std::unique_ptr<ast::Stmt>> assignmentValues_;  // statements made from expressions, kept with the checker
     // `fb.A_Act(in := v, out => x)` (checker_action_call.cpp): the block's inputs set, the action run, its outputs read.

@@ -193,6 +193,11 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
     }
     Checked a = checkExpr(*e.args[0].value);
     if (!a.ok) return a;
+    // SIMATIC AX: a one-character literal is a CHAR where no STRING is asked
+    // for, so TO_USINT('0') is its code, 48 (simatic-ax/conversion; decision 0394).
+    if (!from && a.isConst && a.type->kind == TK::String && options_.axStrings && !libraryFiles_.count(e.loc.file))
+        if (auto* bytes = dynamic_cast<exec::ConstBytes*>(a.node); bytes && bytes->bytes.size() >= 2 && bytes->bytes[0] != 0 && bytes->bytes[1] == 0)
+            a = coerce(a, types().elementary(TK::Char), e.args[0].value->loc, key.c_str());
     if (!from && isStringType(a.type->kind)) {
         handled = false;  // TO_INT('12'): a STRING source is a stdlib conversion (interpreter/builtins)
         return bad(e.loc);
@@ -270,6 +275,17 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         std::string key = upper(callee.name);
         const std::string pouKey = scopedKey(key);
         VarSym* v = lookupVar(key);
+        // `Insert(...)` inside METHOD Insert (SIMATIC AX string-builder): the
+        // method's result is no function; a function of that name is called,
+        // not the method itself (decision 0397).
+        bool resultNameCallsFunction = false;
+        if (pou_ && pou_->kind == ast::PouKind::Method && pou_->owner && upper(pou_->name) == key && (!v || v == pou_->result)) {
+            auto fn = pous_.find(pouKey);
+            if ((fn != pous_.end() && fn->second->kind == ast::PouKind::Function) || overloads_.count(key) != 0) {
+                v = nullptr;
+                resultNameCallsFunction = true;
+            }
+        }
         if (v && pou_ && v == pou_->result && pous_.count(pouKey)) v = nullptr;  // recursion: F(...) inside F
         // `max : INT` (a variable) and `MAX(a, b)` (the function) live side by side:
         // a call of a name that is a plain variable calls the function of that name.
@@ -285,7 +301,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             return bad(e.loc);
         }
         // A method of the function block being checked, called without THIS^.
-        if (pou_) {
+        if (pou_ && !resultNameCallsFunction) {
             PouInfo* fb = pou_->owner ? pou_->owner : pou_;
             if (fb->kind == ast::PouKind::FunctionBlock || fb->kind == ast::PouKind::Program) {
                 if (Checked overloaded; !methodOverloads_.empty() && methodOverloads_.count(key)) {
@@ -680,7 +696,7 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
     const bool reportUnconnected = ok && !hasUnresolvedVariables(fn);
     for (VarSym* p : fn->params)
         if (p->byRef && !connected.count(p) && reportUnconnected) {
-            error(diag::E0301, e.loc, fmt::format("VAR_IN_OUT '{}' of '{}' must be connected", p->name, fn->name));
+            error(diag::E0301, e.loc, fmt::format("{} '{}' of '{}' must be connected", p->section == ast::VarSection::Input ? "the ARRAY[*] input" : "VAR_IN_OUT", p->name, fn->name));
             ok = false;
         }
     if (!ok) return bad(e.loc);

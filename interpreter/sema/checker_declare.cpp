@@ -86,7 +86,17 @@ bool Checker::isNamespace(const ast::Expr& e) const {
         }
         // Namespaces are flattened, so a namespace or library name in front of another
         // namespace (`TcUnit.GVL_Param_TcUnit.X`, a library's global list) names that one.
-        return namespaces_.count(path) != 0 || namespaces_.count(upper(e.name)) != 0;
+        if (namespaces_.count(path) != 0 || namespaces_.count(upper(e.name)) != 0) return true;
+        // Relative, as a single name above: `Strings.ToArray.OfCharCount(...)`
+        // inside NAMESPACE Simatic.Ax.Conversion (simatic-ax/conversion's tests).
+        if (auto usings = usingsByFile_.find(nameScope_.file); usings != usingsByFile_.end())
+            for (const std::string& u : usings->second)
+                if (namespaces_.count(u + "." + path)) return true;
+        for (std::string ns = nameScope_.nameSpace; !ns.empty();) {
+            if (namespaces_.count(ns + "." + path)) return true;
+            const auto dot = ns.rfind('.');
+            ns = dot == std::string::npos ? std::string() : ns.substr(0, dot);
+        }
     }
     return false;
 }
@@ -376,8 +386,9 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
             if (!spec->genericArgs.empty()) return specialisedInstanceType(*spec);
             return resolveNamedType(spec->name, spec->loc);
         case ast::TypeSpecKind::String: {
-            int64_t len = 80;
-            if (spec->length && !constIntExpr(spec->length.get(), len, "a string length")) len = 80;
+            const int64_t standard = types().elementary(spec->wide ? TK::WString : TK::String)->maxLen;  // 80; AX 254 (decision 0394)
+            int64_t len = standard;
+            if (spec->length && !constIntExpr(spec->length.get(), len, "a string length")) len = standard;
             // STRING(0) (TwinCAT: one byte, always empty; Beckhoff's MQTT sample
             // passes ADR of one as an empty payload) is accepted (decision 0329).
             if (len < 0 || len > 65535) {
@@ -731,7 +742,13 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 ast::Loc loc = n < decl.nameLocs.size() ? decl.nameLocs[n] : decl.loc;
                 std::string key = upper(name);
                 bool dup = pou->vars.count(key) != 0;
-                for (PouInfo* p = pou->parent; p && !dup; p = p->parent) dup = p->vars.count(key) != 0;
+                // A base class's VAR PRIVATE member is invisible here: the name is
+                // free for the derived class's own (SIMATIC AX, IEC Ed.3; decision 0393).
+                for (PouInfo* p = pou->parent; p && !dup; p = p->parent) {
+                    auto inherited = p->vars.find(key);
+                    dup = inherited != p->vars.end() &&
+                          !(inherited->second->access == ast::Access::Private && inherited->second->section == ast::VarSection::Var);
+                }
                 if (dup) {
                     error(diag::E0106, loc, fmt::format("duplicate variable '{}' in '{}'", name, pou->name));
                     continue;
@@ -769,9 +786,13 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 }
                 if (t->kind == TK::FunctionBlock && t->pou && t->pou->ast->abstract && !byRefSection(block.section))
                     error(diag::E0405, decl.type ? decl.type->loc : loc, fmt::format("'{}' is ABSTRACT: it cannot have instances", t->name));
-                if (t->kind == TK::Array && t->flexible && block.section != ast::VarSection::InOut)
-                    error(diag::E0407, loc, "ARRAY[*] is only allowed in VAR_IN_OUT");
-                const bool byRef = block.section == ast::VarSection::InOut;
+                // ARRAY[*] as a VAR_INPUT (SIMATIC AX, IEC Ed.3): bound like a
+                // VAR_IN_OUT CONSTANT, by address and bounds, read-only (decision 0395).
+                const bool flexibleInput = t->kind == TK::Array && t->flexible && block.section == ast::VarSection::Input;
+                if (t->kind == TK::Array && t->flexible && block.section != ast::VarSection::InOut && !flexibleInput)
+                    error(diag::E0407, loc, "ARRAY[*] is only allowed in VAR_IN_OUT and VAR_INPUT");
+                if (flexibleInput) v->constant = true;
+                const bool byRef = block.section == ast::VarSection::InOut || flexibleInput;
                 // ARRAY[*]: address and bounds (docs/decisions/0077); other in-outs: an address.
                 const uint32_t size = byRef ? (t->flexible ? 8 + 16 * static_cast<uint32_t>(t->dims.size()) : 8) : t->size;
                 const uint32_t align = byRef ? 8 : t->align;

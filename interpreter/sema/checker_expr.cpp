@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "interpreter/exec/class_part_nodes.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/expr_observer.h"
 #include "interpreter/sema/fuse.h"
@@ -332,7 +333,9 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
     c.isPlace = true;
     if (v->constant) {
         c.readOnly = true;
-        c.readOnlyWhy = fmt::format("'{}' is a CONSTANT", v->name);
+        c.readOnlyWhy = v->byRef && v->section == ast::VarSection::Input
+                            ? fmt::format("'{}' is an ARRAY[*] input, passed by reference and read-only", v->name)
+                            : fmt::format("'{}' is a CONSTANT", v->name);
     }
     if (v->hasConstValue) {
         c.isConst = true;
@@ -863,7 +866,7 @@ Checked Checker::checkIndex(const ast::Expr& e) {
     size_t nsub = e.kids.size() - 1;
     if (t->flexible) {
         if (!base.flexDesc) {
-            error(diag::E0407, e.loc, "ARRAY[*] is only usable as a VAR_IN_OUT parameter");
+            error(diag::E0407, e.loc, "ARRAY[*] is only usable as a VAR_IN_OUT or VAR_INPUT parameter");
             return bad(e.loc);
         }
         if (e.kids.size() - 1 != t->dims.size()) {
@@ -879,6 +882,8 @@ Checked Checker::checkIndex(const ast::Expr& e) {
         c.loc = e.loc;
         c.type = t->elem;
         c.isPlace = true;
+        c.readOnly = base.readOnly;  // VAR_IN_OUT CONSTANT, an ARRAY[*] input (decision 0395)
+        c.readOnlyWhy = base.readOnlyWhy;
         c.hasCall = base.hasCall;
         for (size_t k = 1; k < e.kids.size(); ++k) {
             Checked ix = checkExpr(*e.kids[k]);
@@ -1201,6 +1206,20 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
     if (isStringType(from->kind) && from->kind == target->kind && e.isConst && from->maxLen > target->maxLen && target->maxLen > 0)
         warning(diag::W0016, e.loc.line ? e.loc : loc, fmt::format("the string has {} characters; {} keeps only the first {}", from->maxLen,
                                                       typeName(target), target->maxLen));
+    if (isStringType(target->kind) && isCharType(from->kind) && (target->kind == TK::WString) == (from->kind == TK::WChar) && !e.untypedInt) {
+        // A CHAR widens to the STRING of that character (IEC Ed.3, SIMATIC AX; decision 0394).
+        if (exec::Expr* n = charAsString(e, target)) {
+            Checked c = e;
+            c.type = types().string(1, target->kind == TK::WString);
+            c.isPlace = false;
+            c.isConst = false;
+            c.var = nullptr;
+            c.direct = Checked::Direct::None;
+            c.node = n;
+            c.node->type = c.type;
+            return c;
+        }
+    }
     if (isCharType(target->kind) && isStringType(from->kind) && e.isConst) {
         // c : CHAR := 'A': a one-character string literal is that character.
         if (auto* bytes = dynamic_cast<exec::ConstBytes*>(e.node)) {
@@ -1287,6 +1306,21 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
     if (target->kind == TK::Struct && from->kind == TK::Struct) {
         for (const Type* p = from->parent; p; p = p->parent)
             if (p == target) return e;  // derived struct to base: copies the base part
+    }
+    if (target->kind == TK::FunctionBlock && from->kind == TK::FunctionBlock && target->pou && from->pou && from->pou->parent) {
+        // A derived class (or block) instance for its base class: the base
+        // part is copied, the target keeps its class (decision 0392).
+        for (PouInfo* p = from->pou->parent; p; p = p->parent)
+            if (p == target->pou) {
+                Checked c = e;
+                c.type = target;
+                c.isPlace = false;
+                c.var = nullptr;
+                c.direct = Checked::Direct::None;
+                c.node = pool().make<exec::ClassPartOf>(e.node);
+                c.node->type = target;
+                return c;
+            }
     }
     if (isElementary(from->kind) && isElementary(target->kind)) {
         if (iecImplicit(from, target)) return convert(e, target, loc);

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/ast/ast_clone.h"
+#include "interpreter/exec/text_value_nodes.h"
 #include "interpreter/exec/value_nodes.h"
 #include "interpreter/sema/checker.h"
 
@@ -67,7 +68,22 @@ Checked Checker::checkStringOrPointerIndex(const ast::Expr& e, const Checked& ba
     if (isStringType(t->kind)) {
         // TwinCAT/CODESYS: s[i] is the byte (WSTRING: the word) at index i,
         // counted from 0, over the string's whole storage (decision 0205).
+        // SIMATIC AX (IEC Ed.3): the i-th CHAR (WCHAR), counted from 1, over
+        // the string's characters: the same storage, one place further on;
+        // outside, the NUL character (decision 0394). Library files keep the
+        // TwinCAT reading.
         const bool wide = t->kind == TK::WString;
+        const bool ax = options_.axStrings && !libraryFiles_.count(e.loc.file);
+        if (ax) {
+            c.type = types().elementary(wide ? TK::WChar : TK::Char);
+            c.isPlace = base.isPlace;
+            c.readOnly = base.readOnly;
+            c.readOnlyWhy = base.readOnlyWhy;
+            auto* n = pool().make<exec::AxCharPlace>(base.node, ix.node, std::max<uint64_t>(t->maxLen, 1), wide ? 2u : 1u);
+            c.node = loadFrom(n, c.type);
+            c.node->type = c.type;
+            return c;
+        }
         c.type = types().elementary(wide ? TK::Word : TK::Byte);
         c.isPlace = base.isPlace;
         c.readOnly = base.readOnly;

@@ -456,6 +456,10 @@ Checked Checker::makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& l
         else if (b.type->kind == TK::Enum && b.type->base && isPlainInteger(a.type)) b = coerce(b, b.type->base, b.loc, "operand");
         if (!a.ok || !b.ok) return bad(loc);
     }
+    // Two interface values of different interfaces: `=` / `<>` compare the
+    // instances they designate (simatic-ax/json: `elem = _lastElement`; decision 0392).
+    if (a.type->kind == TK::Interface && b.type->kind == TK::Interface && a.type != b.type && (op == ast::Op::Eq || op == ast::Op::Ne))
+        b.type = a.type;
     const Type* t = commonType(a, b, loc, false);
     if (!t || t->kind == TK::Struct || t->kind == TK::FunctionBlock || t->kind == TK::Array) {
         if (t && (op == ast::Op::Eq || op == ast::Op::Ne) && sameType(a.type, b.type)) {
@@ -514,6 +518,19 @@ Checked Checker::makeLogic(ast::Op op, Checked a, Checked b, const ast::Loc& loc
         r.node = op == ast::Op::AndThen ? static_cast<exec::Expr*>(pool().make<exec::AndThen>(a.node, b.node)) : pool().make<exec::OrElse>(a.node, b.node);
         r.node->type = r.type;
         return foldIfConst(r, {&a, &b});
+    }
+    // An enumeration declared on a bit-string type is a set of flags in
+    // SIMATIC AX: `(mode AND ConversionMode#FORCE_SIGN) = ConversionMode#FORCE_SIGN`
+    // computes on the base type and stays the enumeration (decision 0394).
+    if (a.type->kind == TK::Enum && a.type == b.type && a.type->base && isBitString(a.type->base->kind)) {
+        const Type* flags = a.type;
+        a.type = flags->base;
+        b.type = flags->base;
+        Checked r2 = makeLogic(op, a, b, loc);
+        if (!r2.ok) return r2;
+        r2.type = flags;
+        if (r2.node) r2.node->type = flags;
+        return r2;
     }
     const Type* t = nullptr;
     if (a.type->kind == TK::Bool && b.type->kind == TK::Bool && !a.untypedInt && !b.untypedInt) t = a.type;

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "interpreter/exec/class_part_nodes.h"
 #include "interpreter/exec/else_nodes.h"
 #include "interpreter/sema/case_lowering.h"
 #include "interpreter/sema/checker.h"
@@ -77,6 +78,8 @@ exec::Stmt* Checker::storeTo(exec::Expr* place, const Type* t, exec::Expr* value
         if (exec::Stmt* n = fuseAppendInPlace(pool(), t->kind == TK::WString, place, t->maxLen, value)) return n;
     if (t->kind == TK::String) return pool().make<exec::AssignString<char>>(place, value, t->maxLen);
     if (t->kind == TK::WString) return pool().make<exec::AssignString<char16_t>>(place, value, t->maxLen);
+    if (auto* part = dynamic_cast<exec::ClassPartOf*>(value))  // a derived instance into a base class variable (decision 0392)
+        return pool().make<exec::AssignClassPart>(place, part->instance, static_cast<uint32_t>(sizeof(const exec::ClassDesc*)), t->size);
     if (isAggregate(t)) return pool().make<exec::AssignBytes>(place, value, t->size);
     if (auto* element = dynamic_cast<exec::Index1Target*>(place))  // a[i] := value (decision 0154)
         if (exec::Stmt* n = element->makeStore(pool(), value, repOf(t) == Rep::Bool)) return n;
@@ -336,10 +339,13 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
     if (!sel.ok) return nullptr;
     sel = settle(sel);
     const Type* st = sel.type;
-    if (!(isInteger(st->kind) || isBitString(st->kind) || st->kind == TK::Enum)) {
+    // CHAR and STRING selectors: SIMATIC AX (decision 0394, checker_case_text.cpp).
+    const bool textual = isCharType(st->kind) || isStringType(st->kind);
+    if (!(isInteger(st->kind) || isBitString(st->kind) || st->kind == TK::Enum || textual)) {
         error(diag::E0503, s.expr->loc, fmt::format("the CASE selector must be an integer or an enumeration, not {}", typeName(st)));
         return nullptr;
     }
+    exec::Expr* textKey = caseTextSelector(sel);
     exec::CaseArms arms;
     arms.isUnsigned64 = repOf(st) == Rep::U64;
     std::map<int64_t, int64_t> used;
@@ -352,6 +358,13 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
                 if (!c.isConst) {
                     error(diag::E0503, e->loc, "a CASE label must be a constant");
                     return false;
+                }
+                if (textual) {
+                    if (isStringType(st->kind) && e == lab.hi.get()) {
+                        error(diag::E0503, e->loc, "a CASE on a string has no ranges of labels");
+                        return false;
+                    }
+                    return caseTextLabel(textKey, st, c, e->loc, out);
                 }
                 if (st->kind == TK::Enum) {
                     if (c.type != st) {
@@ -392,7 +405,7 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
         arms.blocks.push_back(checkBlock(br.body));
     }
     if (s.elseBlock) arms.elseBlock = checkBlock(*s.elseBlock);
-    return makeCaseNode(pool(), sel.node, std::move(arms));
+    return makeCaseNode(pool(), textKey ? textKey : sel.node, std::move(arms));
 }
 
 exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {

@@ -36,6 +36,11 @@ struct CompileOptions {
     // milliseconds up to T#49d17h2m47s295ms and unsigned 64-bit nanoseconds
     // up to LTIME#213503d23h34m33s709ms551us615ns (decision 0367).
     bool twincatDurations = false;
+    // A SIMATIC AX project (an apax.yml in the folder of a source file or
+    // above it): `s[i]` on a STRING is its i-th CHAR, counted from 1, as AX
+    // and IEC 61131-3 Ed.3 read it, not TwinCAT's byte from 0 (decision 0394).
+    // Set by compileProject.
+    bool axStrings = false;
     // The path of every source file, by SourceSet index: the value of an
     // input marked {CallerFilePath} (SIMATIC AX, decision 0363). Set by compileProject.
     std::vector<std::string> sourcePaths;

@@ -89,6 +89,16 @@ int64_t nanosPerUnit(TK k) {
     }
 }
 
+void TypeTable::setDefaultStringLength(uint32_t maxLen) {
+    for (const bool wide : {false, true}) {
+        Type* t = const_cast<Type*>(elementary(wide ? TK::WString : TK::String));
+        strings_.erase({t->maxLen, wide});
+        t->maxLen = maxLen;
+        t->size = (maxLen + 1) * (wide ? 2 : 1);
+        strings_[{maxLen, wide}] = t;
+    }
+}
+
 void TypeTable::makeDurationsUnsigned() {
     for (Type& t : storage_)
         if (&t == elementary(TK::LTime) || &t == elementary(TK::Time)) t.unsignedDuration = true;

@@ -146,6 +146,9 @@ public:
     Type* create(Type t);  // user types (enum, struct, FB, alias, subrange)
     // TIME and LTIME become TwinCAT's unsigned ones (decision 0367); before any user type copies them.
     void makeDurationsUnsigned();
+    // STRING / WSTRING without a length: maxLen characters instead of 80
+    // (SIMATIC AX: 254, decision 0394). Before any type is declared.
+    void setDefaultStringLength(uint32_t maxLen);
     const Type* voidType() const { return elementary(TK::Void); }
 
 private:

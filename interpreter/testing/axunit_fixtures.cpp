@@ -47,13 +47,17 @@ std::string stLiteral(const std::string& s) {
     return out + "'";
 }
 
+// A method or function as written: an overloaded one is renamed "Name(T1, T2)"
+// by the checker (decision 0362), and the generated call picks the member again.
+std::string plainName(const std::string& name) { return name.substr(0, name.find('(')); }
+
 void addTests(const ast::Pou& p, const std::string& callName, std::vector<AxTest>& tests) {
     for (const ast::Pragma& pr : p.pragmas) {
         auto [name, args] = splitPragma(pr.text);
         if (name != "TEST") continue;
         AxTest t;
-        t.name = args.empty() ? p.name : p.name + "(" + args + ")";
-        t.call = callName + "(" + args + ")";
+        t.name = args.empty() ? plainName(p.name) : plainName(p.name) + "(" + args + ")";
+        t.call = plainName(callName) + "(" + args + ")";
         tests.push_back(std::move(t));
     }
 }
@@ -75,11 +79,11 @@ void recordAxFixtures(const sema::ProgramModel& model, TestRegistry& reg) {
             f.displayName = qualified(*p);
             f.typeName = f.displayName;
             for (const auto& m : p->methods) {
-                addTests(*m, "fixture." + m->name, f.tests);
-                if (hasPragma(*m, "TESTSETUP")) f.setup = m->name;
-                if (hasPragma(*m, "TESTTEARDOWN")) f.teardown = m->name;
-                if (hasPragma(*m, "FIXTURESETUP")) f.fixtureSetup = m->name;
-                if (hasPragma(*m, "FIXTURETEARDOWN")) f.fixtureTeardown = m->name;
+                addTests(*m, "fixture." + plainName(m->name), f.tests);
+                if (hasPragma(*m, "TESTSETUP")) f.setup = plainName(m->name);
+                if (hasPragma(*m, "TESTTEARDOWN")) f.teardown = plainName(m->name);
+                if (hasPragma(*m, "FIXTURESETUP")) f.fixtureSetup = plainName(m->name);
+                if (hasPragma(*m, "FIXTURETEARDOWN")) f.fixtureTeardown = plainName(m->name);
             }
             reg.axFixtures.push_back(std::move(f));
         } else if (p->kind == ast::PouKind::Function && hasPragma(*p, "TEST")) {
@@ -125,6 +129,7 @@ void nameAxSuites(TestRegistry& reg) {
         if (s.typeName.rfind(kBlockPrefix, 0) != 0) continue;
         const size_t k = std::stoul(s.typeName.substr(std::string(kBlockPrefix).size()));
         if (k >= 1 && k <= reg.axFixtures.size()) s.name = reg.axFixtures[k - 1].displayName;
+        s.axUnit = true;  // AxUnit has no MaxNumberOfTestsForEachTestSuite (simatic-ax/conversion: 108 in one fixture)
     }
 }
 

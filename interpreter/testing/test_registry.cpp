@@ -309,7 +309,7 @@ void TestRegistry::applyTestLimit() {
         suiteLimitReported = true;
     }
     for (auto& s : suites) {
-        if (maxTests < 0 || s.tests.size() <= static_cast<size_t>(maxTests)) continue;
+        if (maxTests < 0 || s.tests.size() <= static_cast<size_t>(maxTests) || s.axUnit) continue;
         for (size_t k = static_cast<size_t>(maxTests); k < s.tests.size(); ++k) {
             TestCase& t = s.tests[k];
             if (t.skipped) continue;

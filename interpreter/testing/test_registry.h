@@ -44,6 +44,7 @@ struct Suite {
     std::string name;         // the instance's name as declared
     std::string path;         // Program.member path ("PRG_TEST.fbSuite")
     std::string typeName;     // the FUNCTION_BLOCK
+    bool axUnit = false;      // an AxUnit fixture (decision 0365): TcUnit's test limit does not apply
     std::vector<std::string> blocks;  // it and the blocks it extends, upper case
     uint8_t* instance = nullptr;
     exec::PouCode* body = nullptr;
