@@ -127,6 +127,7 @@ void Checker::inlineLeafCalls() {
             in->binds.push_back(exec::ArgBind{});
             in->binds.back().how = exec::ArgBind::How::End;
             site.call->inlined = in;
+            site.call->inlinedOnCaller = !site.onInstance;
         } else {
             site.fbCall->inlined = in;  // its inputs are stored into the instance, not the frame
             // A block instance that is a variable of the caller's instance: its address read inline.
