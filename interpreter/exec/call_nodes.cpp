@@ -58,7 +58,7 @@ template <bool OnInstance>
     }
     const InlinedCall& in = *call.inlined;
     uint8_t* f = initInlinedArea(c, in);
-    bindArgs(c, f, call.binds);
+    bindArgsUntilEnd(c, f, in.binds.data());
     runInlinedBody<OnInstance>(c, in, call.callee->name, inst);
     return f;
 }

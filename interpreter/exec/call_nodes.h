@@ -133,7 +133,8 @@ struct ArgBind {
         CopySelf1, CopySelf2, CopySelf4, CopySelf8,  // the caller's instance variable at `src`
         CopyFrame1, CopyFrame2, CopyFrame4, CopyFrame8,
         Int1, Int2, Int4, Int8,                      // value->i
-        Bool, F32, F64                               // value->i != 0, value->f
+        Bool, F32, F64,                              // value->i != 0, value->f
+        End                                          // ends an inlined call's list (InlinedCall::binds)
     };
     How how = How::Int8;
     uint32_t dst = 0;    // offset in the callee frame
@@ -173,6 +174,38 @@ struct ArgBind {
     }
 }
 
+// bindArgs over a list ended by How::End (an inlined call's own list): no
+// end pointer kept in a register and compared per argument.
+[[gnu::always_inline]] inline void bindArgsUntilEnd(Ctx& c, uint8_t* f, const ArgBind* a) {
+    using H = ArgBind::How;
+    for (;; ++a) {
+        uint8_t* p = f + a->dst;
+        switch (a->how) {
+            case H::Const1: storeAs<uint8_t>(p, static_cast<uint8_t>(a->bits)); break;
+            case H::Const2: storeAs<uint16_t>(p, static_cast<uint16_t>(a->bits)); break;
+            case H::Const4: storeAs<uint32_t>(p, static_cast<uint32_t>(a->bits)); break;
+            case H::Const8: storeAs<uint64_t>(p, a->bits); break;
+            case H::CopySelf1: storeAs<uint8_t>(p, loadAs<uint8_t>(c.self + a->src)); break;
+            case H::CopySelf2: storeAs<uint16_t>(p, loadAs<uint16_t>(c.self + a->src)); break;
+            case H::CopySelf4: storeAs<uint32_t>(p, loadAs<uint32_t>(c.self + a->src)); break;
+            case H::CopySelf8: storeAs<uint64_t>(p, loadAs<uint64_t>(c.self + a->src)); break;
+            case H::CopyFrame1: storeAs<uint8_t>(p, loadAs<uint8_t>(c.frame + a->src)); break;
+            case H::CopyFrame2: storeAs<uint16_t>(p, loadAs<uint16_t>(c.frame + a->src)); break;
+            case H::CopyFrame4: storeAs<uint32_t>(p, loadAs<uint32_t>(c.frame + a->src)); break;
+            case H::CopyFrame8: storeAs<uint64_t>(p, loadAs<uint64_t>(c.frame + a->src)); break;
+            case H::Int1: storeAs<uint8_t>(p, static_cast<uint8_t>(a->value->i(c))); break;
+            case H::Int2: storeAs<uint16_t>(p, static_cast<uint16_t>(a->value->i(c))); break;
+            case H::Int4: storeAs<uint32_t>(p, static_cast<uint32_t>(a->value->i(c))); break;
+            case H::Int8: storeAs<uint64_t>(p, static_cast<uint64_t>(a->value->i(c))); break;
+            case H::Bool: storeAs<uint8_t>(p, a->value->i(c) != 0); break;
+            case H::F32: storeAs<float>(p, static_cast<float>(a->value->f(c))); break;
+            case H::F64: storeAs<double>(p, a->value->f(c)); break;
+            case H::End: return;
+            default: __builtin_unreachable();
+        }
+    }
+}
+
 // A small leaf FUNCTION inlined at its call (decision 0317): its body was
 // checked a second time with its variables at `base` in the caller's frame,
 // so the call pushes no frame and switches no registers but the POU name.
@@ -180,6 +213,13 @@ struct ArgBind {
 // already in place, so that only the other arguments are bound per call.
 struct InlinedCall {
     Body body;
+    // The body's one statement, when it has exactly one (and no label): run
+    // with its tick directly, without Body::run's tests.
+    Stmt* single = nullptr;
+    // The arguments bound per call (the constant ones are in `image`), ended
+    // by How::End. Unused by a block call, which binds its inputs (into the
+    // instance) from its own list.
+    std::vector<ArgBind> binds;
     uint32_t base = 0;
     bool onInstance = false;      // a METHOD: its body runs on the call's instance (self)
     uint32_t size = 0;            // bytes of `image` copied per call (0: nothing to initialise)
@@ -202,14 +242,21 @@ struct InlinedCall {
 // Runs an inlined body with the POU name (and with `OnInstance` the
 // instance, self) switched for its duration, so that a watchdog or a test
 // failure names the callee; restores them and the caller's statement.
-template <bool OnInstance>
+// `TrySingle`: run InlinedCall::single directly when set (FUNCTION and
+// METHOD calls; a block body, often of two statements, paid the extra test).
+template <bool OnInstance, bool TrySingle = true>
 [[gnu::always_inline]] inline void runInlinedBody(Ctx& c, const InlinedCall& in, const std::string& name, uint8_t* inst) {
     const Stmt* savedStmt = c.stmt;
     const std::string* savedPou = c.pouName;
     uint8_t* savedSelf = c.self;
     if constexpr (OnInstance) c.self = inst;
     c.pouName = &name;
-    in.body.run(c);
+    if (Stmt* s = TrySingle ? in.single : nullptr) {
+        c.stmt = s;
+        if (!tickAborts(c)) s->exec(c);
+    } else {
+        in.body.run(c);
+    }
     if constexpr (OnInstance) c.self = savedSelf;
     c.stmt = savedStmt;
     c.pouName = savedPou;
@@ -232,6 +279,9 @@ struct CallPou final : Expr {
     uint32_t tempOffset = 0;         // aggregates: caller-frame temporary receiving the result
     int virtualSlot = -1;            // >= 0: the method is looked up in the instance's ClassDesc
     InlinedCall* inlined = nullptr;  // set: the callee's body runs in the caller's frame
+    // `inlined` is set and is not a METHOD's (its body runs on the caller's
+    // instance): what AssignCallLocal tests to tail-call runInlinedInto.
+    bool inlinedOnCaller = false;
 
     // Runs the call; returns the (already popped) callee frame, or nullptr if it did not run.
     // Both forms are functions of their own: sharing one, the inlined form
@@ -258,7 +308,7 @@ struct CallPou final : Expr {
     [[gnu::noinline]] Flow runInlinedInto(Ctx& c, uint8_t* dst);  // Flow::Next
     PouCode* dispatch(Ctx& c, uint8_t* inst);  // faults.cpp: NULL_POINTER when unbound
     int64_t i(Ctx& c) override {
-        if (inlined && !inlined->onInstance) return iInlined(c);
+        if (inlined && !inlined->onInstance) return iInlined(c);  // (not inlinedOnCaller: +4 % in CallPou::i of framed calls)
         uint8_t* f = run(c);
         return f ? loadIntRep(f + callee->resultOffset, rep) : 0;
     }
@@ -303,8 +353,7 @@ struct AssignCallLocal final : Stmt {
             // An inlined FUNCTION whose result has T's own type: one function
             // does the call and the store, tail-called (c.self and c.frame are
             // the same after an inlined FUNCTION, so the target is too).
-            const InlinedCall* in = call->inlined;
-            if (sameType && in && !in->onInstance) return call->runInlinedInto<sizeof(T)>(c, (FRAME ? c.frame : c.self) + off);
+            if (sameType && call->inlinedOnCaller) return call->runInlinedInto<sizeof(T)>(c, (FRAME ? c.frame : c.self) + off);
             return storeOutOfLine(c);  // keeps this function free of register saves
         } else {
             return store(c);
@@ -385,7 +434,7 @@ struct CallFbStmtOf final : Stmt {
             return Flow::Next;
         }
         if (in.size) initInlinedArea(c, in);  // a block without VAR_TEMP has nothing to initialise
-        runInlinedBody<true>(c, in, body->name, inst);
+        runInlinedBody<true, false>(c, in, body->name, inst);
         if (c.aborting) return Flow::Abort;
         for (Stmt* s : outputs) s->exec(c);
         return Flow::Next;

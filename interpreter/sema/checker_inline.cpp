@@ -113,6 +113,7 @@ void Checker::inlineLeafCalls() {
         if (!clean || !body) continue;
         auto* in = pool().make<exec::InlinedCall>();
         in->body = exec::Body(body);
+        if (site.call && body->stmts.size() == 1 && body->labels.empty()) in->single = body->stmts[0];
         in->base = base;
         in->onInstance = site.onInstance;
         in->size = fn->code->initSize;
@@ -122,7 +123,11 @@ void Checker::inlineLeafCalls() {
             // Constant arguments are part of the image: stored once, here.
             auto& binds = site.call->binds;
             std::erase_if(binds, [&](const exec::ArgBind& b) { return storeConstantArgument(in->image, b); });
+            in->binds = binds;
+            in->binds.push_back(exec::ArgBind{});
+            in->binds.back().how = exec::ArgBind::How::End;
             site.call->inlined = in;
+            site.call->inlinedOnCaller = !site.onInstance;
         } else {
             site.fbCall->inlined = in;  // its inputs are stored into the instance, not the frame
             // A block instance that is a variable of the caller's instance: its address read inline.

@@ -82,6 +82,16 @@ TEST_CASE("a small FUNCTION that calls nothing is inlined; the others keep their
     // The constant argument is part of the call's frame image; the variable one is bound per call.
     CHECK(callIn(*c, 0)->binds.empty());
     CHECK(callIn(*c, 4)->binds.size() == 1);
+    // Decision 0382: the per-call list ends with How::End; Leaf's one
+    // statement is run directly; the calls run on the caller (no METHOD).
+    const exec::InlinedCall& leaf = *callIn(*c, 4)->inlined;
+    REQUIRE(leaf.binds.size() == 2);
+    CHECK(leaf.binds[0].how == exec::ArgBind::How::CopySelf4);
+    CHECK(leaf.binds[1].how == exec::ArgBind::How::End);
+    CHECK(leaf.single != nullptr);
+    CHECK(callIn(*c, 4)->inlinedOnCaller);
+    CHECK(callIn(*c, 0)->inlined->binds.size() == 1);  // constants only: just the End
+    CHECK_FALSE(callIn(*c, 1)->inlinedOnCaller);
     // Main's frame holds the areas of its inlined calls; a call initialises only its own variables.
     const exec::PouCode& main = codeOf(*c, "Main");
     CHECK(main.frameSize > main.initSize);
