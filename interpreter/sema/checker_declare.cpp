@@ -606,6 +606,8 @@ void Checker::layoutPou(PouInfo* pou) {
         if (pou->property) resultSpec = pou->isSetter ? nullptr : pou->property->type.get();
         if (resultSpec) {
             pou->resultType = resolveTypeSpec(resultSpec, pou->name);
+            if (isFlexibleRef(pou->resultType))  // returned as an 8-byte value: no bounds (decision 0402)
+                error(diag::E0407, resultSpec->loc, "a REF_TO ARRAY[*] cannot be a result type");
             if (pou->resultType) {
                 auto v = std::make_unique<VarSym>();
                 // A function renamed to its qualified name (decision 0325) still
