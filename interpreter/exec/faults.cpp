@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/exec/call_nodes.h"
+#include "interpreter/exec/flex_ref_nodes.h"
 #include "interpreter/exec/heap_nodes.h"
 #include "stdlib/conversions.h"
 
@@ -62,6 +63,33 @@ uint8_t* Index1Place::outOfRange(Ctx& c, int64_t value) {
 }
 
 uint8_t* FlexIndexPlace::outOfRange(Ctx& c, int64_t value, int64_t lo, int64_t hi) {
+    c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(at(c, site)), at(c, site).line, fmt::format("subscript {} outside {}..{}", value, lo, hi), at(c, site).file, at(c, site).col);
+    return sink(c);
+}
+
+namespace {
+void reportNullFlexRef(Ctx& c, const Site& site) {
+    c.m->handler->onFault(rt::DiagCode::NullPointer, pouOf(at(c, site)), at(c, site).line, "dereference of a NULL REF_TO ARRAY[*]",
+                          at(c, site).file, at(c, site).col);
+}
+}  // namespace
+
+uint8_t* FlexRefDesc::unbound(Ctx& c) {
+    reportNullFlexRef(c, site);
+    // An empty array (bounds 0..-1) whose address is the sink itself: a
+    // FOR over its bounds does nothing, and no element is ever reached.
+    uint8_t* d = sink(c);
+    storeAs<uint8_t*>(d, d);
+    for (size_t k = 0; k < dims; ++k) storeAs<int64_t>(d + 16 + 16 * k, -1);
+    return d;
+}
+
+uint8_t* FlexRefIndexPlace::unbound(Ctx& c) {
+    reportNullFlexRef(c, site);
+    return sink(c);
+}
+
+uint8_t* FlexRefIndexPlace::outOfRange(Ctx& c, int64_t value, int64_t lo, int64_t hi) {
     c.m->handler->onFault(rt::DiagCode::ArrayBounds, pouOf(at(c, site)), at(c, site).line, fmt::format("subscript {} outside {}..{}", value, lo, hi), at(c, site).file, at(c, site).col);
     return sink(c);
 }

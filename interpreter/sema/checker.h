@@ -287,6 +287,9 @@ private:
     void warnConstantComparison(ast::Op op, const Checked& a, const Checked& b, const ast::Loc& loc);
     Checked foldIfConst(Checked r, std::initializer_list<const Checked*> operands);
     exec::Stmt* assignChecked(Checked target, Checked value, const ast::Loc& loc);
+    // REF_TO ARRAY[*] (checker_flex_ref.cpp, decision 0402)
+    Checked derefFlexibleRef(const Checked& ref, const ast::Loc& loc);
+    exec::Stmt* assignFlexibleRef(const Checked& target, const Checked& value, const ast::Loc& loc);
     void markWritten(const Checked& target, const ast::Loc& loc);
     int labelId(const std::string& upperName);
     // True while checking the body or a method of `fb` (or of an FB derived from it).

@@ -606,6 +606,8 @@ void Checker::layoutPou(PouInfo* pou) {
         if (pou->property) resultSpec = pou->isSetter ? nullptr : pou->property->type.get();
         if (resultSpec) {
             pou->resultType = resolveTypeSpec(resultSpec, pou->name);
+            if (isFlexibleRef(pou->resultType))  // returned as an 8-byte value: no bounds (decision 0402)
+                error(diag::E0407, resultSpec->loc, "a REF_TO ARRAY[*] cannot be a result type");
             if (pou->resultType) {
                 auto v = std::make_unique<VarSym>();
                 // A function renamed to its qualified name (decision 0325) still
@@ -792,6 +794,10 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 if (t->kind == TK::Array && t->flexible && block.section != ast::VarSection::InOut && !flexibleInput)
                     error(diag::E0407, loc, "ARRAY[*] is only allowed in VAR_IN_OUT and VAR_INPUT");
                 if (flexibleInput) v->constant = true;
+                // A REF_TO ARRAY[*] is copied by its descriptor only where an
+                // assignment stores it (decision 0402): not as an input or output.
+                if (isFlexibleRef(t) && (block.section == ast::VarSection::Input || block.section == ast::VarSection::Output))
+                    error(diag::E0407, loc, "a REF_TO ARRAY[*] can be a VAR, VAR_TEMP, VAR_IN_OUT, member or global variable, not an input or output");
                 const bool byRef = block.section == ast::VarSection::InOut || flexibleInput;
                 // ARRAY[*]: address and bounds (docs/decisions/0077); other in-outs: an address.
                 const uint32_t size = byRef ? (t->flexible ? 8 + 16 * static_cast<uint32_t>(t->dims.size()) : 8) : t->size;

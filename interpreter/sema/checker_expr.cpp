@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/exec/class_part_nodes.h"
+#include "interpreter/exec/flex_ref_nodes.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/expr_observer.h"
 #include "interpreter/sema/fuse.h"
@@ -877,6 +878,15 @@ Checked Checker::checkIndex(const ast::Expr& e) {
         n->desc = base.flexDesc;
         n->elemSize = t->elem->size;
         n->site = site(e.loc);
+        // ref^[i] of a REF_TO ARRAY[*]: the same, after its NULL test (decision 0402).
+        auto* viaRef = dynamic_cast<exec::FlexRefDesc*>(base.flexDesc);
+        exec::FlexRefIndexPlace* r = nullptr;
+        if (viaRef) {
+            r = pool().make<exec::FlexRefIndexPlace>();
+            r->slot = viaRef->slot;
+            r->elemSize = n->elemSize;
+            r->site = n->site;
+        }
         Checked c;
         c.ok = true;
         c.loc = e.loc;
@@ -895,7 +905,8 @@ Checked Checker::checkIndex(const ast::Expr& e) {
             c.hasCall = c.hasCall || ix.hasCall;
             n->index.push_back(settle(ix).node);
         }
-        c.node = loadFrom(n, c.type);
+        if (r) r->index = n->index;
+        c.node = loadFrom(r ? static_cast<exec::Expr*>(r) : n, c.type);
         c.node->type = c.type;
         return c;
     }
@@ -1020,6 +1031,7 @@ Checked Checker::checkExprOfKind(const ast::Expr& e) {
                 error(diag::E0201, e.loc, fmt::format("'^' needs a POINTER, not {}", typeName(p.type)));
                 return bad(e.loc);
             }
+            if (isFlexibleRef(p.type)) return derefFlexibleRef(p, e.loc);
             Checked c;
             c.ok = true;
             c.loc = e.loc;

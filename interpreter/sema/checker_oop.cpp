@@ -312,6 +312,7 @@ Checked Checker::addressOf(const ast::Expr& e, const char* fn) {
     c.type = types().pointer(v.type);
     c.node = pool().make<exec::AddressOf>(v.node);
     c.node->type = c.type;
+    c.flexDesc = v.flexDesc;  // REF(arr) of an ARRAY[*]: its bounds come from its descriptor (decision 0402)
     return c;
 }
 

@@ -113,6 +113,7 @@ exec::Stmt* Checker::assignChecked(Checked target, Checked value, const ast::Loc
         return nullptr;
     }
     const Type* t = target.type;
+    if (isFlexibleRef(t)) return assignFlexibleRef(target, value, loc);
     // An integer converts to an enumeration implicitly (a warning, an error with
     // --strict or {attribute 'strict'}: coerce); another enumeration never does.
     if (t->kind == TK::Enum && value.type && value.type->kind == TK::Enum && value.type != t && value.type->base && t->base) {

@@ -208,9 +208,9 @@ const Type* TypeTable::array(const Type* elem, std::vector<ArrayDim> dims, bool 
     for (size_t i = 0; i < dims.size(); ++i) {
         count *= static_cast<uint64_t>(std::max<int64_t>(dims[i].count(), 0));
         if (i) name += ",";
-        name += std::to_string(dims[i].lo) + ".." + std::to_string(dims[i].hi);
+        // ARRAY[*, *]: every dimension is open (its placeholder bounds are not the array's).
+        name += flexible ? std::string("*") : std::to_string(dims[i].lo) + ".." + std::to_string(dims[i].hi);
     }
-    if (flexible) name += "*";
     name += "] OF " + elem->name;
     t.name = name;
     t.dims = std::move(dims);
@@ -230,6 +230,9 @@ const Type* TypeTable::indirect(TK kind, const Type* target, std::map<const Type
     t.name = (kind == TK::Pointer ? "POINTER TO " : "REFERENCE TO ") + target->name;
     t.target = target;
     t.size = 8;
+    // REF_TO ARRAY[*]: the address and the bounds, the descriptor of an
+    // ARRAY[*] parameter (decision 0402).
+    if (kind == TK::Pointer && target->kind == TK::Array && target->flexible) t.size = 8 + 16 * static_cast<uint32_t>(target->dims.size());
     t.align = 8;
     storage_.push_back(t);
     cache[target] = &storage_.back();
@@ -246,6 +249,10 @@ Type* TypeTable::create(Type t) {
 }
 
 std::string typeName(const Type* t) { return t ? t->name : std::string("?"); }
+
+bool isFlexibleRef(const Type* t) {
+    return t && t->kind == TK::Pointer && t->target && t->target->kind == TK::Array && t->target->flexible;
+}
 
 bool isBlockOrExtends(const Type* t, const Type* base) {
     if (!t || !base || t->kind != TK::FunctionBlock || base->kind != TK::FunctionBlock) return false;

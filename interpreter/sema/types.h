@@ -63,7 +63,7 @@ struct Type {
     // Array
     const Type* elem = nullptr;
     std::vector<ArrayDim> dims;        // empty dims + flexible = ARRAY[*]
-    bool flexible = false;             // ARRAY[*] (VAR_IN_OUT only)
+    bool flexible = false;             // ARRAY[*] (VAR_IN_OUT, VAR_INPUT; REF_TO ARRAY[*], decision 0402)
     uint64_t elemCount = 0;
     // Struct / FunctionBlock
     std::vector<Field> fields;
@@ -168,5 +168,7 @@ bool sameType(const Type* a, const Type* b);
 // `t` is the function block `base` or one that EXTENDS it (at any depth): an
 // instance CODESYS accepts where a `base` is expected (VAR_IN_OUT, REF=).
 bool isBlockOrExtends(const Type* t, const Type* base);
+// REF_TO ARRAY[*] OF x: holds an address and bounds (decision 0402).
+bool isFlexibleRef(const Type* t);
 
 }  // namespace strun::sema
