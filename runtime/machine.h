@@ -226,10 +226,7 @@ private:
 
     // Folds the ticks counted so far into base_ and grants the ticks until
     // the first one whose time reaches the deadline (at most kTickPoll).
-    // Always inline: countdownExpired() is compiled in many files and the
-    // linker keeps one copy; in some GCC called this out of line (+0.09 %
-    // instructions on loop workloads, session 15).
-    [[gnu::always_inline]] void regrant() {
+    void regrant() {
         const PlcTime t = time();
         base_ = t;
         const PlcTime d = deadline.load(std::memory_order_relaxed);
