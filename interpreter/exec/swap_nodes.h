@@ -46,8 +46,7 @@ private:
     // The element's position from the first (0-based, as OpElem::get
     // computes it); count or more when the subscript is out of range.
     [[gnu::always_inline]] static uint64_t elemSlot(Ctx& c, const OpElem<T>& e) {
-        int64_t i = static_cast<int32_t>(static_cast<uint32_t>(loadAs<int32_t>(c.*e.indexBase + e.indexOff)) + static_cast<uint32_t>(e.indexAdd));
-        return static_cast<uint64_t>(i) - static_cast<uint64_t>(e.lo);
+        return static_cast<uint64_t>(e.subscript(c)) - static_cast<uint64_t>(e.lo);
     }
     // A subscript out of range: the three statements as the Block runs them
     // (the first is already ticked), each reporting its own fault.

@@ -28,9 +28,6 @@ struct StringCaseKey final : Expr {
     }
 };
 
-}  // namespace strun::exec
-
-namespace strun::exec {
 
 // A CHAR (WCHAR) where a STRING (WSTRING) is expected (IEC Ed.3, SIMATIC AX:
 // `_c : STRING; _c := str[i];`): the one-character string, in a temporary of
@@ -48,9 +45,6 @@ struct CharAsString final : Expr {
     }
 };
 
-}  // namespace strun::exec
-
-namespace strun::exec {
 
 // s[i] on a STRING (WSTRING) in a SIMATIC AX project: the i-th character,
 // i from 1 to the declared length. A position outside reads the NUL
