@@ -494,6 +494,23 @@ struct BindArrayDesc final : Stmt {
 };
 
 // a[i, j] on an ARRAY[*] parameter: bounds and strides from the descriptor.
+// The element number (row-major, from 0) that the subscripts `index` name in
+// the array described by `d` ({ address, lo0, hi0, lo1, hi1, ... }). False,
+// with the subscript and the bounds it broke in v / lo / hi, when one is out
+// of range. Shared by ARRAY[*] parameters and REF_TO ARRAY[*] (flex_ref_nodes.h).
+[[gnu::always_inline]] inline bool flexElement(Ctx& c, const uint8_t* d, const std::vector<Expr*>& index, uint64_t& element,
+                                               int64_t& v, int64_t& lo, int64_t& hi) {
+    element = 0;
+    for (size_t k = 0; k < index.size(); ++k) {
+        lo = loadAs<int64_t>(d + 8 + 16 * k);
+        hi = loadAs<int64_t>(d + 16 + 16 * k);
+        v = index[k]->i(c);
+        if (__builtin_expect(v < lo || v > hi, 0)) return false;
+        element = element * (static_cast<uint64_t>(hi) - static_cast<uint64_t>(lo) + 1) + (static_cast<uint64_t>(v) - static_cast<uint64_t>(lo));
+    }
+    return true;
+}
+
 struct FlexIndexPlace final : Expr {
     Expr* desc;
     std::vector<Expr*> index;
@@ -501,16 +518,10 @@ struct FlexIndexPlace final : Expr {
     Site site;
     uint8_t* addr(Ctx& c) override {
         uint8_t* d = desc->addr(c);
-        size_t n = index.size();
-        uint64_t offset = 0;
-        for (size_t k = 0; k < n; ++k) {
-            int64_t lo = loadAs<int64_t>(d + 8 + 16 * k), hi = loadAs<int64_t>(d + 16 + 16 * k);
-            int64_t v = index[k]->i(c);
-            if (__builtin_expect(v < lo || v > hi, 0)) return outOfRange(c, v, lo, hi);
-            offset = offset * (static_cast<uint64_t>(hi) - static_cast<uint64_t>(lo) + 1) + (static_cast<uint64_t>(v) - static_cast<uint64_t>(lo));
-        }
-        uint8_t* base = loadAs<uint8_t*>(d);
-        return base + offset * elemSize;
+        uint64_t element;
+        int64_t v, lo, hi;
+        if (!flexElement(c, d, index, element, v, lo, hi)) return outOfRange(c, v, lo, hi);
+        return loadAs<uint8_t*>(d) + element * elemSize;
     }
     uint8_t* outOfRange(Ctx& c, int64_t v, int64_t lo, int64_t hi);
 };

@@ -36,14 +36,10 @@ struct FlexRefIndexPlace final : Expr {
         uint8_t* d = slot->addr(c);
         uint8_t* base = loadAs<uint8_t*>(d);
         if (__builtin_expect(base == nullptr, 0)) return unbound(c);
-        uint64_t offset = 0;
-        for (size_t k = 0; k < index.size(); ++k) {
-            int64_t lo = loadAs<int64_t>(d + 8 + 16 * k), hi = loadAs<int64_t>(d + 16 + 16 * k);
-            int64_t v = index[k]->i(c);
-            if (__builtin_expect(v < lo || v > hi, 0)) return outOfRange(c, v, lo, hi);
-            offset = offset * (static_cast<uint64_t>(hi) - static_cast<uint64_t>(lo) + 1) + (static_cast<uint64_t>(v) - static_cast<uint64_t>(lo));
-        }
-        return base + offset * elemSize;
+        uint64_t element;
+        int64_t v, lo, hi;
+        if (!flexElement(c, d, index, element, v, lo, hi)) return outOfRange(c, v, lo, hi);
+        return base + element * elemSize;
     }
     uint8_t* unbound(Ctx& c);
     uint8_t* outOfRange(Ctx& c, int64_t v, int64_t lo, int64_t hi);
