@@ -250,7 +250,33 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
     return storeTo(target.node, types().elementary(TK::LWord), cast);
 }
 
+// An inferred temporary (VarSym::inferred) named by `target` that no
+// assignment has typed yet, else null.
+VarSym* Checker::pendingInferredTemp(const ast::Expr& target) {
+    if (target.kind != ast::ExprKind::Name) return nullptr;
+    VarSym* v = lookupVar(upper(target.name));
+    return v && v->inferredPending ? v : nullptr;
+}
+
+// The first assignment of an inferred temporary: it takes the value's type
+// and a place in the frame of the body being checked, for the whole body.
+void Checker::fixInferredTemp(VarSym* v, const Type* t) {
+    frameTop_ = alignFrameTop(frameTop_, std::max<uint32_t>(t->align, 1));
+    v->offset = allocTemp(t->size) - frameBias_;
+    v->type = t;
+    v->inferredPending = false;
+}
+
 exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
+    if (s.kind == ast::StmtKind::Assign)
+        if (VarSym* temp = pendingInferredTemp(*s.target)) {
+            Checked value = checkExpr(*s.expr);
+            if (!value.ok) return nullptr;
+            value = settle(value);
+            fixInferredTemp(temp, value.type);
+            Checked target = checkExpr(*s.target);
+            return target.ok ? assignChecked(target, value, s.loc) : nullptr;
+        }
     if (pou_ && pou_->result) {
         // F.x := ... and F[i] := ... assign (part of) the function result too.
         const ast::Expr* root = s.target.get();
