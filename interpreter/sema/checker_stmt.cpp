@@ -272,6 +272,9 @@ exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
         if (VarSym* temp = pendingInferredTemp(*s.target)) {
             Checked value = checkExpr(*s.expr);
             if (!value.ok) return nullptr;
+            // `LD 40`: an untyped integer literal is an INT where it fits (decision 0415).
+            if (value.untypedInt && value.isConst && value.constInt >= -32768 && value.constInt <= 32767)
+                value = coerce(value, types().elementary(TK::Int), s.expr->loc, "current result");
             value = settle(value);
             fixInferredTemp(temp, value.type);
             Checked target = checkExpr(*s.target);

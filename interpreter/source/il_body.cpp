@@ -167,6 +167,7 @@ struct Cr {
     std::vector<Frag> frags;
     bool defined = false;
     bool stable = false;  // a literal or a temporary
+    bool temp = false;    // a temporary: its lines are those of the instruction reading it
 };
 
 class Translator {
@@ -429,7 +430,6 @@ private:
             }
         }
     }
-    std::vector<Frag> crPieces() const { return cr.frags; }
 
     std::string declareTemp(int at, const std::string& name) {
         const Instr& in = code[at];
@@ -449,11 +449,19 @@ private:
         if (cr.stable) return;
         const std::string t = declareTemp(k, around.prefix + "cr" + std::to_string(++temps));
         std::vector<Frag> s{{t + " := ", k}};
-        for (const Frag& f : cr.frags) s.push_back(f);
+        for (const Frag& f : crAt(k)) s.push_back(f);
         s.push_back({";", k});
         emit(s);
         cr.frags = {{t, k}};
-        cr.stable = true;
+        cr.stable = cr.temp = true;
+    }
+
+    // The CR as instruction k reads it: a temporary is named at k's line, so
+    // that a type error of its use (`ST`, a condition) is at the instruction
+    // using it; an expression keeps the lines of its operators.
+    std::vector<Frag> crAt(int k) const {
+        if (!cr.temp) return cr.frags;
+        return {{cr.frags[0].text, k}};
     }
 
     // Before a statement of instruction k that reads the CR `uses` times:
@@ -465,7 +473,7 @@ private:
     std::vector<Frag> condition(int k) {
         const Instr& in = code[k];
         std::vector<Frag> s{{in.onFalse ? "IF NOT (" : "IF (", k}};
-        for (const Frag& f : cr.frags) s.push_back(f);
+        for (const Frag& f : crAt(k)) s.push_back(f);
         s.push_back({") THEN ", k});
         return s;
     }
@@ -481,7 +489,7 @@ private:
         const std::string t = labelTemp(label);
         if (cr.frags.size() == 1 && cr.frags[0].text == t) return;
         s.push_back({t + " := ", k});
-        for (const Frag& f : cr.frags) s.push_back(f);
+        for (const Frag& f : crAt(k)) s.push_back(f);
         s.push_back({"; ", k});
     }
 
@@ -509,7 +517,7 @@ private:
                                                 "' is reached from the line before it without a current result, but its instructions read one");
                         assignLabel(k, k, s);
                     }
-                    cr = {{{labelTemp(k), k}}, true, true};
+                    cr = {{{labelTemp(k), k}}, true, true, true};
                 } else {
                     cr = {};
                 }
@@ -523,6 +531,7 @@ private:
                 if (!in.negated && isLiteral(in.operand)) cr.frags[0].text = in.operand;
                 cr.defined = true;
                 cr.stable = isLiteral(in.operand);
+                cr.temp = false;
                 return;
             case Op::Store:
             case Op::Set:
@@ -533,15 +542,15 @@ private:
                 std::vector<Frag> s;
                 if (in.op == Op::Store) {
                     s.push_back({in.operand + " := " + (in.negated ? "NOT (" : ""), k});
-                    for (const Frag& f : cr.frags) s.push_back(f);
+                    for (const Frag& f : crAt(k)) s.push_back(f);
                     s.push_back({in.negated ? ");" : ";", k});
                 } else if (in.op == Op::FbInput) {
                     s.push_back({in.operand + "(" + in.param + " := ", k});
-                    for (const Frag& f : cr.frags) s.push_back(f);
+                    for (const Frag& f : crAt(k)) s.push_back(f);
                     s.push_back({");", k});
                 } else {
                     s.push_back({"IF ", k});
-                    for (const Frag& f : cr.frags) s.push_back(f);
+                    for (const Frag& f : crAt(k)) s.push_back(f);
                     s.push_back({" THEN " + in.operand + (in.op == Op::Set ? " := TRUE" : " := FALSE") + "; END_IF;", k});
                 }
                 emit(s);
@@ -550,19 +559,19 @@ private:
             case Op::Binary: {
                 if (!needCr(k)) return;
                 std::vector<Frag> f{{"(", k}};
-                for (const Frag& p : cr.frags) f.push_back(p);
+                for (const Frag& p : crAt(k)) f.push_back(p);
                 f.push_back({" " + in.infix + " " + (in.negated ? "NOT (" + in.operand + "))" : in.operand + ")"), k});
                 cr.frags = std::move(f);
-                cr.stable = false;
+                cr.stable = cr.temp = false;
                 return;
             }
             case Op::Not: {
                 if (!needCr(k)) return;
                 std::vector<Frag> f{{"NOT (", k}};
-                for (const Frag& p : cr.frags) f.push_back(p);
+                for (const Frag& p : crAt(k)) f.push_back(p);
                 f.push_back({")", k});
                 cr.frags = std::move(f);
-                cr.stable = false;
+                cr.stable = cr.temp = false;
                 return;
             }
             case Op::Jump: {
@@ -619,7 +628,7 @@ private:
                 std::vector<Frag> f{{"(", k}};
                 for (const Frag& p : g.outer.frags) f.push_back(p);
                 f.push_back({" " + open.infix + (open.negated ? " NOT (" : " ("), k});
-                for (const Frag& p : cr.frags) f.push_back(p);
+                for (const Frag& p : crAt(k)) f.push_back(p);
                 f.push_back({"))", k});
                 cr = {std::move(f), true, false};
                 return;
@@ -627,7 +636,7 @@ private:
             case Op::Function: {
                 if (!needCr(k)) return;
                 std::vector<Frag> f{{in.operand + "(", k}};
-                for (const Frag& p : cr.frags) f.push_back(p);
+                for (const Frag& p : crAt(k)) f.push_back(p);
                 std::string args;
                 if (!in.param.empty())
                     for (const std::string& a : splitOperands(in.param)) args += ", " + a;
