@@ -329,6 +329,7 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
         error(diag::E0008, loc, "the current result is read before any instruction sets it");
         return bad(loc);
     }
+    if (v->inferredConflict) return bad(loc);
     v->used = true;
     if (v->global) v->global->used = true;
     Checked c;

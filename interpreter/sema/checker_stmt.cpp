@@ -252,10 +252,10 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
 
 // An inferred temporary (VarSym::inferred) named by `target` that no
 // assignment has typed yet, else null.
-VarSym* Checker::pendingInferredTemp(const ast::Expr& target) {
+VarSym* Checker::inferredTemp(const ast::Expr& target) {
     if (target.kind != ast::ExprKind::Name) return nullptr;
     VarSym* v = lookupVar(upper(target.name));
-    return v && v->inferredPending ? v : nullptr;
+    return v && v->inferred ? v : nullptr;
 }
 
 // The first assignment of an inferred temporary: it takes the value's type
@@ -268,8 +268,19 @@ void Checker::fixInferredTemp(VarSym* v, const Type* t) {
 }
 
 exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
-    if (s.kind == ast::StmtKind::Assign)
-        if (VarSym* temp = pendingInferredTemp(*s.target)) {
+    VarSym* temp = s.kind == ast::StmtKind::Assign ? inferredTemp(*s.target) : nullptr;
+    if (temp && !temp->inferredPending) {
+        // A value that does not fit the type an earlier path gave it (a label
+        // reached with a BOOL and an INT): one message here, none at its reads.
+        const size_t before = log_.messages().size();
+        Checked target = checkExpr(*s.target);
+        Checked value = checkExpr(*s.expr);
+        if (!target.ok || !value.ok) return nullptr;
+        exec::Stmt* st = assignChecked(target, value, s.loc);
+        if (log_.messages().size() != before && !st) temp->inferredConflict = true;
+        return st;
+    }
+    if (temp) {
             Checked value = checkExpr(*s.expr);
             if (!value.ok) return nullptr;
             // `LD 40`: an untyped integer literal is an INT where it fits (decision 0415).

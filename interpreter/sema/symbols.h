@@ -62,6 +62,7 @@ struct VarSym {
     // lives in the frame of the body that assigns it (Checker::fixInferredTemp).
     bool inferred = false;
     bool inferredPending = false;
+    bool inferredConflict = false;  // a value of another type was assigned (reported there): reads say nothing more
     // Global of a list with {attribute 'qualified_only'}: only `LIST.name` names it.
     std::string qualifiedOnlyList;
     // Global of a named global list (GVL): the list's name. `sharedName` when

@@ -459,9 +459,15 @@ private:
     // The CR as instruction k reads it: a temporary is named at k's line, so
     // that a type error of its use (`ST`, a condition) is at the instruction
     // using it; an expression keeps the lines of its operators.
+    // In parentheses opened on k's line: a node of k's (`ADD`: the binary
+    // node, located where its left operand starts; `ST`: the assigned value)
+    // is located at k's line, the operands inside keep theirs.
     std::vector<Frag> crAt(int k) const {
-        if (!cr.temp) return cr.frags;
-        return {{cr.frags[0].text, k}};
+        std::vector<Frag> f{{"(", k}};
+        if (cr.temp) f.push_back({cr.frags[0].text, k});
+        else f.insert(f.end(), cr.frags.begin(), cr.frags.end());
+        f.push_back({")", k});
+        return f;
     }
 
     // Before a statement of instruction k that reads the CR `uses` times:
@@ -560,7 +566,7 @@ private:
                 if (!needCr(k)) return;
                 std::vector<Frag> f{{"(", k}};
                 for (const Frag& p : crAt(k)) f.push_back(p);
-                f.push_back({" " + in.infix + " " + (in.negated ? "NOT (" + in.operand + "))" : in.operand + ")"), k});
+                f.push_back({" " + in.infix + " " + (in.negated ? "NOT (" + in.operand + "))" : "(" + in.operand + "))"), k});
                 cr.frags = std::move(f);
                 cr.stable = cr.temp = false;
                 return;
@@ -576,7 +582,10 @@ private:
             }
             case Op::Jump: {
                 const bool toLive = liveIn[in.target];
-                if ((in.conditional || toLive) && !needCr(k)) return;
+                if (!in.conditional && toLive && !cr.defined)
+                    return fail(in, "the instructions after label '" + code[in.target].operand + "' read the current result, but '" + in.text +
+                                        "' jumps there without one (load a value with LD first)");
+                if (in.conditional && !needCr(k)) return;
                 std::vector<Frag> s;
                 if (in.conditional) {
                     beforeStatement(k, toLive ? 2 : 1);
@@ -625,9 +634,10 @@ private:
                 Group g = groups.back();
                 groups.pop_back();
                 const Instr& open = code[g.open];
-                std::vector<Frag> f{{"(", k}};
-                for (const Frag& p : g.outer.frags) f.push_back(p);
-                f.push_back({" " + open.infix + (open.negated ? " NOT (" : " ("), k});
+                std::vector<Frag> f{{"(", g.open}, {"(", g.open}};  // located at the `AND(` line
+                if (g.outer.temp) f.push_back({g.outer.frags[0].text, g.open});
+                else f.insert(f.end(), g.outer.frags.begin(), g.outer.frags.end());
+                f.push_back({") " + open.infix + (open.negated ? " NOT (" : " ("), k});
                 for (const Frag& p : crAt(k)) f.push_back(p);
                 f.push_back({"))", k});
                 cr = {std::move(f), true, false};
