@@ -8,6 +8,7 @@
 #include "interpreter/source/il_body.h"
 
 #include <cctype>
+#include <cstring>
 #include <map>
 #include <vector>
 
@@ -310,27 +311,17 @@ private:
             return;
         }
         if (isBlockInputOperator(w)) { in.op = Op::FbInput; in.param = w; needOperand(); return; }
-        if (w == "JMP" || w == "JMPC" || w == "JMPCN") {
-            in.op = Op::Jump;
-            in.conditional = w != "JMP";
-            in.onFalse = w == "JMPCN";
-            needOperand();
-            return;
-        }
-        if (w == "CAL" || w == "CALC" || w == "CALCN") {
-            in.op = Op::Call;
-            in.conditional = w != "CAL";
-            in.onFalse = w == "CALCN";
-            needOperand();
+        // JMP/CAL/RET and their C (CR TRUE) and CN (CR FALSE) forms.
+        static const std::pair<const char*, Op> flow[] = {{"JMP", Op::Jump}, {"CAL", Op::Call}, {"RET", Op::Return}};
+        for (const auto& [base, op] : flow) {
+            if (w != base && w != std::string(base) + "C" && w != std::string(base) + "CN") continue;
+            in.op = op;
+            in.conditional = w != base;
+            in.onFalse = w.size() == std::strlen(base) + 2;
+            if (op == Op::Return) noOperand();
+            else needOperand();
             // `CAL fb` calls it without arguments.
-            if (!failed && in.operand.find('(') == std::string::npos) in.operand += "()";
-            return;
-        }
-        if (w == "RET" || w == "RETC" || w == "RETCN") {
-            in.op = Op::Return;
-            in.conditional = w != "RET";
-            in.onFalse = w == "RETCN";
-            noOperand();
+            if (op == Op::Call && !failed && in.operand.find('(') == std::string::npos) in.operand += "()";
             return;
         }
         // Any other word is a function: `LIMIT 0, 100` (the CR is the first
