@@ -115,6 +115,9 @@ public:
     exec::Site site(const ast::Loc& loc);
     // A caller-frame temporary of `size` bytes for aggregate results; returns its offset.
     uint32_t allocTemp(uint32_t size);
+    // The inferred temporaries of translated IL bodies (decision 0415).
+    VarSym* inferredTemp(const ast::Expr& target);
+    void fixInferredTemp(VarSym* v, const Type* t);
     // A fresh aggregate place in the current frame's temporaries with the given type.
     exec::Expr* tempPlace(const Type* t, uint32_t* offsetOut = nullptr);
     // Bindings the operators `+` / `-` on dates and times of day delegate to.

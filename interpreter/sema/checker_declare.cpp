@@ -682,7 +682,7 @@ void Checker::layoutPou(PouInfo* pou) {
             }
     pou->code->frameInit.assign(exec::frameImageSize(pou->frameSize), 0);
     for (auto& v : pou->ownedVars) {
-        if (v->storage != Storage::Frame || v->byRef) continue;
+        if (v->storage != Storage::Frame || v->byRef || v->inferred) continue;
         uint8_t* p = pou->code->frameInit.data() + v->offset;
         writeDefault(p, v->type);
         if (isAddressInit(v.get())) { pou->frameAddressInits.push_back({v.get(), nullptr, v->decl->init->expr.get()}); continue; }
@@ -766,6 +766,14 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                 v->decl = &decl;
                 v->owner = pou;
                 v->hidden = hasAttribute(decl.pragmas, "strun_hidden");
+                if (hasAttribute(decl.pragmas, "strun_inferred_temp")) {
+                    // Typed and placed at its first assignment (fixInferredTemp).
+                    v->inferred = v->inferredPending = v->hidden = true;
+                    v->storage = Storage::Frame;
+                    pou->vars[key] = v.get();
+                    pou->ownedVars.push_back(std::move(v));
+                    continue;
+                }
                 if (isExternal) {
                     auto g = globals_.find(key);
                     if (g == globals_.end()) {

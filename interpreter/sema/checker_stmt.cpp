@@ -250,7 +250,47 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
     return storeTo(target.node, types().elementary(TK::LWord), cast);
 }
 
+// An inferred temporary (VarSym::inferred) named by `target` that no
+// assignment has typed yet, else null.
+VarSym* Checker::inferredTemp(const ast::Expr& target) {
+    if (target.kind != ast::ExprKind::Name) return nullptr;
+    VarSym* v = lookupVar(upper(target.name));
+    return v && v->inferred ? v : nullptr;
+}
+
+// The first assignment of an inferred temporary: it takes the value's type
+// and a place in the frame of the body being checked, for the whole body.
+void Checker::fixInferredTemp(VarSym* v, const Type* t) {
+    frameTop_ = alignFrameTop(frameTop_, std::max<uint32_t>(t->align, 1));
+    v->offset = allocTemp(t->size) - frameBias_;
+    v->type = t;
+    v->inferredPending = false;
+}
+
 exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
+    VarSym* temp = s.kind == ast::StmtKind::Assign ? inferredTemp(*s.target) : nullptr;
+    if (temp && !temp->inferredPending) {
+        // A value that does not fit the type an earlier path gave it (a label
+        // reached with a BOOL and an INT): one message here, none at its reads.
+        const size_t before = log_.messages().size();
+        Checked target = checkExpr(*s.target);
+        Checked value = checkExpr(*s.expr);
+        if (!target.ok || !value.ok) return nullptr;
+        exec::Stmt* st = assignChecked(target, value, s.loc);
+        if (log_.messages().size() != before && !st) temp->inferredConflict = true;
+        return st;
+    }
+    if (temp) {
+            Checked value = checkExpr(*s.expr);
+            if (!value.ok) return nullptr;
+            // `LD 40`: an untyped integer literal is an INT where it fits (decision 0415).
+            if (value.untypedInt && value.isConst && value.constInt >= -32768 && value.constInt <= 32767)
+                value = coerce(value, types().elementary(TK::Int), s.expr->loc, "current result");
+            value = settle(value);
+            fixInferredTemp(temp, value.type);
+            Checked target = checkExpr(*s.target);
+            return target.ok ? assignChecked(target, value, s.loc) : nullptr;
+        }
     if (pou_ && pou_->result) {
         // F.x := ... and F[i] := ... assign (part of) the function result too.
         const ast::Expr* root = s.target.get();

@@ -226,7 +226,7 @@ void warnReadBeforeWrite(const PouInfo& pou, CompileLog& log) {
     Unwritten open;
     for (const auto& v : pou.ownedVars) {
         if (v->section != ast::VarSection::Var && v->section != ast::VarSection::Temp) continue;
-        if (v->constant || v.get() == pou.result || !v->type || !isElementary(v->type->kind)) continue;
+        if (v->constant || v->inferred || v.get() == pou.result || !v->type || !isElementary(v->type->kind)) continue;
         if (!v->decl || v->decl->init || !v->decl->address.empty()) continue;
         open.emplace(upper(v->name), v.get());
     }

@@ -56,6 +56,13 @@ struct VarSym {
     // {attribute 'strun_hidden'}: a variable a graphical body's translation
     // needs for itself; --dump, --vcd, --watch and the live API leave it out.
     bool hidden = false;
+    // {attribute 'strun_inferred_temp'}: a temporary of a translated body (the
+    // current result of IL, decision 0415) whose type is that of the first
+    // value assigned to it; until then `inferredPending` and no storage. It
+    // lives in the frame of the body that assigns it (Checker::fixInferredTemp).
+    bool inferred = false;
+    bool inferredPending = false;
+    bool inferredConflict = false;  // a value of another type was assigned (reported there): reads say nothing more
     // Global of a list with {attribute 'qualified_only'}: only `LIST.name` names it.
     std::string qualifiedOnlyList;
     // Global of a named global list (GVL): the list's name. `sharedName` when

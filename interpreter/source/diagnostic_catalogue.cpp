@@ -48,10 +48,12 @@ const std::vector<CodeInfo> kCatalogue = {
      "", ""},
     {"E0008", K::Error, "not a usable source file",
      "A FILE that strun cannot read as a project source: XML that is not well-formed, XML that is not a PLCopen TC6 "
-     "project, a POU whose body is written in a language strun does not run (IL; in TwinCAT files also LD, FBD, SFC, "
+     "project, a POU whose body is written in a language strun does not run (in TwinCAT files IL, LD, FBD, SFC, "
      "CFC), an LD, FBD or SFC body of a PLCopen file that cannot be translated (an element strun does not support, a "
      "connection to a missing element, an SFC chart without initial step or with a step that can never become active; "
-     "docs/graphical.md), or a TwinCAT task "
+     "docs/graphical.md), an IL body that cannot be translated (a jump to an undefined label, an instruction that "
+     "reads the current result where no instruction sets one, a deferred operator's `(` without its `)`; decision "
+     "0415), or a TwinCAT task "
      "object (.TcTTO) whose CycleTime or Priority is not a whole number or whose PouCall names no program.",
      "", ""},
     {"E0009", K::Error, "a declaration in the wrong place",

@@ -52,6 +52,8 @@ struct PouContext {
 
     // The type of a variable of the POU or a global (upper-case lookup), or "".
     std::string typeOf(const std::string& name) const;
+    // True when the variable `name` is an instance of a standard or user function block.
+    bool isBlockInstance(const std::string& name) const;
 };
 
 // Generated ST of one body, and the hidden variables it declares.

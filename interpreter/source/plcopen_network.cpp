@@ -943,4 +943,9 @@ std::string PouContext::typeOf(const std::string& name) const {
     return g == project->globals.end() ? "" : g->second;
 }
 
+bool PouContext::isBlockInstance(const std::string& name) const {
+    const std::string type = stdlib::upperAscii(typeOf(name));
+    return !type.empty() && (standardBlocks().count(type) || project->blockOutputs.count(type));
+}
+
 }  // namespace strun::source::plcopen

@@ -3,7 +3,8 @@
 // and global variable lists (addData), configurations with resources, tasks
 // and program instances. Declarations are written as ST lines pointing at
 // the XML element they come from; ST bodies are copied with their positions,
-// LD, FBD and SFC bodies translated to ST (plcopen_network.cpp, plcopen_sfc.cpp).
+// LD, FBD and SFC bodies translated to ST (plcopen_network.cpp, plcopen_sfc.cpp),
+// IL bodies too (il_body.cpp).
 #include <cctype>
 #include <cstdio>
 #include <cstring>
@@ -11,6 +12,7 @@
 
 #include <pugixml.hpp>
 
+#include "interpreter/source/il_body.h"
 #include "interpreter/source/plcopen_graphical.h"
 #include "interpreter/source/plcopen_xml.h"
 #include "interpreter/source/xml_conversion.h"
@@ -198,11 +200,22 @@ struct PlcopenReader : XmlConversion {
         } else if (k == "SFC") {
             translateChart(*this, lang, ctx, tr);
         } else if (k == "IL") {
-            error(lang, "'" + pouName + "' has a body in IL; Instruction List is deprecated (IEC 61131-3, 4th edition) and strun does not run it: "
-                        "rewrite it in ST, LD or FBD");
+            ilBody(lang, ctx, tr);
         } else {
             error(lang, "'" + pouName + "' has a body in " + k + ", which strun does not run (it runs ST, LD, FBD and SFC)");
         }
+    }
+
+    // An IL body (<IL><xhtml:p><![CDATA[...]]>, or the text itself) translated to ST (il_body.cpp).
+    void ilBody(const pugi::xml_node& lang, PouContext& ctx, Translation& tr) {
+        std::vector<StLine> texts;
+        copyStText(*this, lang, "", texts);
+        il::Surroundings around;
+        around.prefix = "_il" + std::to_string(++ctx.bodies) + "_";
+        around.isBlockInstance = [&ctx](const std::string& name) { return ctx.isBlockInstance(name); };
+        around.fail = [this](int line, int col, const std::string& message) { result.errors.push_back({line, col, message}); };
+        for (const StLine& t : texts)
+            if (!il::translate(t.text, t.line, t.col, around, tr)) return;
     }
 
     void writeLines(const std::vector<StLine>& lines) {
