@@ -48,12 +48,11 @@ template <typename F>
 void forEachWord(std::string_view text, F&& f) {
     const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
     const size_t n = text.size();
-    bool inUsing = false;
+    size_t usingListEnd = 0;  // the ';' that ends the last `USING` list
     size_t i = 0;
     while (i < n) {
         const unsigned char kind = kWordClass[bytes[i]];
         if (kind == 0) {
-            if (bytes[i] == ';') inUsing = false;
             ++i;
             continue;
         }
@@ -61,8 +60,11 @@ void forEachWord(std::string_view text, F&& f) {
         while (i < n && kWordClass[bytes[i]] != 0) ++i;
         if (kind != 1) continue;
         const std::string_view word = text.substr(start, i - start);
-        f(word, i, inUsing);
-        if (word.size() == 5 && equalNoCase(word, "USING")) inUsing = true;
+        f(word, i, start < usingListEnd);
+        if (word.size() == 5 && (word[0] == 'U' || word[0] == 'u') && equalNoCase(word, "USING")) {
+            const size_t semicolon = text.find(';', i);
+            usingListEnd = semicolon == std::string_view::npos ? n : semicolon;
+        }
     }
 }
 
