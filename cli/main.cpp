@@ -7,8 +7,8 @@
 // Exit status: 0 ok, 1 does not compile, 2 bad command line, 3 PLC STOP/HALT.
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <iostream>
+#include <string_view>
 
 #include <CLI/CLI.hpp>
 #include <malloc.h>
@@ -51,19 +51,24 @@ int runMain(int argc, char** argv) {
     app.footer("Exit status: 0 success, 1 the project does not compile, 2 bad command line,\n"
                "3 the PLC went to STOP/HALT because of a runtime fault.\n"
                "`strun help COMMAND` or `strun COMMAND --help` shows the options of a command.");
+    // `strun run|check|test ...` registers only that command (and help): the
+    // options of the others cost ~330 000 instructions of every run (CLI11
+    // compares each new option with all before it). Their options cannot
+    // matter: after its command word, CLI11 parses only that command's
+    // options and positionals. Any other first word (an option, a mistyped
+    // or missing command, help) registers every command, for the messages
+    // that list or suggest them.
+    const std::string_view first = argc > 1 ? argv[1] : "";
+    const bool all = first != "run" && first != "check" && first != "test";
     CommandLine line;
-    CLI::App* run = addRunCommand(app, line);
-    CLI::App* check = addCheckCommand(app, line);
+    CLI::App* run = all || first == "run" ? addRunCommand(app, line) : nullptr;
+    CLI::App* check = all || first == "check" ? addCheckCommand(app, line) : nullptr;
     TestCommandLine testLine;
-    CLI::App* test = addTestCommand(app, line, testLine);
+    CLI::App* test = all || first == "test" ? addTestCommand(app, line, testLine) : nullptr;
     std::string explainCode;
-    CLI::App* explain = addExplainCommand(app, explainCode);
-    // The editor commands are not registered for run, check and test: a
-    // subcommand costs ~20 000 instructions of every start-up.
-    const bool compiling = argc > 1 && (std::strcmp(argv[1], "run") == 0 || std::strcmp(argv[1], "check") == 0 ||
-                                        std::strcmp(argv[1], "test") == 0);
-    CLI::App* lsp = compiling ? nullptr : addLspCommand(app);
-    CLI::App* debug = compiling ? nullptr : addDebugCommand(app);
+    CLI::App* explain = all ? addExplainCommand(app, explainCode) : nullptr;
+    CLI::App* lsp = all ? addLspCommand(app) : nullptr;
+    CLI::App* debug = all ? addDebugCommand(app) : nullptr;
     CLI::App* help = app.add_subcommand("help", "show the commands, or the options of COMMAND");
     std::string helpTopic;
     help->add_option("COMMAND", helpTopic, "run, check, test, explain")->type_name("COMMAND");
@@ -83,10 +88,10 @@ int runMain(int argc, char** argv) {
         return reportParseError(app, e);
     }
     if (help->parsed()) return manPage ? printManPage(app, std::cout) : printHelp(app, helpTopic);
-    if (run->parsed()) return runCommand(line);
-    if (check->parsed()) return checkCommand(line);
-    if (test->parsed()) return testCommand(line, testLine);
-    if (explain->parsed()) return explainCommand(explainCode);
+    if (run && run->parsed()) return runCommand(line);
+    if (check && check->parsed()) return checkCommand(line);
+    if (test && test->parsed()) return testCommand(line, testLine);
+    if (explain && explain->parsed()) return explainCommand(explainCode);
     if (lsp && lsp->parsed()) return lspCommand();
     if (debug && debug->parsed()) return debugCommand();
     return kExitUsage;

@@ -29,8 +29,9 @@ struct LibraryName {
     std::string_view library;  // "" for the standard blocks of stdlib/st
     char kind;  // F function, B function block, I interface, P program, N namespace, T type,
                 // E enumeration value, G global variable, X native function, U not provided by strun,
-                // Q a qualified_only namespace (its names are reached only as `Q.x`, decision 0323)
-    int file;   // index into embeddedSources() (F B I P N T E G), -1 (X U)
+                // Q a qualified_only namespace (its names are reached only as `Q.x`, decision 0323),
+                // or a dotted one (`System.DateTime`: `upper` is its first name, `written` the path)
+    int file;   // index into embeddedSources() (F B I P N T E G Q), -1 (X U)
 };
 
 std::span<const LibraryInfo> libraries();
@@ -43,6 +44,13 @@ std::span<const LibraryName> libraryNames();
 // a word without building anything at start-up.
 std::span<const uint64_t, 256> libraryNameMasksByFirst();
 std::span<const uint64_t, 256> libraryNameMasksByLast();
+
+// What the code of embedded file `file` needs, computed at build time by the
+// rule a project's text is scanned with (stdlib/library_mentions.h; comments
+// and strings do not count): the other files it selects, and the libraries
+// whose native functions it calls.
+std::span<const int> libraryFileUses(size_t file);
+std::span<const std::string_view> libraryFileNatives(size_t file);
 
 // The rows for one name (any case); empty when no library knows it.
 std::span<const LibraryName> libraryNamesFor(std::string_view name);

@@ -3,9 +3,12 @@
 // so a project gets only the files that declare a name it mentions, plus,
 // transitively, the files those mention (decision 0150), and only the native
 // functions of the libraries it names (decision 0220). What each file declares
-// comes from the library registry (stdlib/library_registry.h), computed at
-// build time. The scan is lexical and case-insensitive: a name in a comment or
-// string may pull in a file it does not need, never the reverse.
+// and what each library file needs come from the library registry
+// (stdlib/library_registry.h), computed at build time. The scan of the
+// project is lexical and case-insensitive, by the rule of
+// stdlib/library_mentions.h (decision 0421: functions select when called,
+// namespaces when qualified): a name in a comment or string may pull in a
+// file it does not need, never the reverse.
 #pragma once
 
 #include <string>

@@ -26,6 +26,8 @@
 #include <string>
 #include <vector>
 
+#include "stdlib/library_mentions.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -121,8 +123,9 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
     // where the project writes `CAA.x`): a project's own COUNT or HANDLE must
     // not pull in CAA.COUNT (decision 0323).
     int namespaceDepth = 0, qualifiedNamespaceDepth = 0;  // 0: not inside a qualified_only namespace
+    // The row of a dotted namespace is found by its first name (`System`).
     auto add = [&](const std::string& w, char kind) {
-        if (qualifiedNamespaceDepth == 0) out.push_back({upperOf(w), w, library, kind, file});
+        if (qualifiedNamespaceDepth == 0) out.push_back({upperOf(w.substr(0, w.find('.'))), w, library, kind, file});
     };
     auto at = [&](size_t k) -> const Token* { return k < tk.size() ? &tk[k] : nullptr; };
     auto isChar = [&](size_t k, char c) { const Token* t = at(k); return t && !t->word && t->text[0] == c; };
@@ -161,9 +164,15 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
                     ++j;
                 if (at(j) && at(j)->word) name = at(j)->text;
                 // A dotted namespace (SIMATIC AX's System.Timer) is always written
-                // with its dot, in `USING System.Timer;` too: kind Q, so that the
-                // word "system" in a comment selects nothing.
+                // with its dot, in `USING System.Timer;` too: kind Q, recorded
+                // under its first name and written whole, so that only its whole
+                // path selects it (not "system" in a comment, not System.Strings).
                 const bool dotted = u == "NAMESPACE" && isChar(j + 1, '.');
+                size_t last = j;
+                while (u == "NAMESPACE" && isChar(last + 1, '.') && at(last + 2) && at(last + 2)->word) {
+                    name += "." + at(last + 2)->text;
+                    last += 2;
+                }
                 const bool qualifiedNamespace = u == "NAMESPACE" && (pendingQualified || dotted);
                 add(name, u == "FUNCTION_BLOCK" ? 'B' : u == "FUNCTION" ? 'F' : u == "INTERFACE" ? 'I' : u == "PROGRAM" ? 'P' : qualifiedNamespace ? 'Q' : 'N');
                 if (u == "NAMESPACE") {
@@ -171,7 +180,7 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
                     if (pendingQualified && qualifiedNamespaceDepth == 0) qualifiedNamespaceDepth = namespaceDepth;
                     pendingQualified = false;
                 }
-                k = j;
+                k = last;
             }
             continue;
         }
@@ -200,6 +209,75 @@ void scanDeclarations(const std::string& text, const std::string& library, int f
             if (starts && (isChar(k + 1, ',') || (isChar(k + 1, ':') && !isChar(k + 2, '=')))) add(t.text, 'G');
         }
     }
+}
+
+// The text with its comments, strings and pragmas blanked out: what a
+// library file uses is in its code, not in what its comments say ("the
+// system time" does not need SIMATIC AX's System namespaces). `(* *)` nests,
+// as the scanner has it (interpreter/ast/st_scanner.cpp).
+std::string codeOnly(const std::string& t) {
+    std::string out = t;
+    auto blank = [&](size_t from, size_t to) {
+        for (size_t k = from; k < to && k < out.size(); ++k)
+            if (out[k] != '\n') out[k] = ' ';
+    };
+    size_t i = 0;
+    const size_t n = t.size();
+    while (i < n) {
+        const char c = t[i];
+        const char c1 = i + 1 < n ? t[i + 1] : '\0';
+        size_t end = i + 1;
+        if (c == '(' && c1 == '*') {
+            int depth = 1;
+            end = i + 2;
+            while (end < n && depth > 0) {
+                if (t[end] == '(' && end + 1 < n && t[end + 1] == '*') ++depth, end += 2;
+                else if (t[end] == '*' && end + 1 < n && t[end + 1] == ')') --depth, end += 2;
+                else ++end;
+            }
+        } else if (c == '/' && c1 == '*') {
+            const size_t e = t.find("*/", i + 2);
+            end = e == std::string::npos ? n : e + 2;
+        } else if (c == '/' && c1 == '/') {
+            const size_t e = t.find('\n', i);
+            end = e == std::string::npos ? n : e;
+        } else if (c == '{') {
+            const size_t e = t.find('}', i);
+            end = e == std::string::npos ? n : e + 1;
+        } else if (c == '\'' || c == '"') {
+            end = i + 1;
+            while (end < n && t[end] != c && t[end] != '\n') end += t[end] == '$' ? 2 : 1;
+            end = std::min(end + 1, n);
+        } else {
+            i = end;
+            continue;
+        }
+        blank(i, end);
+        i = end;
+    }
+    return out;
+}
+
+// What one library file's code needs, by the rule a project's text is
+// scanned with (stdlib/library_mentions.h): the other files it selects and
+// the libraries whose native functions it calls.
+struct FileUses {
+    std::set<int> files;
+    std::set<std::string> natives;
+};
+FileUses usesOf(const std::string& text, int self, const std::vector<Name>& sortedNames) {
+    namespace m = strun::stdlib::mentions;
+    FileUses uses;
+    const std::string code = codeOnly(text);
+    m::forEachWord(code, [&](std::string_view word, size_t end, bool afterUsing) {
+        const std::string key = upperOf(std::string(m::edgeBlock(word)));
+        auto lo = std::lower_bound(sortedNames.begin(), sortedNames.end(), key, [](const Name& a, const std::string& k) { return a.upper < k; });
+        for (auto it = lo; it != sortedNames.end() && it->upper == key; ++it) {
+            if (it->kind == 'X') uses.natives.insert(it->library);
+            else if (it->file >= 0 && it->file != self && m::mentionSelects(it->kind, it->written, code, end, afterUsing)) uses.files.insert(it->file);
+        }
+    });
+    return uses;
 }
 
 // library.txt: `key: value` lines; `native:` and `absent:` may repeat and
@@ -292,9 +370,10 @@ int main(int argc, char** argv) {
         if (lib.selectedByNamespace) {
             names.erase(std::remove_if(names.begin(), names.end(), [&](const Name& n) { return n.library == lib.name && n.kind != 'Q' && n.kind != 'X'; }),
                         names.end());
-            // Its namespace selects it also without a dot after it: `USING AxUnit;`.
+            // Its namespace selects it also in `USING AxUnit;` (kind N); a
+            // dotted one (`USING System.Strings;`) stays Q: only its path selects it.
             for (Name& n : names)
-                if (n.library == lib.name && n.kind == 'Q') n.kind = 'N';
+                if (n.library == lib.name && n.kind == 'Q' && n.written.find('.') == std::string::npos) n.kind = 'N';
         }
     std::sort(names.begin(), names.end(), [](const Name& a, const Name& b) {
         return a.upper != b.upper ? a.upper < b.upper : a.file != b.file ? a.file < b.file : a.kind < b.kind;
@@ -318,6 +397,23 @@ int main(int argc, char** argv) {
     for (const Name& n : names)
         o << "    {" << quoted(n.upper) << ", " << quoted(n.written) << ", " << quoted(n.library) << ", '" << n.kind << "', " << n.file << "},\n";
     o << "};\nstd::span<const LibraryName> libraryNames() { return kNames; }\n";
+    // Each file's uses (library_registry.h): start-up follows these lists
+    // instead of scanning the texts of the files it selects.
+    std::ostringstream fileList, nativeList, ranges;
+    size_t fileCount = 0, nativeCount = 0;
+    for (size_t i = 0; i < sources.size(); ++i) {
+        const FileUses uses = usesOf(sources[i].text, static_cast<int>(i), names);
+        ranges << "    {" << fileCount << ", " << uses.files.size() << ", " << nativeCount << ", " << uses.natives.size() << "},\n";
+        for (int f : uses.files) fileList << " " << f << ",";
+        for (const std::string& lib : uses.natives) nativeList << " " << quoted(lib) << ",";
+        fileCount += uses.files.size();
+        nativeCount += uses.natives.size();
+    }
+    o << "static constexpr int kUsedFiles[] = {" << fileList.str() << " -1};\n";
+    o << "static constexpr std::string_view kUsedNatives[] = {" << nativeList.str() << " \"\"};\n";
+    o << "static constexpr struct { size_t files, fileCount, natives, nativeCount; } kUses[] = {\n" << ranges.str() << "};\n";
+    o << "std::span<const int> libraryFileUses(size_t file) { return {kUsedFiles + kUses[file].files, kUses[file].fileCount}; }\n";
+    o << "std::span<const std::string_view> libraryFileNatives(size_t file) { return {kUsedNatives + kUses[file].natives, kUses[file].nativeCount}; }\n";
     // The letter masks of the selecting names (library_registry.h), computed
     // here so that start-up does not walk the whole registry to build them.
     uint64_t byFirst[256] = {}, byLast[256] = {};

@@ -126,3 +126,66 @@ TEST_CASE("values of a qualified_only enumeration select nothing by themselves",
     for (const auto& p : selectedPaths({"Error := TRUE; Info := 1; Warning := 2;"})) CHECK(p.find("Tc3_EventLogger") == std::string::npos);
     CHECK(has(selectedPaths({"s : TcEventSeverity;"}), "stdlib/Tc3_EventLogger/Tc3_EventLogger.st"));
 }
+
+// Decision 0421: what a word selects depends on what it names.
+
+namespace {
+bool hasLibraryFile(const std::vector<std::string>& paths, std::string_view library) {
+    return std::any_of(paths.begin(), paths.end(), [&](const std::string& p) { return p.find("/" + std::string(library) + "/") != std::string::npos; });
+}
+}  // namespace
+
+TEST_CASE("a library function selects its file only where it is called", "[library]") {
+    // Tc3_Module's FAILED: a state, a variable or an enumeration value named Failed loads nothing.
+    CHECK(selectedPaths({"TYPE S : (Idle, Failed); END_TYPE PROGRAM Main VAR Failed : BOOL; END_VAR Failed := TRUE; END_PROGRAM"}).empty());
+    CHECK(has(selectedPaths({"b := FAILED(hr);"}), "stdlib/Tc3_Module/Tc3_Module.st"));
+    CHECK(has(selectedPaths({"b := failed (hr);"}), "stdlib/Tc3_Module/Tc3_Module.st"));
+    CHECK(has(selectedPaths({"b := FAILED\n   (hr);"}), "stdlib/Tc3_Module/Tc3_Module.st"));
+    CHECK(has(selectedPaths({"r := Tc3_Module.SUCCEEDED(hr);"}), "stdlib/Tc3_Module/Tc3_Module.st"));
+}
+
+TEST_CASE("a library namespace selects its file only qualified or in a USING list", "[library]") {
+    // CmpErrors' namespace Errors: a counter named errors loads nothing.
+    CHECK(selectedPaths({"PROGRAM Main VAR errors : DINT; END_VAR errors := errors + 1; END_PROGRAM"}).empty());
+    CHECK(has(selectedPaths({"r := Errors.ERR_TIMEOUT;"}), "stdlib/CmpErrors/CmpErrors.st"));
+    CHECK(has(selectedPaths({"r := Errors . ERR_TIMEOUT;"}), "stdlib/CmpErrors/CmpErrors.st"));
+    CHECK(hasLibraryFile(selectedPaths({"USING AxUnit;"}), "AxUnit"));
+    CHECK(hasLibraryFile(selectedPaths({"USING Foo, AxUnit;"}), "AxUnit"));
+    CHECK_FALSE(hasLibraryFile(selectedPaths({"(* AxUnit *) USING Foo; x := AxUnit;"}), "AxUnit"));
+}
+
+TEST_CASE("a dotted namespace selects its file only where its whole path is written", "[library]") {
+    CHECK(selectedPaths({"PROGRAM Main VAR system : INT; END_VAR system := 1; END_PROGRAM"}).empty());
+    auto paths = selectedPaths({"USING System.Strings;"});
+    CHECK(hasLibraryFile(paths, "System_Strings"));
+    CHECK_FALSE(hasLibraryFile(paths, "System_DateTime"));
+    CHECK_FALSE(hasLibraryFile(paths, "System_Timer"));
+    paths = selectedPaths({"System.DateTime.SplitDateAndTime(value := d, year => y);"});
+    CHECK(hasLibraryFile(paths, "System_DateTime"));
+    CHECK_FALSE(hasLibraryFile(paths, "System_Strings"));
+    CHECK(hasLibraryFile(selectedPaths({"USING system . timer;"}), "System_Timer"));
+    CHECK_FALSE(hasLibraryFile(selectedPaths({"x := System.Timers;"}), "System_Timer"));
+}
+
+TEST_CASE("a library file needs what its code names, not what its comments say", "[library]") {
+    // Tc2_System.st's comments speak of "the system time" and of
+    // TwinCAT_SystemInfoVarList; its code uses neither AX's System namespaces nor system_info.st.
+    auto paths = selectedPaths({"PROGRAM Main VAR s : T_MaxString; END_VAR END_PROGRAM"});
+    CHECK(has(paths, "stdlib/Tc2_System/Tc2_System.st"));
+    CHECK_FALSE(has(paths, "stdlib/Tc2_System/system_info.st"));
+    CHECK_FALSE(hasLibraryFile(paths, "System_Strings"));
+    CHECK_FALSE(has(paths, "stdlib/timers.st"));
+    // What its code does use still comes along: Tc3_Module's constants are OTCIDs of Tc2_System.
+    paths = selectedPaths({"x := S_OK;"});
+    CHECK(has(paths, "stdlib/Tc3_Module/Tc3_Module.st"));
+    CHECK(has(paths, "stdlib/Tc2_System/Tc2_System.st"));
+    for (size_t f = 0; f < strun::stdlib::embeddedSources().size(); ++f)
+        for (int used : strun::stdlib::libraryFileUses(f)) CHECK(used != static_cast<int>(f));
+}
+
+TEST_CASE("an enumeration value still selects its file, as does its block", "[library]") {
+    // Kept (decision 0421): TwinCAT reaches a value of an unqualified library
+    // enumeration without its type.
+    CHECK(has(selectedPaths({"d := MC_Negative_Direction;"}), "stdlib/Tc2_MC2/types.st"));
+    CHECK(has(selectedPaths({"m : MC_MoveVelocity; m(Direction := d);"}), "stdlib/Tc2_MC2/types.st"));
+}
