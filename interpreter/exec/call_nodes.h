@@ -255,7 +255,7 @@ template <bool OnInstance, bool TrySingle = true>
         c.stmt = s;
         if (!tickAborts(c)) s->exec(c);
     } else {
-        in.body.run(c);
+        in.body.runPinned(c);  // always inlined here (decision 0410)
     }
     if constexpr (OnInstance) c.self = savedSelf;
     c.stmt = savedStmt;

@@ -238,7 +238,7 @@ struct IfCompare final : Stmt {
     Stmt* otherwise;  // may be null; see If1Stmt
     IfCompare(L a, R b, Block* t, Stmt* e) : l(a), r(b), then(t), otherwise(e) {}
     Flow exec(Ctx& c) override {
-        if (evalBin<T, OP>(c, l, r)) return then.run(c);
+        if (evalBin<T, OP>(c, l, r)) return then.runOutOfLine(c);  // decision 0410
         return otherwise ? otherwise->exec(c) : Flow::Next;
     }
 };

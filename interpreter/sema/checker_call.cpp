@@ -602,7 +602,11 @@ exec::Stmt* Checker::bindOutput(const ast::Arg& arg, VarSym* p, Checked src) {
         src.node = pool().make<exec::NotBool>(src.node);
         src.node->type = p->type;
     }
-    return assignChecked(target, src, arg.loc);
+    exec::Stmt* st = assignChecked(target, src, arg.loc);
+    // Into a variable of the output's own type, from a block instance that
+    // is a variable itself: a plain copy (decision 0409).
+    if (exec::Stmt* copy = st ? fuseCopyLocal(pool(), st) : nullptr) return copy;
+    return st;
 }
 
 exec::Stmt* Checker::bindReference(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc) {

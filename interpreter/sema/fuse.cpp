@@ -174,6 +174,34 @@ exec::Stmt* storePending(exec::NodePool& pool, Rep rep, exec::Expr* place, exec:
 }
 }  // namespace
 
+namespace {
+// T: the assignment's type; S: the storage type of its variables (a BOOL's byte).
+template <class T, class S, bool DST_FRAME>
+exec::Stmt* copyLocalAs(exec::NodePool& pool, exec::Stmt* assign) {
+    auto* a = dynamic_cast<exec::AssignLocal<T, DST_FRAME>*>(assign);
+    if (!a) return nullptr;
+    const Leaf<S> from = leafOf<S>(a->value);
+    if (from.kind == LeafKind::Self) return pool.make<exec::CopyLocal<T, DST_FRAME, false>>(a->off, from.off);
+    if (from.kind == LeafKind::Frame) return pool.make<exec::CopyLocal<T, DST_FRAME, true>>(a->off, from.off);
+    return nullptr;
+}
+
+template <class T, class S = T>
+exec::Stmt* copyLocal(exec::NodePool& pool, exec::Stmt* assign) {
+    if (exec::Stmt* k = copyLocalAs<T, S, false>(pool, assign)) return k;
+    return copyLocalAs<T, S, true>(pool, assign);
+}
+}  // namespace
+
+exec::Stmt* fuseCopyLocal(exec::NodePool& pool, exec::Stmt* assign) {
+    exec::Stmt* k = nullptr;
+    (k = copyLocal<int8_t>(pool, assign)) || (k = copyLocal<int16_t>(pool, assign)) || (k = copyLocal<int32_t>(pool, assign)) ||
+        (k = copyLocal<int64_t>(pool, assign)) || (k = copyLocal<uint8_t>(pool, assign)) || (k = copyLocal<uint16_t>(pool, assign)) ||
+        (k = copyLocal<uint32_t>(pool, assign)) || (k = copyLocal<uint64_t>(pool, assign)) || (k = copyLocal<float>(pool, assign)) ||
+        (k = copyLocal<double>(pool, assign)) || (k = copyLocal<bool, uint8_t>(pool, assign));
+    return k;
+}
+
 exec::Stmt* fuseStorePending(exec::NodePool& pool, Rep rep, exec::Expr* place, exec::Expr* value) {
     switch (rep) {
         case Rep::I8: return storePending<int8_t>(pool, rep, place, value);

@@ -45,6 +45,11 @@ exec::Stmt* fuseAppendInPlace(exec::NodePool& pool, bool wide, exec::Expr* place
 // argument needs its statement node (aggregates, strings, references).
 bool fuseArgBind(Rep rep, uint32_t dst, exec::Expr* value, exec::ArgBind& out);
 
+// `assign` (a built assignment) as an exec::CopyLocal when it is an
+// AssignLocal whose value is a variable of the instance or frame of its own
+// storage type; else nullptr (decision 0409).
+exec::Stmt* fuseCopyLocal(exec::NodePool& pool, exec::Stmt* assign);
+
 // REAL/LREAL -> integer with the typed fast path; nullptr for widths it does not cover.
 exec::Expr* fuseRealToInt(exec::NodePool& pool, exec::Expr* value, int bits, bool isSigned, bool truncate);
 
