@@ -318,7 +318,7 @@ statement
     | REPEAT body=stmtList UNTIL cond=expression END_REPEAT                      # repeatStmt
     | EXIT SEMI                                                                  # exitStmt
     | CONTINUE SEMI                                                              # continueStmt
-    | RETURN SEMI                                                                # returnStmt
+    | RETURN cond=expression? SEMI                                               # returnStmt   // `RETURN (done);` conditional (CODESYS)
     | JMP target=identifier SEMI                                                 # jmpStmt
     | SEMI                                                                       # emptyStmt
     ;

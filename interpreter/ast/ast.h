@@ -153,6 +153,10 @@ enum class InitKind {
 struct ArrayInitItem {
     ExprPtr repeat;  // null = 1; `3(0)` → repeat 3, value 0; `3()` → value null
     InitPtr value;
+    // `[N(x)]` with a name N: repeat N and value x, and here the same item
+    // read as one element initialised by the call N(x); the checker takes the
+    // call when N is not a constant. Null for every other item.
+    InitPtr callForm;
 };
 
 struct StructInitItem {
@@ -242,7 +246,7 @@ struct Stmt {
     StmtKind kind = StmtKind::Empty;
     Loc loc;
     ExprPtr target;  // assignments
-    ExprPtr expr;    // assignment value; call; CASE selector; WHILE / REPEAT condition
+    ExprPtr expr;    // assignment value; call; CASE selector; WHILE / REPEAT condition; RETURN's condition (CODESYS)
     std::string name;  // FOR control variable; JMP / Label name
     Loc nameLoc;       // where `name` is written
     ExprPtr from, to, by;

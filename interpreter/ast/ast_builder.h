@@ -78,6 +78,7 @@ private:
     std::vector<ExprPtr> genericArguments(P::GenericArgumentsContext* c);
     EnumValue enumValue(P::EnumValueContext* c);
     InitPtr initializer(P::InitializerContext* c);
+    static void repetitionByName(ArrayInitItem& item);
 
     // ---- statements (ast_builder_stmt.cpp)
     void stmtList(P::StmtListContext* c, StmtList& out);

@@ -92,7 +92,11 @@ StmtPtr AstBuilder::stmt(P::StatementContext* c) {
     }
     if (exactly<P::ExitStmtContext>(c)) return makeStmt(StmtKind::Exit, at);
     if (exactly<P::ContinueStmtContext>(c)) return makeStmt(StmtKind::Continue, at);
-    if (exactly<P::ReturnStmtContext>(c)) return makeStmt(StmtKind::Return, at);
+    if (auto* r = exactly<P::ReturnStmtContext>(c)) {
+        auto s = makeStmt(StmtKind::Return, at);
+        if (r->cond != nullptr) s->expr = expr(r->cond);  // `RETURN (xDone);` leaves when TRUE (CODESYS; decision 0433)
+        return s;
+    }
     if (auto* j = exactly<P::JmpStmtContext>(c)) {
         auto s = makeStmt(StmtKind::Jmp, at);
         s->name = text(j->target);

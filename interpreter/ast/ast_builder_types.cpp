@@ -1,6 +1,7 @@
 // AstBuilder: VAR blocks, variable declarations, type specifications and
 // initial values.
 #include "interpreter/ast/ast_builder.h"
+#include "interpreter/ast/ast_clone.h"
 
 #include <cctype>
 
@@ -297,6 +298,31 @@ TypeSpecPtr AstBuilder::returnType(P::ReturnTypeContext* c) {
     return out;
 }
 
+namespace {
+bool isDottedName(const Expr& e) {
+    if (e.kind == ExprKind::Name) return true;
+    return e.kind == ExprKind::Member && isDottedName(*e.kids[0]);
+}
+}  // namespace
+
+// `[PMPS_GVL.AUX_ATTENUATORS(st)]` reads as a call; it may be IEC's repetition
+// with a named constant as the count. Which one only the checker can tell
+// (a constant or a function), so the item keeps both readings.
+void AstBuilder::repetitionByName(ArrayInitItem& item) {
+    if (!item.value || item.value->kind != InitKind::Expr || !item.value->expr) return;
+    const Expr& call = *item.value->expr;
+    if (call.kind != ExprKind::Call || call.args.size() != 1 || !isDottedName(*call.kids[0])) return;
+    const Arg& arg = call.args[0];
+    if (!arg.name.empty() || arg.output || !arg.value) return;
+    item.repeat = cloneExpr(*call.kids[0]);
+    auto value = std::make_unique<Init>();
+    value->kind = InitKind::Expr;
+    value->loc = arg.value->loc;
+    value->expr = cloneExpr(*arg.value);
+    item.callForm = std::move(item.value);
+    item.value = std::move(value);
+}
+
 InitPtr AstBuilder::initializer(P::InitializerContext* c) {
     auto out = std::make_unique<Init>();
     out->loc = loc(c);
@@ -318,6 +344,7 @@ InitPtr AstBuilder::initializer(P::InitializerContext* c) {
                 if (item->value) built.value = initializer(item->value);
             } else {
                 built.value = initializer(item->value);
+                repetitionByName(built);
             }
             out->items.push_back(std::move(built));
         }

@@ -90,7 +90,7 @@ InitPtr cloneInit(const Init& i) {
     out->loc = i.loc;
     out->expr = cloneExprOrNull(i.expr);
     for (const ArrayInitItem& item : i.items)
-        out->items.push_back(ArrayInitItem{cloneExprOrNull(item.repeat), cloneOrNull(item.value, cloneInit)});
+        out->items.push_back(ArrayInitItem{cloneExprOrNull(item.repeat), cloneOrNull(item.value, cloneInit), cloneOrNull(item.callForm, cloneInit)});
     for (const StructInitItem& f : i.fields) out->fields.push_back(StructInitItem{f.loc, f.name, cloneOrNull(f.value, cloneInit)});
     return out;
 }

@@ -113,7 +113,7 @@ std::string dump(const Stmt& s) {
         case StmtKind::Repeat: return "(repeat " + dump(s.body) + " " + opt(s.expr) + ")";
         case StmtKind::Exit: return "EXIT";
         case StmtKind::Continue: return "CONTINUE";
-        case StmtKind::Return: return "RETURN";
+        case StmtKind::Return: return s.expr ? "(return " + opt(s.expr) + ")" : "RETURN";
         case StmtKind::Jmp: return "(jmp " + s.name + ")";
         case StmtKind::Label: return "(label " + s.name + ")";
         case StmtKind::Empty: return ";";

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/exec/value_nodes.h"
+#include "stdlib/string_functions.h"
 
 namespace strun::stdlib::bind {
 
@@ -171,7 +172,7 @@ bool isNumArg(const Checked& a) { return a.untypedInt || a.untypedReal || sema::
 bool isStringArg(const Checked& a, bool wide) { return a.type && a.type->kind == (wide ? TK::WString : TK::String); }
 
 const Type* stringResultType(Checker& ck, bool wide, int64_t maxLen) {
-    maxLen = std::clamp<int64_t>(maxLen, 1, 65535);
+    maxLen = std::clamp<int64_t>(maxLen, 1, stdlib::kMaxStringLength);
     return ck.types().string(static_cast<uint32_t>(maxLen), wide);
 }
 

@@ -73,7 +73,7 @@ bool isNumArg(const Checked& a);       // ANY_NUM
 bool isStringArg(const Checked& a, bool wide);
 
 // "STRING", "WSTRING" of the given kind; the result type of a string function
-// of at most `maxLen` characters (clamped to 1..65535).
+// of at most `maxLen` characters (clamped to 1..stdlib::kMaxStringLength).
 const Type* stringResultType(Checker& ck, bool wide, int64_t maxLen);
 
 // Fails with "FN: argument N must be ..." at the argument.

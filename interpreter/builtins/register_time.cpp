@@ -309,11 +309,20 @@ void registerClock(Checker& ck) {
         if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);
         return makeResult(ck, ck.pool().make<PlcTimeMsNode>(), ck.types().elementary(TK::Time), call, a, false);
     });
-    // CODESYS/TwinCAT TIME(): the PLC time since start, in milliseconds.
+    // CODESYS/TwinCAT TIME(): the PLC time since start, in milliseconds;
+    // LTIME(): the same in nanoseconds (decision 0435). Operators IEC 61131-3
+    // does not have.
     ck.addBuiltin("TIME", [](Checker& ck, CallArgs& call) -> Checked {
         std::vector<Checked> a;
+        if (ck.refusedByStrict(diag::E0105, call.loc, "TIME() is a CODESYS/TwinCAT operator, not IEC 61131-3 (--strict)")) return ck.bad(call.loc);
         if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);
         return makeResult(ck, ck.pool().make<PlcTimeMsNode>(), ck.types().elementary(TK::Time), call, a, false);
+    });
+    ck.addBuiltin("LTIME", [](Checker& ck, CallArgs& call) -> Checked {
+        std::vector<Checked> a;
+        if (ck.refusedByStrict(diag::E0105, call.loc, "LTIME() is a CODESYS/TwinCAT operator, not IEC 61131-3 (--strict)")) return ck.bad(call.loc);
+        if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);
+        return makeResult(ck, ck.pool().make<PlcTimeNsNode>(), ck.types().elementary(TK::LTime), call, a, false);
     });
     ck.addBuiltin("__PLC_LTIME", [](Checker& ck, CallArgs& call) -> Checked {
         std::vector<Checked> a;

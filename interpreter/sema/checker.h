@@ -90,6 +90,14 @@ public:
         warning(code, loc, message);
         return true;
     }
+    // A CODESYS/TwinCAT/AX form IEC 61131-3 does not have, which the default
+    // mode accepts silently: with --strict an error (outside the embedded
+    // library), and true. The message says what to write instead.
+    bool refusedByStrict(diag::Code code, const ast::Loc& loc, const std::string& message) {
+        if (!options_.strict || libraryFiles_.count(loc.file)) return false;
+        error(code, loc, message);
+        return true;
+    }
     // Converts `e` implicitly to `target` (errors if the standard forbids it).
     Checked coerce(Checked e, const Type* target, const ast::Loc& loc, const char* what);
     // Explicit conversion (X_TO_Y / TO_Y): any elementary pair.
@@ -157,9 +165,11 @@ private:
     void foldStringConstant(VarSym& v, const ast::VarDecl& decl);  // checker_constant_strings.cpp
     VarSym* addGlobal(const ast::VarDecl& decl, size_t nameIndex, const ast::VarBlock& block, uint32_t& listSize);
     bool constIntExpr(const ast::Expr* e, int64_t& out, const char* what);
+    bool isConstantInteger(const ast::Expr& e);
     bool isAddressInit(const VarSym* v) const;
     exec::Stmt* addressInitStmt(const RuntimeInit& init);
     std::vector<RuntimeInit> globalAddressInits_;
+    std::vector<RuntimeInit> staticInits_;  // VAR_STAT parts initialised at run time, checked in their POU
     // ---- initial values computed at initialisation (checker_runtime_init.cpp)
     // While writing the initial value of `runtimeInitVar_`: where a part that is
     // not a compile-time constant goes (null: it is an error), and the path
@@ -239,6 +249,7 @@ private:
     exec::Stmt* checkAssign(const ast::Stmt& s);
     exec::Stmt* checkFor(const ast::Stmt& s);
     exec::Stmt* checkRefAssign(const ast::Stmt& s);
+    exec::Stmt* checkConditionalReturn(const ast::Stmt& s);
     exec::Stmt* checkCase(const ast::Stmt& s);
     Checked checkExpr(const ast::Expr& e);
     Checked checkExprOfKind(const ast::Expr& e);

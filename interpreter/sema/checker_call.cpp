@@ -205,6 +205,17 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
     // TO_DT(pValue), TO_LTIME(pValue): a pointer converts as its address, an
     // unsigned integer of its width (TwinCAT; decision 0326).
     if (!from) a = pointerAsAddress(a, types().elementary(TK::ULInt));
+    // TRUNC(i / n) of integers (struckig): IEC's implicit widening makes an
+    // INT or DINT an ANY_REAL input, and its truncation is itself, so it
+    // converts as the integer it is, exactly (decision 0438). LINT and ULINT
+    // widen to no real type in IEC: --strict refuses them.
+    if (truncate && !from && (a.untypedInt || isInteger(a.type->kind))) {
+        const bool noRealWidening = !a.untypedInt && bitWidth(integerView(a.type->kind)) == 64;
+        if (noRealWidening && refusedByStrict(diag::E0202, e.args[0].value->loc,
+                                              fmt::format("{} needs a REAL or LREAL input; {} widens to neither (--strict)", key, typeName(a.type))))
+            return bad(e.loc);
+        truncate = false;
+    }
     if (truncate && !(isReal(a.type->kind) || a.untypedReal)) {
         error(diag::E0202, e.args[0].value->loc, fmt::format("{} needs a REAL or LREAL input, not {}", key, typeName(a.type)));
         return bad(e.loc);

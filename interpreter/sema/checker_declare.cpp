@@ -13,6 +13,8 @@
 #include "interpreter/sema/fb_eno_slots.h"
 #include "interpreter/sema/node_factory.h"
 
+#include "stdlib/string_functions.h"
+
 namespace strun::sema {
 
 namespace {
@@ -179,7 +181,12 @@ const Type* Checker::resolveNamedType(const std::string& name, const ast::Loc& l
     std::string key = scopedKey(upper(name));
     auto dot = key.rfind('.');
     if (dot != std::string::npos && !typeDecls_.count(key) && !pous_.count(key)) key = key.substr(dot + 1);
-    if (const Type* t = types().byName(key)) return t;
+    if (const Type* t = types().byName(key)) {
+        // __XWORD, __UXINT, __XINT: an IEC name cannot start with '__'.
+        if (key.rfind("__", 0) == 0)
+            refusedByStrict(diag::E0102, loc, fmt::format("'{}' is a CODESYS/TwinCAT platform-width type; --strict needs {}", name, t->name));
+        return t;
+    }
     if (typeDecls_.count(key)) return resolveTypeDecl(key, loc);
     if (isGenericTypeName(key)) {
         // ANY, ANY_NUM, ...: the __SYSTEM.AnyType of stdlib/st/system.st when the
@@ -391,8 +398,8 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
             if (spec->length && !constIntExpr(spec->length.get(), len, "a string length")) len = standard;
             // STRING(0) (TwinCAT: one byte, always empty; Beckhoff's MQTT sample
             // passes ADR of one as an empty payload) is accepted (decision 0329).
-            if (len < 0 || len > 65535) {
-                error(diag::E0407, spec->loc, fmt::format("string length {} outside 0..65535", len));
+            if (len < 0 || len > stdlib::kMaxStringLength) {
+                error(diag::E0407, spec->loc, fmt::format("string length {} outside 0..{}", len, stdlib::kMaxStringLength));
                 len = 80;
             }
             return types().string(static_cast<uint32_t>(len), spec->wide);
@@ -526,6 +533,16 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
             return nullptr;
     }
     return nullptr;
+}
+
+// Whether `e` (a name) is a constant integer, without reporting anything:
+// `[N(x)]` repeats x N times then, else it is a call of N (a function).
+bool Checker::isConstantInteger(const ast::Expr& e) {
+    const bool saved = silent_;
+    silent_ = true;
+    Checked c = checkExpr(e);
+    silent_ = saved;
+    return c.ok && c.isConst && (isIntRep(c.type) || c.untypedInt);
 }
 
 bool Checker::constIntExpr(const ast::Expr* e, int64_t& out, const char* what) {
@@ -822,7 +839,10 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                         v->storage = Storage::Abs;
                         v->abs = model_.allocate(size);
                         writeDefault(v->abs, t);
-                        if (decl.init) writeInitial(v->abs, t, decl.init.get(), decl.loc);
+                        // `nSeed : DWORD := F_Seed();`: what is not a constant is
+                        // assigned once before the first cycle, as for a global.
+                        if (decl.init && isAddressInit(v.get())) staticInits_.push_back({v.get(), nullptr, decl.init->expr.get()});
+                        else if (decl.init) writeVarInitial(v->abs, v.get(), &staticInits_);
                     } else {
                         frameOff = alignUp(frameOff, align);
                         v->storage = Storage::Frame;
@@ -844,7 +864,11 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
                     block.section == ast::VarSection::InOut)
                     pou->params.push_back(v.get());
                 // VAR_IN_OUT CONSTANT (CODESYS, TwinCAT): read-only by reference, no initial value.
-                if (block.constant && !byRef) {
+                // VAR_INPUT CONSTANT: an input the POU cannot write; the caller gives
+                // its value, its initial value is only the default (decision 0436).
+                if (block.constant && block.section == ast::VarSection::Input)
+                    refusedByStrict(diag::E0407, loc, fmt::format("VAR_INPUT CONSTANT '{}' is a CODESYS extension; --strict needs a plain VAR_INPUT", name));
+                else if (block.constant && !byRef) {
                     if (!decl.init) error(diag::E0401, loc, fmt::format("CONSTANT '{}' needs an initial value", name));
                     else foldConstant(*v, decl);
                 }
@@ -1076,9 +1100,10 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
                 std::memcpy(p, bytes->bytes.data(), n);
                 p[t->size - 1] = 0;
                 if (t->kind == TK::WString) p[t->size - 2] = 0;
-            } else if (t->kind == TK::Interface && c.isConst && c.constInt == 0) {
-                // `ipSourceInfo : I_TcSourceInfo := 0` (Beckhoff's declarations):
-                // no instance, the storage's zero.
+            } else if ((t->kind == TK::Interface || t->kind == TK::Pointer) && c.isConst && c.constInt == 0) {
+                // `ipSourceInfo : I_TcSourceInfo := 0` (Beckhoff's declarations),
+                // `value : PVOID := 0` (LCLS's T_HashTableEntry; decision 0439):
+                // no instance, no address, the storage's zero.
             } else if (!deferred()) {
                 error(diag::E0401, init->expr->loc, fmt::format("a value of type {} cannot be initialised with an expression", typeName(t)));
             }
@@ -1092,7 +1117,9 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
             uint64_t k = 0;
             for (const auto& item : init->items) {
                 int64_t repeat = 1;
-                if (item.repeat && !constIntExpr(item.repeat.get(), repeat, "a repetition count")) repeat = 1;
+                const ast::Init* value = item.value.get();
+                if (item.callForm && !isConstantInteger(*item.repeat)) value = item.callForm.get();  // `[F(x)]`: a call
+                else if (item.repeat && !constIntExpr(item.repeat.get(), repeat, "a repetition count")) repeat = 1;
                 if (repeat <= 0) continue;
                 if (static_cast<uint64_t>(repeat) > t->elemCount - k) {
                     error(diag::E0402, init->loc, fmt::format("too many initial values for {} elements", t->elemCount));
@@ -1101,16 +1128,16 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
                 // `N(x)`: x is checked and written once, then its bytes copied
                 // (an initialiser of 50 million elements makes no nodes per element).
                 uint8_t* first = p + k * t->elem->size;
-                if (item.value) {
+                if (value) {
                     initPath_.push_back({"", t, k});
                     const size_t runtimeBefore = runtimeInits_ ? runtimeInits_->size() : 0;
-                    writeInitial(first, t->elem, item.value.get(), loc);
+                    writeInitial(first, t->elem, value, loc);
                     for (int64_t r = 1; r < repeat; ++r) std::memcpy(first + uint64_t(r) * t->elem->size, first, t->elem->size);
                     // `N(x)` with x known only at run time: one assignment per element.
                     if (runtimeInits_ && runtimeInits_->size() > runtimeBefore)
                         for (int64_t r = 1; r < repeat; ++r) {
                             initPath_.back().element = k + static_cast<uint64_t>(r);
-                            writeInitial(first + uint64_t(r) * t->elem->size, t->elem, item.value.get(), loc);
+                            writeInitial(first + uint64_t(r) * t->elem->size, t->elem, value, loc);
                         }
                     initPath_.pop_back();
                 }

@@ -240,6 +240,18 @@ Checked Checker::checkLiteral(const ast::Expr& e) {
                 if (!fits) return fail(diag::E0205, fmt::format("'{}#{}' is outside the range of {}", e.typePrefix, v, t->name));
                 return constInt(val, t, e.loc);
             }
+            if (isCharType(t->kind) && !v.empty() && v[0] != '\'' && v[0] != '"') {
+                // `CHAR#16#80` (SIMATIC AX's md5): a character given by its code (decision 0434).
+                auto r = stdlib::parseIntegerLiteral(v);
+                if (!r) return fail(diag::E0011, fmt::format("invalid character code '{}#{}': {}", e.typePrefix, v, r.error()));
+                const uint64_t limit = t->kind == TK::WChar ? 0xFFFF : 0xFF;
+                if (r.value() > limit) return fail(diag::E0205, fmt::format("'{}#{}' is outside the range of {}", e.typePrefix, v, t->name));
+                const std::string asText = t->kind == TK::WChar ? fmt::format("\"${:04X}\"", r.value()) : fmt::format("'${:02X}'", r.value());
+                if (refusedByStrict(diag::E0011, e.loc, fmt::format("'{}#{}' (a character by its code) is a SIMATIC AX form; --strict needs {}#{}",
+                                                                    e.typePrefix, v, e.typePrefix, asText)))
+                    return bad(e.loc);
+                return constInt(static_cast<int64_t>(r.value()), t, e.loc);
+            }
             if (isStringType(t->kind) || isCharType(t->kind) || isTimeLike(t->kind) || isDateLike(t->kind)) {
                 ast::Expr inner;
                 inner.kind = ast::ExprKind::Literal;

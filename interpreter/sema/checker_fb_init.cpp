@@ -127,6 +127,13 @@ void Checker::buildFbInitCalls() {
     frameTop_ = 0;
     for (const RuntimeInit& g : globalAddressInits_)
         if (exec::Stmt* st = addressInitStmt(g)) model_.initCalls.push_back(st);
+    for (const RuntimeInit& s : staticInits_) {  // after the globals they may read
+        PouInfo* owner = s.var->owner;
+        NameScopeGuard scope(*this, owner->ast->nameSpace, owner->ast->loc.file);
+        pou_ = owner;
+        if (exec::Stmt* st = addressInitStmt(s)) model_.initCalls.push_back(st);
+        pou_ = nullptr;
+    }
     for (VarSym* g : model_.globals)
         if (g->abs) collectFbInits(g->type, g->abs, g->decl ? g->decl->type.get() : nullptr, 0);
     for (auto& prog : model_.programs) collectFbInits(prog.pou->instanceType, prog.memory, nullptr, 0);

@@ -302,6 +302,14 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
         error(diag::E0202, loc, fmt::format("operator '{}' is not defined for {} and {}", opText(op), typeName(a.type), typeName(b.type)));
         return bad(loc);
     }
+    if (ka == TK::Pointer && kb == TK::Pointer && op == ast::Op::Sub) {
+        // `pLoc - pBuffer` (TwinCAT TcDynStringKit): the distance in bytes, a
+        // signed LINT (__XINT on strun's 64-bit platform; decision 0439).
+        r.type = types().elementary(TK::LInt);
+        r.node = intOp<exec::SubI>(pool(), Rep::I64, a.node, b.node);
+        r.node->type = r.type;
+        return r;
+    }
     if ((ka == TK::Pointer && (b.untypedInt || isInteger(kb) || (isBitString(kb) && kb != TK::Bool))) && (op == ast::Op::Add || op == ast::Op::Sub)) {
         // CODESYS pointer arithmetic: in bytes.
         Checked y = convert(b, types().elementary(TK::LInt), loc);

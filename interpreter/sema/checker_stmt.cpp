@@ -169,7 +169,7 @@ exec::Block* Checker::checkBlock(const ast::StmtList& list) {
                 .note(leaving->loc, fmt::format("the statements after this {} never run", how));
             leaving = nullptr;  // one warning per unreachable stretch
         }
-        if (s->kind == ast::StmtKind::Return || s->kind == ast::StmtKind::Exit || s->kind == ast::StmtKind::Continue ||
+        if ((s->kind == ast::StmtKind::Return && !s->expr) || s->kind == ast::StmtKind::Exit || s->kind == ast::StmtKind::Continue ||
             s->kind == ast::StmtKind::Jmp)
             leaving = s.get();
         if (s->kind == ast::StmtKind::Label) leaving = nullptr;
@@ -191,6 +191,24 @@ exec::Block* Checker::checkBlock(const ast::StmtList& list) {
     }
     fuseSwaps(pool(), *block);  // t := a[i]; a[i] := a[j]; a[j] := t as one node (decision 0379)
     return block;
+}
+
+// `RETURN (xDone);` (CODESYS, TwinCAT): leaves the POU when the condition is
+// TRUE, as `IF xDone THEN RETURN; END_IF` (decision 0433). Not IEC 61131-3:
+// --strict refuses it.
+exec::Stmt* Checker::checkConditionalReturn(const ast::Stmt& s) {
+    if (refusedByStrict(diag::E0001, s.expr->loc, "a conditional RETURN (expr) is a CODESYS extension; --strict needs IF expr THEN RETURN; END_IF"))
+        return nullptr;
+    Checked c = checkCondition(*s.expr, "a RETURN condition");
+    if (!c.ok) return nullptr;
+    auto* leave = pool().make<exec::FlowStmt>(exec::Flow::Return);
+    leave->line = s.loc.line;
+    leave->file = s.loc.file;
+    leave->col = s.loc.col;
+    auto* block = pool().make<exec::Block>();
+    block->stmts.push_back(leave);
+    if (exec::Stmt* fused = fuseIf(pool(), c.node, block, nullptr)) return fused;
+    return pool().make<exec::If1Stmt>(c.node, block, nullptr);
 }
 
 // r REF= x (bind a REFERENCE) and itf ?= x (assignment attempt: the address
@@ -554,7 +572,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                 return nullptr;
             }
             return pool().make<exec::FlowStmt>(s.kind == ast::StmtKind::Exit ? exec::Flow::Exit : exec::Flow::Continue);
-        case ast::StmtKind::Return: return pool().make<exec::FlowStmt>(exec::Flow::Return);
+        case ast::StmtKind::Return: return s.expr ? checkConditionalReturn(s) : pool().make<exec::FlowStmt>(exec::Flow::Return);
         case ast::StmtKind::Jmp: {
             std::string key = upper(s.name);
             pendingJumps_.push_back({s.nameLoc.line ? s.nameLoc : s.loc, s.name});

@@ -157,7 +157,8 @@ private:
                 subscripts(s.target.get(), open);
                 write(s.target.get(), open);
                 return;
-            case ast::StmtKind::Call: read(s.expr.get(), open); return;
+            case ast::StmtKind::Call:
+            case ast::StmtKind::Return: read(s.expr.get(), open); return;  // RETURN (cond);'s condition (decision 0433)
             case ast::StmtKind::If: {
                 Unwritten after = open;
                 for (size_t i = 0; i < s.conds.size(); ++i) {

@@ -168,6 +168,10 @@ TypeTable::TypeTable() {
     names_["XINT"] = elementary(TK::LInt);
     names_["XWORD"] = elementary(TK::LWord);
     names_["PVOID"] = pointer(elementary(TK::Byte));
+    // CODESYS's spelling of the same pseudo types (decision 0434).
+    names_["__UXINT"] = elementary(TK::ULInt);
+    names_["__XINT"] = elementary(TK::LInt);
+    names_["__XWORD"] = elementary(TK::LWord);
     names_.erase("ENUM");
     names_.erase("ARRAY");
     names_.erase("STRUCT");

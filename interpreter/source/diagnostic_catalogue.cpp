@@ -198,9 +198,10 @@ const std::vector<CodeInfo> kCatalogue = {
     {"E0407", K::Error, "wrong type declaration",
      "A type is declared in a way ST does not allow: an array whose upper bound is below its lower bound, ARRAY[*] "
      "outside VAR_IN_OUT, a subrange or enumeration on a base type that is not an integer, a string length outside "
-     "0..65535, EXTENDS on a type that is not a structure, an enumeration value without an explicit value after "
+     "0..1048576, EXTENDS on a type that is not a structure, an enumeration value without an explicit value after "
      "the largest LINT, values in '<...>' after a block whose VAR_GENERIC CONSTANTs they do not match in number, "
-     "R_EDGE or F_EDGE anywhere but on a BOOL input of a function block or program.",
+     "R_EDGE or F_EDGE anywhere but on a BOOL input of a function block or program; with --strict, VAR_INPUT "
+     "CONSTANT (a CODESYS extension).",
      "VAR a : ARRAY[10..1] OF INT; END_VAR", "VAR a : ARRAY[1..10] OF INT; END_VAR"},
     {"E0408", K::Error, "bad direct address",
      "An `AT %I..`, `%Q..` or `%M..` address is malformed, or does not exist on the target.",
