@@ -215,6 +215,10 @@ std::vector<Checker::ArgSubstitute> Checker::argumentSubstitutes(const InlineSit
         for (const VarSym* p : fn->params)
             if (p->section == ast::VarSection::Input && !p->byRef && p->storage == Storage::Frame && p->offset == b.dst) param = p;
         if (!param || !scalarType(param->type)) continue;
+        // A parameter named twice (`F(x := 2, x := G())`, W0044) is bound twice: both stay.
+        size_t bindsOfParam = 0;
+        for (const exec::ArgBind& other : site.call->binds) bindsOfParam += other.dst == b.dst;
+        if (bindsOfParam != 1) continue;
         if (isConstBind(b.how)) {
             out.push_back({param, b});
             continue;
