@@ -57,8 +57,7 @@ template <bool OnInstance>
         return nullptr;
     }
     const InlinedCall& in = *call.inlined;
-    uint8_t* f = initInlinedArea(c, in);
-    bindArgsUntilEnd(c, f, in.binds.data());
+    uint8_t* f = prepareInlinedCall(c, in);
     runInlinedBody<OnInstance>(c, in, call.callee->name, inst);
     return f;
 }

@@ -220,6 +220,18 @@ struct InlinedCall {
     // by How::End. Unused by a block call, which binds its inputs (into the
     // instance) from its own list.
     std::vector<ArgBind> binds;
+    // How a FUNCTION's or METHOD's call binds them (decision 0404): none at
+    // all, one 4-byte integer (`arg` stored at `argDst`, without the list's
+    // dispatch), or the list.
+    enum class Args : uint8_t { None, One4, List };
+    Args args = Args::List;
+    Expr* arg = nullptr;
+    uint32_t argDst = 0;
+    // The area holds only the result and inputs that are bound per call or
+    // read as their arguments (decision 0404): only the result is
+    // initialised, from `resultInit` (its 8 bytes of the image).
+    bool resultOnly = false;
+    uint64_t resultInit = 0;
     uint32_t base = 0;
     bool onInstance = false;      // a METHOD: its body runs on the call's instance (self)
     uint32_t size = 0;            // bytes of `image` copied per call (0: nothing to initialise)
@@ -236,6 +248,19 @@ struct InlinedCall {
     uint8_t* f = c.frame + in.base;
     if (in.size <= kSmallFrame) std::memcpy(f, in.image.data(), kSmallFrame);
     else std::memcpy(f, in.image.data(), in.size);
+    return f;
+}
+
+// The area of an inlined FUNCTION's or METHOD's call, initialised (only its
+// result when nothing else is read before the call writes it), and its
+// per-call arguments bound.
+[[gnu::always_inline]] inline uint8_t* prepareInlinedCall(Ctx& c, const InlinedCall& in) {
+    uint8_t* f = c.frame + in.base;
+    if (in.resultOnly) storeAs<uint64_t>(f + in.resultOffset, in.resultInit);
+    else if (in.size <= kSmallFrame) std::memcpy(f, in.image.data(), kSmallFrame);
+    else std::memcpy(f, in.image.data(), in.size);
+    if (in.args == InlinedCall::Args::One4) storeAs<uint32_t>(f + in.argDst, static_cast<uint32_t>(in.arg->i(c)));
+    else if (in.args == InlinedCall::Args::List) bindArgsUntilEnd(c, f, in.binds.data());
     return f;
 }
 

@@ -397,19 +397,36 @@ private:
         PouInfo* callee;
         PouInfo* caller;
         bool onInstance;
+        const ast::Expr* expr = nullptr;  // the call as written (its arguments: checker_inline_args.cpp)
     };
     // At the end of checkBody: whether `pou` may be inlined (a small FUNCTION, METHOD or block body,
     // checked without a diagnostic, that calls nothing).
     void noteInlinable(PouInfo* pou, size_t messagesBefore, uint64_t callsBefore);
     // At a FUNCTION call, or a METHOD call on an instance of exactly known
     // class (`onInstance`), in a body: remembered for inlineLeafCalls.
-    void noteInlineSite(exec::CallPou* call, PouInfo* fn, bool onInstance);
+    void noteInlineSite(exec::CallPou* call, PouInfo* fn, bool onInstance, const ast::Expr& e);
     // At the call statement of an instance of exactly known type `fb`.
     void noteInlineSite(exec::CallFbStmt* call, PouInfo* fb);
     // After every body is checked: each remembered call of an inlinable FUNCTION
     // gets the callee's body checked again in an area of the caller's frame.
     void inlineLeafCalls();
     std::vector<InlineSite> inlineSites_;
+    // ---- arguments substituted into an inlined body (checker_inline_args.cpp, decision 0403):
+    // while the body is checked again, a parameter listed here reads as its
+    // argument (a constant, or the caller's variable) instead of its slot.
+    struct ArgSubstitute {
+        const VarSym* param;
+        exec::ArgBind bind;  // Const*: the stored bits; CopySelf* / CopyFrame*: the caller's variable
+    };
+    std::vector<ArgSubstitute> argSubstitutes_;
+    std::vector<ArgSubstitute> argumentSubstitutes(const InlineSite& site);
+    Checked substitutedArgument(const ArgSubstitute& s, const ast::Loc& loc);
+    void chooseInlinedArgs(exec::InlinedCall& in, const PouInfo& fn, const std::vector<ArgSubstitute>& substitutes);
+    bool touchesOnlyOwnFrame(const PouInfo& fn);
+    bool writesOnlyOwnFrame(const PouInfo& fn, const ast::StmtList& list);
+    bool ownFrameTarget(const PouInfo& fn, const ast::Expr& target);
+    bool readsOnly(const ast::Expr& e, bool callerArgument, int depth);
+    std::map<const PouInfo*, bool> touchesOnlyOwnFrame_;  // touchesOnlyOwnFrame, once per POU
     PouInfo* inlineCaller_ = nullptr;  // the POU whose body (not an initialiser) is being checked
     uint64_t userCallsMade_ = 0;       // call nodes of user POUs made so far: a body that adds none is a leaf
     uint32_t frameBias_ = 0;           // added to frame variables' offsets while a body is inlined

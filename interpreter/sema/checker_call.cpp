@@ -732,7 +732,7 @@ Checked Checker::callUserFunction(PouInfo* fn, const ast::Expr& e, exec::Expr* i
     }
     call->type = r.type;
     r.node = call;
-    if (!instance) noteInlineSite(call, fn, false);
+    if (!instance) noteInlineSite(call, fn, false, e);
     return r;
 }
 

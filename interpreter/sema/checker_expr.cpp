@@ -344,6 +344,9 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
     if (v->inferredConflict) return bad(loc);
     v->used = true;
     if (v->global) v->global->used = true;
+    // An inlined body's parameter that reads as its argument (decision 0403).
+    for (const ArgSubstitute& s : argSubstitutes_)
+        if (s.param == v) return substitutedArgument(s, loc);
     Checked c;
     c.ok = true;
     c.loc = loc;

@@ -68,13 +68,13 @@ void Checker::noteInlinable(PouInfo* pou, size_t messagesBefore, uint64_t callsB
                      countStatements(pou->ast->body, kMaxInlineStatements) <= kMaxInlineStatements;  // no label or JMP either
 }
 
-void Checker::noteInlineSite(exec::CallPou* call, PouInfo* fn, bool onInstance) {
+void Checker::noteInlineSite(exec::CallPou* call, PouInfo* fn, bool onInstance, const ast::Expr& e) {
     // Only a call in a body proper (its frame is the caller's), with every
     // input bound directly and no output, with a scalar result.
     if (!options_.inlineCalls || !inlineCaller_ || fn->code->library) return;
     if (fn->kind != (onInstance ? ast::PouKind::Method : ast::PouKind::Function)) return;
     if (!call->directInputs || !call->outputs.empty() || call->resultSize != 0) return;
-    inlineSites_.push_back({call, nullptr, fn, inlineCaller_, onInstance});
+    inlineSites_.push_back({call, nullptr, fn, inlineCaller_, onInstance, &e});
 }
 
 void Checker::noteInlineSite(exec::CallFbStmt* call, PouInfo* fb) {
@@ -92,25 +92,38 @@ void Checker::inlineLeafCalls() {
         const uint32_t base = alignInlineBase(caller->frameSize, 16);
         if (base + area - caller->initSize > kMaxInlineBytesPerCaller) continue;
         // The callee's body once more, as if it were being checked for the
-        // first time, with its frame at `base` and new temporaries above it.
-        pou_ = fn;
-        currentPouName_ = fn->bodyName;
-        frameTop_ = base + area;
-        frameBias_ = base;
-        loopDepth_ = 0;
-        assignedResult_ = false;
-        ExprObserver* observer = observer_;
-        observer_ = nullptr;
-        silent_ = true;
-        const uint64_t silencedBefore = silencedCount_;
-        exec::Block* body = checkBlock(fn->ast->body);
-        const bool clean = silencedCount_ == silencedBefore;
-        silent_ = false;
-        observer_ = observer;
-        frameBias_ = 0;
-        pou_ = nullptr;
-        currentPouName_ = nullptr;
-        if (!clean || !body) continue;
+        // first time, with its frame at `base` and new temporaries above it;
+        // first with the parameters that read as their arguments (decision
+        // 0403), and without them if that check fails (a parameter written).
+        auto checkInlined = [&](std::vector<ArgSubstitute> substitutes) -> exec::Block* {
+            pou_ = fn;
+            currentPouName_ = fn->bodyName;
+            frameTop_ = base + area;
+            frameBias_ = base;
+            loopDepth_ = 0;
+            assignedResult_ = false;
+            argSubstitutes_ = std::move(substitutes);
+            ExprObserver* observer = observer_;
+            observer_ = nullptr;
+            silent_ = true;
+            const uint64_t silencedBefore = silencedCount_;
+            exec::Block* checked = checkBlock(fn->ast->body);
+            const bool clean = silencedCount_ == silencedBefore;
+            silent_ = false;
+            observer_ = observer;
+            argSubstitutes_.clear();
+            frameBias_ = 0;
+            pou_ = nullptr;
+            currentPouName_ = nullptr;
+            return clean ? checked : nullptr;
+        };
+        std::vector<ArgSubstitute> substitutes = argumentSubstitutes(site);
+        exec::Block* body = checkInlined(substitutes);
+        if (!body && !substitutes.empty()) {
+            substitutes.clear();
+            body = checkInlined({});
+        }
+        if (!body) continue;
         auto* in = pool().make<exec::InlinedCall>();
         in->body = exec::Body(body);
         if (site.call && body->stmts.size() == 1 && body->labels.empty()) in->single = body->stmts[0];
@@ -120,12 +133,20 @@ void Checker::inlineLeafCalls() {
         in->image = fn->code->frameInit;
         in->resultOffset = fn->code->resultOffset;
         if (site.call) {
-            // Constant arguments are part of the image: stored once, here.
+            // Constant arguments are part of the image: stored once, here (a
+            // substituted one too, so that the area holds what a call stores).
+            // A substituted variable of the caller is not copied at all.
             auto& binds = site.call->binds;
-            std::erase_if(binds, [&](const exec::ArgBind& b) { return storeConstantArgument(in->image, b); });
+            std::erase_if(binds, [&](const exec::ArgBind& b) {
+                if (storeConstantArgument(in->image, b)) return true;
+                for (const ArgSubstitute& sub : substitutes)
+                    if (sub.bind.dst == b.dst) return true;
+                return false;
+            });
             in->binds = binds;
             in->binds.push_back(exec::ArgBind{});
             in->binds.back().how = exec::ArgBind::How::End;
+            chooseInlinedArgs(*in, *fn, substitutes);
             site.call->inlined = in;
             site.call->inlinedOnCaller = !site.onInstance;
         } else {

@@ -163,7 +163,7 @@ Checked Checker::methodCall(Checked base, PouInfo* method, const ast::Expr& call
     // dispatches to is known: it may be inlined (decision 0317).
     if (!viaInterface && !base.superRef && base.var && !base.var->byRef && base.var->type == base.type && base.type->pou &&
         !isExtended(base.type->pou))
-        noteInlineSite(node, method, true);
+        noteInlineSite(node, method, true, call);
     if (!viaInterface && !isProgram && method->ast && method->ast->abstract && base.superRef)
         error(diag::E0405, call.loc, fmt::format("'{}' is ABSTRACT in the parent", method->name));
     return r;

@@ -68,6 +68,18 @@ exec::Expr* fuseTyped(exec::NodePool& pool, exec::Expr* a, exec::Expr* b, T k) {
                 return make<T, OP>(pool, exec::OpNode<T>{b}, exec::OpConst<T>{*ka});
             }
     }
+    // k < x with an ordered comparison (an inlined body's `IF lo > value`
+    // once `lo` reads as its constant argument, decision 0403): x > k, the
+    // same test (NaN included) with the constant inline.
+    constexpr bool ordered = OP == BinOp::Lt || OP == BinOp::Gt || OP == BinOp::Le || OP == BinOp::Ge;
+    if constexpr (ordered) {
+        constexpr BinOp mirrored = OP == BinOp::Lt ? BinOp::Gt : OP == BinOp::Gt ? BinOp::Lt : OP == BinOp::Le ? BinOp::Ge : BinOp::Le;
+        if (b && (rb.isVar() || computedOperand(b)))
+            if (std::optional<T> ka = constOf<T>(a)) {
+                if (rb.isVar()) return withVar(rb, [&](auto rv) { return make<T, mirrored>(pool, rv, exec::OpConst<T>{*ka}); });
+                return make<T, mirrored>(pool, exec::OpNode<T>{b}, exec::OpConst<T>{*ka});
+            }
+    }
     if constexpr (isCompare(OP)) {
         exec::OpElem<T> ea, eb;
         if (b && elemOf<T>(a, ea) && elemOf<T>(b, eb)) return make<T, OP>(pool, ea, eb);

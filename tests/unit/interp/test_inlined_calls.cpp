@@ -79,15 +79,19 @@ TEST_CASE("a small FUNCTION that calls nothing is inlined; the others keep their
     CHECK(callIn(*c, 3)->inlined == nullptr);    // an output connection (=>)
     CHECK(callIn(*c, 4)->inlined != nullptr);    // formal arguments
     CHECK(callIn(*c, 5)->inlined == nullptr);    // JMP needs the labels of a Block
-    // The constant argument is part of the call's frame image; the variable one is bound per call.
+    // The constant argument is part of the call's frame image; the caller's
+    // variable is read by the body itself (decision 0403: one task, a leaf
+    // that writes only its own frame): nothing is bound per call.
     CHECK(callIn(*c, 0)->binds.empty());
-    CHECK(callIn(*c, 4)->binds.size() == 1);
+    CHECK(callIn(*c, 4)->binds.empty());
     // Decision 0382: the per-call list ends with How::End; Leaf's one
     // statement is run directly; the calls run on the caller (no METHOD).
     const exec::InlinedCall& leaf = *callIn(*c, 4)->inlined;
-    REQUIRE(leaf.binds.size() == 2);
-    CHECK(leaf.binds[0].how == exec::ArgBind::How::CopySelf4);
-    CHECK(leaf.binds[1].how == exec::ArgBind::How::End);
+    REQUIRE(leaf.binds.size() == 1);
+    CHECK(leaf.binds[0].how == exec::ArgBind::How::End);
+    // Decision 0404: no list to walk, and only the result initialised.
+    CHECK(leaf.args == exec::InlinedCall::Args::None);
+    CHECK(leaf.resultOnly);
     CHECK(leaf.single != nullptr);
     CHECK(callIn(*c, 4)->inlinedOnCaller);
     CHECK(callIn(*c, 0)->inlined->binds.size() == 1);  // constants only: just the End
