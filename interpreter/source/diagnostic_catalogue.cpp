@@ -195,6 +195,7 @@ const std::vector<CodeInfo> kCatalogue = {
      "VAR_GLOBAL g : INT; END_VAR\n...\nVAR_EXTERNAL g : INT; END_VAR"},
     {"E0407", K::Error, "wrong type declaration",
      "A type is declared in a way ST does not allow: an array whose upper bound is below its lower bound, ARRAY[*] "
+     "below a REFERENCE TO (decision 0428) or "
      "outside VAR_IN_OUT, a subrange or enumeration on a base type that is not an integer, a string length outside "
      "0..65535, EXTENDS on a type that is not a structure, an enumeration value without an explicit value after "
      "the largest LINT, values in '<...>' after a block whose VAR_GENERIC CONSTANTs they do not match in number, "
