@@ -213,6 +213,10 @@ Checked Checker::propertyAccess(Checked base, const std::string& key, const ast:
     PouInfo* setter = findMethod(owner, "__SET_" + key);
     if (!getter && !setter) return bad(loc);
     found = true;
+    // A PRIVATE property is checked as a PRIVATE method is (decision 0430).
+    if (const PouInfo* accessor = getter ? getter : setter;
+        accessor->property && accessor->property->access == ast::Access::Private && !insideOwnInstance(accessor->owner))
+        error(diag::E0109, loc, fmt::format("property '{}' is PRIVATE", accessor->property->name));
     exec::Expr* instance = base.node;
     bool viaInterface = base.type->kind == TK::Interface;
     if (viaInterface) instance = pool().make<exec::AddressValuePlace>(base.node);
