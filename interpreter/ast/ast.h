@@ -142,6 +142,7 @@ struct TypeSpec {
     std::vector<std::vector<Arg>> elementInitArgs;  // Named, as an array's element: `ARRAY[1..2] OF FB[(a := 1), (a := 2)]`
     std::vector<ExprPtr> genericArgs;  // Named: `FB_X<6, (2 * c)>` — values of the block's VAR_GENERIC CONSTANTs
     bool isUnion = false;              // Struct written UNION ... END_UNION (CODESYS): members overlap
+    bool refTo = false;                // Pointer written REF_TO (not POINTER TO): messages name it so
 };
 
 enum class InitKind {

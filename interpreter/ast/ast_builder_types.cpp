@@ -247,6 +247,8 @@ bool AstBuilder::sharedTypeForm(Context* c, TypeSpec& out, Element&& element) {
         out.elem = element(a);
     } else if (auto* p = exactly<PointerForm>(c)) {
         out.kind = TypeSpecKind::Pointer;
+        // The parser builds no tree of tokens: the form's first token tells the spelling.
+        out.refTo = p->getStart() != nullptr && p->getStart()->getType() == L::REF_TO;
         out.elem = element(p);
     } else if (auto* r = exactly<ReferenceForm>(c)) {
         out.kind = TypeSpecKind::Reference;

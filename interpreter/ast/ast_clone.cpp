@@ -81,6 +81,7 @@ TypeSpecPtr cloneTypeSpec(const TypeSpec& t) {
     }
     for (const ExprPtr& g : t.genericArgs) out->genericArgs.push_back(cloneExprOrNull(g));
     out->isUnion = t.isUnion;
+    out->refTo = t.refTo;
     return out;
 }
 

@@ -135,7 +135,7 @@ std::string dump(const TypeSpec& t) {
             }
             return out + "] OF " + sub(t.elem);
         }
-        case TypeSpecKind::Pointer: return "POINTER TO " + sub(t.elem);
+        case TypeSpecKind::Pointer: return (t.refTo ? "REF_TO " : "POINTER TO ") + sub(t.elem);
         case TypeSpecKind::Reference: return "REFERENCE TO " + sub(t.elem);
         case TypeSpecKind::Subrange: return sub(t.elem) + "(" + opt(t.lo) + ".." + opt(t.hi) + ")";
         case TypeSpecKind::Enum: {

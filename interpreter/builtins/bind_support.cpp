@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/exec/value_nodes.h"
+#include "interpreter/sema/parameter_named_twice.h"
 #include "stdlib/string_functions.h"
 
 namespace strun::stdlib::bind {
@@ -54,7 +55,7 @@ bool bindFixed(Checker& ck, CallArgs& call, std::initializer_list<Formal> formal
     const size_t n = formals.size();
     const Formal* f = formals.begin();
     out.assign(n, Checked{});
-    std::vector<bool> given(n, false);
+    std::vector<bool> given(n, false), named(n, false);
     for (size_t k = 0; k < call.args.size(); ++k) {
         const ast::Arg& a = call.call->args[k];
         size_t idx = n;
@@ -74,10 +75,17 @@ bool bindFixed(Checker& ck, CallArgs& call, std::initializer_list<Formal> formal
             }
         }
         if (given[idx]) {
+            // Named twice: as for a user POU, W0044 and the last value (decision 0426);
+            // a positional argument landing on a given input stays an error (0204).
+            if (named[idx] && !call.names[k].empty()) {
+                if (!sema::rebindNamedTwice(ck, call, a.loc, firstName(f[idx].names), out[idx], call.args[k])) return false;
+                continue;
+            }
             ck.error(diag::E0302, a.loc, fmt::format("parameter '{}' of '{}' given twice", firstName(f[idx].names), call.name));
             return false;
         }
         given[idx] = true;
+        named[idx] = !call.names[k].empty();
         out[idx] = call.args[k];
     }
     for (size_t j = 0; j < n; ++j)
@@ -109,10 +117,10 @@ bool bindExtensible(Checker& ck, CallArgs& call, std::initializer_list<Formal> l
         for (size_t j = 0; j < nLead && !placed; ++j)
             if (matchesFormal(f[j].names, nm)) {
                 if (leadGiven[j]) {
-                    ck.error(diag::E0302, a.loc, fmt::format("parameter '{}' of '{}' given twice", nm, call.name));
-                    return false;
+                    if (!sema::rebindNamedTwice(ck, call, a.loc, firstName(f[j].names), lead[j], call.args[k])) return false;
+                } else {
+                    lead[j] = call.args[k];
                 }
-                lead[j] = call.args[k];
                 leadGiven[j] = true;
                 placed = true;
             }
@@ -124,10 +132,14 @@ bool bindExtensible(Checker& ck, CallArgs& call, std::initializer_list<Formal> l
             return false;
         }
         long index = std::stol(nm.substr(pre.size())) - firstIndex;
-        if (index < 0 || named.count(index)) {
-            ck.error(diag::E0302, a.loc, index < 0 ? fmt::format("'{}' has no parameter '{}'", call.name, a.name)
-                                      : fmt::format("parameter '{}' of '{}' given twice", a.name, call.name));
+        if (index < 0) {
+            ck.error(diag::E0302, a.loc, fmt::format("'{}' has no parameter '{}'", call.name, a.name));
             return false;
+        }
+        if (auto again = named.find(index); again != named.end()) {
+            if (!sema::rebindNamedTwice(ck, call, a.loc, fmt::format("{}{}", pre, index + firstIndex), again->second, call.args[k]))
+                return false;
+            continue;
         }
         named[index] = call.args[k];
     }

@@ -275,4 +275,23 @@ struct BitPlace final : Expr {
     int64_t i(Ctx& c) override { return (loadAs<T>(base->addr(c)) >> bit) & 1; }
 };
 
+// A standard function's input named twice (`LIMIT(MN := F(), MN := 2, ...)`,
+// decision 0426): the replaced argument is still evaluated, for its calls'
+// effects, before the function, whose value this is.
+struct ThenValue final : Expr {
+    enum class Kind : uint8_t { Int, Real, Addr };
+    Expr* first;
+    Kind firstKind;
+    Expr* value;
+    ThenValue(Expr* f, Kind k, Expr* v) : first(f), firstKind(k), value(v) {}
+    void discardFirst(Ctx& c) {
+        if (firstKind == Kind::Int) first->i(c);
+        else if (firstKind == Kind::Real) first->f(c);
+        else first->addr(c);
+    }
+    int64_t i(Ctx& c) override { discardFirst(c); return value->i(c); }
+    double f(Ctx& c) override { discardFirst(c); return value->f(c); }
+    uint8_t* addr(Ctx& c) override { discardFirst(c); return value->addr(c); }
+};
+
 }  // namespace strun::exec

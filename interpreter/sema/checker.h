@@ -35,6 +35,7 @@ struct CallArgs {
     std::vector<Checked> args;    // positional order (formal args placed by their name when known)
     std::vector<std::string> names;  // formal names as written (upper-case), "" if positional
     ast::Loc loc;
+    std::vector<Checked> replaced;   // earlier values of an input named twice that call something (decision 0426)
 };
 using BuiltinFn = std::function<Checked(Checker&, CallArgs&)>;
 

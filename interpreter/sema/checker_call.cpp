@@ -5,6 +5,7 @@
 #include "interpreter/sema/any_argument.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/fuse.h"
+#include "interpreter/sema/parameter_named_twice.h"
 #include "interpreter/sema/node_factory.h"
 
 namespace strun::sema {
@@ -137,7 +138,7 @@ bool bindArguments(Checker& ck, const PouInfo* owner, const std::string& callee,
             const std::string twice = fmt::format("parameter '{}' given twice", param->name);
             if (a.name.empty() || !named.count(param)) {
                 ck.error(diag::E0302, a.loc, twice);
-            } else if (ck.lenient(diag::W0044, a.loc, ck.compileOptions().strict ? twice : twice + "; the last value is the one passed")) {
+            } else if (acceptNamedTwice(ck, a.loc, twice)) {
                 out.push_back({&a, param});
                 continue;
             }
@@ -497,6 +498,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             Checked r = b->second(*this, args);
             if (r.ok) {
                 for (const auto& a : args.args) r.hasCall = r.hasCall || a.hasCall;
+                sequenceReplaced(*this, args, r);
             }
             return r;
         }

@@ -444,10 +444,19 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
         }
         case ast::TypeSpecKind::Pointer: {
             const Type* target = resolveTypeSpec(spec->elem.get(), context);
-            return target ? types().pointer(target) : nullptr;
+            return target ? (spec->refTo ? types().refTo(target) : types().pointer(target)) : nullptr;
         }
         case ast::TypeSpecKind::Reference: {
             const Type* target = resolveTypeSpec(spec->elem.get(), context);
+            // TwinCAT and CODESYS take an ARRAY[*] only at the top of a
+            // parameter's type; REFERENCE TO is theirs alone (SIMATIC AX
+            // writes REF_TO ARRAY[*], which strun accepts): decision 0428.
+            if (target && target->kind == TK::Array && target->flexible) {
+                error(diag::E0407, spec->loc, "REFERENCE TO ARRAY[*] is not a type TwinCAT or CODESYS accept")
+                    .withHelp("declare a VAR_IN_OUT 'name : ARRAY[*] OF T' (passed by reference), or a 'REF_TO ARRAY[*] OF T' "
+                              "bound with REF(array)");
+                return nullptr;
+            }
             return target ? types().reference(target) : nullptr;
         }
         case ast::TypeSpecKind::Subrange: {

@@ -1377,14 +1377,19 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
         // A constant that is one of its values may still be assigned, as the attribute's
         // documentation words it ("a constant value which is not an enumeration value").
         bool isOneOfItsValues = false;
-        if (en->strictEnum && intToEnum && e.isConst)
+        if (intToEnum && e.isConst)
             for (const Enumerator& v : en->enumerators) isOneOfItsValues = isOneOfItsValues || v.value == e.constInt;
         if (en->strictEnum && intToEnum && !isOneOfItsValues) {
             error(diag::E0201, loc, fmt::format("{}: cannot convert {} to {} implicitly; '{}' has {{attribute 'strict'}}", what, typeName(from),
                                    typeName(target), en->name));
             return bad(loc);
         }
-        if (!lenient(diag::W0001, loc, fmt::format("implicit conversion from {} to {}", typeName(from), typeName(target)))) return bad(loc);
+        // A constant that is one of its values (`ParameterNumber := 18`) is what
+        // TwinCAT and CODESYS take without a message, strict or not; IEC has no
+        // integer-to-enumeration conversion, so --strict still refuses it (decision 0429).
+        const bool silent = isOneOfItsValues && !options_.strict;
+        if (!silent && !lenient(diag::W0001, loc, fmt::format("implicit conversion from {} to {}", typeName(from), typeName(target))))
+            return bad(loc);
         Checked c = convert(e, enumToInt ? target : en->base, loc);
         if (!c.ok) return c;
         c.type = target;

@@ -1,6 +1,8 @@
 // Object orientation (IEC 61131-3 3rd edition, CODESYS): methods with
 // dynamic dispatch, THIS / SUPER, properties, interfaces, pointers and
 // references.
+#include <cstring>
+
 #include <fmt/format.h>
 
 #include "interpreter/sema/checker.h"
@@ -211,6 +213,10 @@ Checked Checker::propertyAccess(Checked base, const std::string& key, const ast:
     PouInfo* setter = findMethod(owner, "__SET_" + key);
     if (!getter && !setter) return bad(loc);
     found = true;
+    // A PRIVATE property is checked as a PRIVATE method is (decision 0430).
+    if (const PouInfo* accessor = getter ? getter : setter;
+        accessor->property && accessor->property->access == ast::Access::Private && !insideOwnInstance(accessor->owner))
+        error(diag::E0109, loc, fmt::format("property '{}' is PRIVATE", accessor->property->name));
     exec::Expr* instance = base.node;
     bool viaInterface = base.type->kind == TK::Interface;
     if (viaInterface) instance = pool().make<exec::AddressValuePlace>(base.node);
@@ -309,7 +315,7 @@ Checked Checker::addressOf(const ast::Expr& e, const char* fn) {
     c.ok = true;
     c.loc = e.loc;
     c.hasCall = v.hasCall;
-    c.type = types().pointer(v.type);
+    c.type = std::strcmp(fn, "REF") == 0 ? types().refTo(v.type) : types().pointer(v.type);  // as written (decision 0427)
     c.node = pool().make<exec::AddressOf>(v.node);
     c.node->type = c.type;
     c.flexDesc = v.flexDesc;  // REF(arr) of an ARRAY[*]: its bounds come from its descriptor (decision 0402)

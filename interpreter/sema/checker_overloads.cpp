@@ -45,7 +45,7 @@ std::string typeText(const ast::TypeSpec* t) {
         }
         case ast::TypeSpecKind::String: return t->wide ? "WSTRING" : "STRING";
         case ast::TypeSpecKind::Array: return "ARRAY OF " + typeText(t->elem.get());
-        case ast::TypeSpecKind::Pointer: return "POINTER TO " + typeText(t->elem.get());
+        case ast::TypeSpecKind::Pointer: return (t->refTo ? "REF_TO " : "POINTER TO ") + typeText(t->elem.get());
         case ast::TypeSpecKind::Reference: return "REF_TO " + typeText(t->elem.get());
         default: return "?";
     }

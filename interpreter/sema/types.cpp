@@ -226,12 +226,12 @@ const Type* TypeTable::array(const Type* elem, std::vector<ArrayDim> dims, bool 
 }
 
 // POINTER TO x and REFERENCE TO x: one 8-byte address type per target, cached.
-const Type* TypeTable::indirect(TK kind, const Type* target, std::map<const Type*, const Type*>& cache) {
+const Type* TypeTable::indirect(TK kind, const char* spelling, const Type* target, std::map<const Type*, const Type*>& cache) {
     auto it = cache.find(target);
     if (it != cache.end()) return it->second;
     Type t;
     t.kind = kind;
-    t.name = (kind == TK::Pointer ? "POINTER TO " : "REFERENCE TO ") + target->name;
+    t.name = spelling + target->name;
     t.target = target;
     t.size = 8;
     // REF_TO ARRAY[*]: the address and the bounds, the descriptor of an
@@ -243,9 +243,11 @@ const Type* TypeTable::indirect(TK kind, const Type* target, std::map<const Type
     return &storage_.back();
 }
 
-const Type* TypeTable::pointer(const Type* target) { return indirect(TK::Pointer, target, pointers_); }
+const Type* TypeTable::pointer(const Type* target) { return indirect(TK::Pointer, "POINTER TO ", target, pointers_); }
 
-const Type* TypeTable::reference(const Type* target) { return indirect(TK::Reference, target, references_); }
+const Type* TypeTable::refTo(const Type* target) { return indirect(TK::Pointer, "REF_TO ", target, refTos_); }
+
+const Type* TypeTable::reference(const Type* target) { return indirect(TK::Reference, "REFERENCE TO ", target, references_); }
 
 Type* TypeTable::create(Type t) {
     storage_.push_back(std::move(t));

@@ -142,6 +142,10 @@ public:
     const Type* string(uint32_t maxLen, bool wide);
     const Type* array(const Type* elem, std::vector<ArrayDim> dims, bool flexible);
     const Type* pointer(const Type* target);
+    // The same pointer type written `REF_TO x` (IEC Ed.3, SIMATIC AX): its own
+    // object only so that messages name it as written; sameType() and every
+    // conversion treat it as POINTER TO x (decision 0427).
+    const Type* refTo(const Type* target);
     const Type* reference(const Type* target);
     Type* create(Type t);  // user types (enum, struct, FB, alias, subrange)
     // TIME and LTIME become TwinCAT's unsigned ones (decision 0367); before any user type copies them.
@@ -152,12 +156,12 @@ public:
     const Type* voidType() const { return elementary(TK::Void); }
 
 private:
-    const Type* indirect(TK kind, const Type* target, std::map<const Type*, const Type*>& cache);
+    const Type* indirect(TK kind, const char* spelling, const Type* target, std::map<const Type*, const Type*>& cache);
     std::deque<Type> storage_;
     std::vector<const Type*> elementary_;
     std::map<std::string, const Type*> names_;
     std::map<std::pair<uint32_t, bool>, const Type*> strings_;
-    std::map<const Type*, const Type*> pointers_, references_;
+    std::map<const Type*, const Type*> pointers_, refTos_, references_;
 };
 
 std::string upper(std::string s);

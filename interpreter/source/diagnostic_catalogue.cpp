@@ -156,7 +156,7 @@ const std::vector<CodeInfo> kCatalogue = {
      "y := LIMIT(0, x);", "y := LIMIT(0, x, 100);"},
     {"E0302", K::Error, "no such parameter, or a parameter given twice",
      "A formal argument `name := value` names no input (or `name => var` no output) of the called POU, names one "
-     "twice (a standard function's, or any with --strict; see W0044), or mixes named and positional inputs where "
+     "twice (by a positional argument landing on an input already named, or by name with --strict; see W0044), or mixes named and positional inputs where "
      "the function needs one or the other.",
      "t(IN := start, Time := T#1s);", "t(IN := start, PT := T#1s);"},
     {"E0303", K::Error, "input or output connected the wrong way",
@@ -197,6 +197,7 @@ const std::vector<CodeInfo> kCatalogue = {
      "VAR_GLOBAL g : INT; END_VAR\n...\nVAR_EXTERNAL g : INT; END_VAR"},
     {"E0407", K::Error, "wrong type declaration",
      "A type is declared in a way ST does not allow: an array whose upper bound is below its lower bound, ARRAY[*] "
+     "below a REFERENCE TO (decision 0428) or "
      "outside VAR_IN_OUT, a subrange or enumeration on a base type that is not an integer, a string length outside "
      "0..1048576, EXTENDS on a type that is not a structure, an enumeration value without an explicit value after "
      "the largest LINT, values in '<...>' after a block whose VAR_GENERIC CONSTANTs they do not match in number, "
@@ -334,7 +335,9 @@ const std::vector<CodeInfo> kCatalogue = {
     {"W0044", K::Warning, "a parameter given twice in one call",
      "A call names the same input (or output) twice, as `fb(Execute := TRUE, Axis := a, Execute := TRUE)`. "
      "TwinCAT compiles such calls; strun binds both in the order written, so the last value is the one the "
-     "called POU sees (decision 0350). With --strict it is an error: remove one of the two.",
+     "called POU sees (decision 0350). A standard function's input named twice (`LIMIT(MN := 0, MN := 1, ...)`) "
+     "is the same: the last value is passed, and an earlier one that calls something is still evaluated (decision "
+     "0426). With --strict it is an error: remove one of the two.",
      "fbHalt(Execute := TRUE, Axis := axis, Execute := TRUE);", "fbHalt(Execute := TRUE, Axis := axis);"},
     {"W0045", K::Warning, "inline C code is not run",
      "matiec and Beremiz (OpenPLC) copy a `{{ ... }}` block of C code into the program they compile, where it "

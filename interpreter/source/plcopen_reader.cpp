@@ -276,8 +276,22 @@ struct PlcopenReader : XmlConversion {
         written(i, "END_INTERFACE");
     }
 
+    // CODESYS writes a method's or property's access in its <interface>'s
+    // <addData><data name=".../accessmodifiers"><AccessModifiers Private="true" />
+    // (an empty element for PUBLIC): " PRIVATE" etc. for its ST header (decision 0430).
+    std::string accessModifier(const pugi::xml_node& itf) {
+        for (pugi::xml_node d : children(child(itf, "addData"), "data")) {
+            const std::string dataName = d.attribute("name").value();
+            if (dataName.size() < 15 || dataName.compare(dataName.size() - 15, 15, "accessmodifiers") != 0) continue;
+            pugi::xml_node m = child(d, "AccessModifiers");
+            for (const char* access : {"Private", "Protected", "Internal", "Public"})
+                if (m.attribute(access).as_bool()) return " " + upperCase(access);
+        }
+        return "";
+    }
+
     std::string propertyHead(const pugi::xml_node& prop) {
-        std::string head = std::string("PROPERTY ") + prop.attribute("name").value();
+        std::string head = std::string("PROPERTY") + accessModifier(child(prop, "interface")) + " " + prop.attribute("name").value();
         if (pugi::xml_node r = child(child(prop, "interface"), "returnType")) head += " : " + typeText(r);
         return head;
     }
@@ -348,7 +362,7 @@ struct PlcopenReader : XmlConversion {
         writeLines(main.body);
         for (auto& [method, t] : methods) {
             pugi::xml_node mitf = child(method, "interface");
-            std::string mhead = std::string("METHOD ") + method.attribute("name").value();
+            std::string mhead = std::string("METHOD") + accessModifier(mitf) + " " + method.attribute("name").value();
             if (pugi::xml_node r = child(mitf, "returnType")) mhead += " : " + typeText(r);
             written(method, mhead);
             interfaceOf(mitf);

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "interpreter/sema/parameter_named_twice.h"
+
 namespace strun::testing::native_call {
 
 using sema::CallArgs;
@@ -19,7 +21,7 @@ bool bindArgs(Checker& ck, CallArgs& call, std::initializer_list<Param> params, 
     const size_t n = params.size();
     const Param* p = params.begin();
     out.assign(n, Checked{});
-    std::vector<bool> given(n, false);
+    std::vector<bool> given(n, false), named(n, false);
     for (size_t k = 0; k < call.args.size(); ++k) {
         const ast::Arg& a = call.call->args[k];
         if (a.output) {
@@ -44,10 +46,16 @@ bool bindArgs(Checker& ck, CallArgs& call, std::initializer_list<Param> params, 
             }
         }
         if (given[idx]) {
+            // Named twice: W0044 and the last value, as for a user POU (decision 0426).
+            if (named[idx] && !call.names[k].empty()) {
+                if (!sema::rebindNamedTwice(ck, call, a.loc, p[idx].name, out[idx], call.args[k], written(call))) return false;
+                continue;
+            }
             ck.error(diag::E0302, a.loc, fmt::format("parameter '{}' of '{}' given twice", p[idx].name, written(call)));
             return false;
         }
         given[idx] = true;
+        named[idx] = !call.names[k].empty();
         out[idx] = call.args[k];
     }
     for (size_t j = 0; j < n; ++j)
