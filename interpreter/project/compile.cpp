@@ -66,7 +66,11 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
             toParse.push_back(index);
         }
     }
-    for (int f : userFiles)
+    // Files strun wrote as a project library (SourceSet::markProjectLibrary)
+    // come first, so that a user declaration of the same name replaces theirs.
+    std::vector<int> ordered = userFiles;
+    std::stable_partition(ordered.begin(), ordered.end(), [&](int f) { return sources.isProjectLibrary(f); });
+    for (int f : ordered)
         if (!extras || !extras->parsed.count(f)) toParse.push_back(f);
     if (extras && extras->libraryUnitsUsed) *extras->libraryUnitsUsed = borrowed;
     // Hands the lent library units back however this function ends.
@@ -104,7 +108,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
         units.push_back(std::move(unit));
         ++next;
     }
-    for (int f : userFiles) {
+    for (int f : ordered) {
         auto lent = extras ? extras->parsed.find(f) : std::map<int, ast::CompilationUnit*>::iterator();
         if (extras && lent != extras->parsed.end()) {
             giveBackParsed.lent.emplace_back(units.size(), lent->second);
@@ -121,6 +125,8 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     auto checkerOwner = std::make_unique<sema::Checker>(*model, log);
     sema::Checker& checker = *checkerOwner;
     if (extras && extras->observer) checker.setExprObserver(extras->observer);
+    for (int f : ordered)
+        if (sources.isProjectLibrary(f)) libraryFiles.insert(f);
     checker.setLibraryFiles(libraryFiles);
     sema::CompileOptions effective = options;
     for (int f : userFiles) effective.twincatRealText = effective.twincatRealText || source::isTwinCatObject(sources.file(f).path);
@@ -153,6 +159,7 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     if (failure) std::rethrow_exception(failure);
     if (!damage.lines.empty()) dropSyntaxCascades(log, damage);
     groupMissingLibraryNames(log, sources.referencedLibraries());  // a .plcproj's libraries strun lacks
+    explainPinnedTypes(log, sources.pinnedTypes());                 // a .plcproj's pinned types strun could not read
     if (extras && extras->keepChecker) *extras->keepChecker = std::move(checkerOwner);
     if (log.hasErrors()) {
         if (extras && extras->modelEvenWithErrors) *extras->modelEvenWithErrors = std::move(model);

@@ -72,4 +72,19 @@ void groupMissingLibraryNames(CompileLog& log, const std::vector<std::string>& r
     }
 }
 
+void explainPinnedTypes(CompileLog& log, const std::vector<std::string>& pinned) {
+    if (pinned.empty()) return;
+    log.decorate([&](Diagnostic& d) {
+        if (d.code != diag::text(diag::E0102)) return;
+        for (const std::string& type : pinned)
+            if (sameName(d.message, "unknown type '" + type + "'")) {
+                d.withHelp(fmt::format("'{}' is a global data type the project's .plcproj pins (<PinnedGlobalDataType>): TwinCAT "
+                                       "keeps it in the solution's type system; give strun the solution folder (with the "
+                                       ".tsproj) or the project's .tmc",
+                                       type));
+                return;
+            }
+    });
+}
+
 }  // namespace strun::project

@@ -15,4 +15,9 @@ namespace strun::project {
 // library, at the first of them. Errors about other names are untouched.
 void groupMissingLibraryNames(CompileLog& log, const std::vector<std::string>& referenced);
 
+// Says, under an "unknown type" error about a global data type a .plcproj
+// pins (`pinned`), where TwinCAT keeps it and what strun needs to read it
+// (decision 0447).
+void explainPinnedTypes(CompileLog& log, const std::vector<std::string>& pinned);
+
 }  // namespace strun::project

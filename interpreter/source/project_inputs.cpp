@@ -11,6 +11,7 @@
 #include "interpreter/source/read_source.h"
 #include "interpreter/source/st_textual_sfc.h"
 #include "interpreter/source/twincat_event_classes.h"
+#include "interpreter/source/twincat_global_types.h"
 #include "interpreter/source/twincat_plc_project.h"
 #include "interpreter/source/twincat_system_event_classes.h"
 #include "interpreter/source/xml_inputs.h"
@@ -44,7 +45,8 @@ std::size_t projectBytes(const SourceSet& sources) {
 // them compiles are left out, as TwinCAT leaves them out of the build, and
 // the libraries they reference are noted (decision 0279). A .plcproj that
 // cannot be read, or lists no file, changes nothing.
-void applyPlcProjects(const std::vector<std::string>& plcProjects, std::vector<std::string>& found, SourceSet& sources) {
+void applyPlcProjects(const std::vector<std::string>& plcProjects, std::vector<std::string>& found, SourceSet& sources,
+                      std::vector<std::string>& pinnedTypes) {
     std::set<std::string> compiled;
     bool listsFiles = false;
     for (const std::string& path : plcProjects) {
@@ -55,6 +57,8 @@ void applyPlcProjects(const std::vector<std::string>& plcProjects, std::vector<s
         listsFiles = listsFiles || !project.compiled.empty();
         for (const std::string& file : project.compiled) compiled.insert(lowerPath(fs::path(path).parent_path() / file));
         for (const std::string& library : project.libraries) sources.addReferencedLibrary(library);
+        pinnedTypes.insert(pinnedTypes.end(), project.pinnedTypes.begin(), project.pinnedTypes.end());
+        for (const std::string& type : project.pinnedTypes) sources.addPinnedType(type);
     }
     if (!listsFiles) return;
     std::erase_if(found, [&](const std::string& f) { return isTwinCatObject(f) && !compiled.count(lowerPath(f)); });
@@ -161,6 +165,30 @@ void addEventClassLists(std::vector<std::string> typeSystems, size_t firstFile, 
     userFiles.push_back(sources.add(typeSystems.front() + " (TC_EVENTS)", std::move(st)));
 }
 
+// The global data types of the folder's type systems its sources (from
+// `firstFile` on) name (decision 0447): those of a .tsproj and of a .tmc of
+// data types only, and those a .plcproj pins from a PLC project's own .tmc.
+// They come as a project library: a DUT of the same name replaces one.
+void addGlobalDataTypes(std::vector<std::string> typeSystems, const std::vector<std::string>& pinnedTypes, size_t firstFile,
+                        SourceSet& sources, std::vector<int>& userFiles) {
+    if (typeSystems.empty() || firstFile >= userFiles.size()) return;
+    std::stable_sort(typeSystems.begin(), typeSystems.end(), [](const std::string& a, const std::string& b) {
+        return (lowerExtension(a) == ".tsproj") > (lowerExtension(b) == ".tsproj");
+    });
+    std::vector<TwinCatDataType> types;
+    for (const std::string& path : typeSystems) {
+        std::string xml, unused;
+        if (readSourceText(path, 0, xml, unused)) readTwinCatDataTypes(xml, pinnedTypes.empty() ? nullptr : &pinnedTypes, types);
+    }
+    std::vector<const std::string*> texts;
+    for (size_t k = firstFile; k < userFiles.size(); ++k) texts.push_back(&sources.file(userFiles[k]).text);
+    std::string st = twinCatGlobalTypesSource(types, texts);
+    if (st.empty()) return;
+    const int file = sources.add(typeSystems.front() + " (global data types)", std::move(st));
+    sources.markProjectLibrary(file);
+    userFiles.push_back(file);
+}
+
 // The sources under `dir`, recursively (an unreadable part is left out).
 std::vector<std::string> sourcesUnder(const std::string& dir) {
     std::vector<std::string> found;
@@ -198,7 +226,7 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
         if (fs::is_directory(path, ec)) {
             // Every source under the directory, in a stable (name) order; project
             // files of the IDEs (.plcproj, .tsproj, .sln, ...) are not sources.
-            std::vector<std::string> found, plcProjects, typeSystems;
+            std::vector<std::string> found, plcProjects, typeSystems, pinnedTypes;
             fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
             for (; !ec && it != end; it.increment(ec)) {
                 if (!it->is_regular_file(ec)) continue;
@@ -211,7 +239,7 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
                 return false;
             }
             std::sort(plcProjects.begin(), plcProjects.end());
-            applyPlcProjects(plcProjects, found, sources);
+            applyPlcProjects(plcProjects, found, sources, pinnedTypes);
             std::sort(found.begin(), found.end());
             // A Beremiz / OpenPLC Editor folder is its plc.xml (decision 0356).
             for (BeremizFolder& folder : takeBeremizFolders(found)) addBeremizProject(folder, true, sources, userFiles, log);
@@ -226,6 +254,7 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
                 if (!readSourceText(f, projectBytes(sources), text, usageError)) return false;
                 addFile(f, std::move(text), sources, userFiles, log, true);
             }
+            addGlobalDataTypes(typeSystems, pinnedTypes, firstOfDirectory, sources, userFiles);
             addEventClassLists(typeSystems, firstOfDirectory, sources, userFiles);
             continue;
         }

@@ -63,10 +63,22 @@ public:
         if (std::find(libraries_.begin(), libraries_.end(), name) == libraries_.end()) libraries_.push_back(name);
     }
     const std::vector<std::string>& referencedLibraries() const { return libraries_; }
+    // `<PinnedGlobalDataType>` names of a .plcproj (decision 0447).
+    void addPinnedType(const std::string& name) { pinnedTypes_.push_back(name); }
+    const std::vector<std::string>& pinnedTypes() const { return pinnedTypes_; }
+    // A file strun wrote from the project's files that is checked as a
+    // library file: a declaration of the user's named like one of it replaces
+    // it (the global data types of a TwinCAT type system, decision 0447).
+    void markProjectLibrary(int index) { projectLibraries_.push_back(index); }
+    bool isProjectLibrary(int index) const {
+        return std::find(projectLibraries_.begin(), projectLibraries_.end(), index) != projectLibraries_.end();
+    }
 
 private:
     std::vector<SourceFile> files_;
     std::vector<std::string> libraries_;
+    std::vector<int> projectLibraries_;
+    std::vector<std::string> pinnedTypes_;
 };
 
 class CompileLog {
@@ -94,6 +106,11 @@ public:
         }));
     }
     size_t droppedCount() const { return dropped_; }
+    // Lets `f` add notes and help lines to every kept diagnostic.
+    template <class F>
+    void decorate(F f) {
+        for (Diagnostic& d : messages_) f(d);
+    }
     // True for the scratch diagnostic a reporter past the cap decorates.
     bool isDropped(const Diagnostic& d) const { return &d == &overflow_; }
     // Removes the messages from position `count` on (a check whose result was discarded).

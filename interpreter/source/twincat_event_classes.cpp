@@ -1,4 +1,5 @@
 #include "interpreter/source/twincat_event_classes.h"
+#include "interpreter/source/twincat_global_types.h"
 
 #include <algorithm>
 #include <cctype>
@@ -157,19 +158,7 @@ std::string twinCatEventClassesSource(const std::vector<TwinCatEventClass>& clas
 }
 
 bool mentionsTwinCatEventLists(const std::string& text) {
-    static const std::string names[] = {"tc_events", "tc_event_classes"};
-    for (size_t i = 0; i + 9 <= text.size(); ++i) {
-        if (text[i] != 'T' && text[i] != 't') continue;
-        if (i > 0 && (std::isalnum(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '_')) continue;
-        for (const std::string& n : names) {
-            if (i + n.size() > text.size()) continue;
-            bool same = true;
-            for (size_t k = 0; k < n.size() && same; ++k) same = std::tolower(static_cast<unsigned char>(text[i + k])) == n[k];
-            const size_t end = i + n.size();
-            if (same && (end == text.size() || !(std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_'))) return true;
-        }
-    }
-    return false;
+    return mentionsWord(text, "tc_events") || mentionsWord(text, "tc_event_classes");
 }
 
 }  // namespace strun::source

@@ -44,6 +44,8 @@ bool readPlcProject(const std::string& text, PlcProject& out, std::string& error
                 std::string name = trimmed(include.substr(0, include.find(',')));
                 if (!name.empty() && std::find(out.libraries.begin(), out.libraries.end(), name) == out.libraries.end())
                     out.libraries.push_back(name);
+            } else if (kind == "PinnedGlobalDataType") {
+                out.pinnedTypes.push_back(include);
             }
         }
     }

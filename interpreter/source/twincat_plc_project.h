@@ -17,6 +17,9 @@ struct PlcProject {
     // `<PlaceholderReference Include="Tc2_MC2">`, `<LibraryReference
     // Include="Tc2_MC2, 3.3.12.0 (Beckhoff Automation GmbH)">`: the names.
     std::vector<std::string> libraries;
+    // `<PinnedGlobalDataType Include="ST_X"/>`: global data types of the
+    // solution's type system the project pins (decision 0447).
+    std::vector<std::string> pinnedTypes;
 };
 
 // False (with `error` set) when `text` is not well-formed XML with a
