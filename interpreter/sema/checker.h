@@ -209,6 +209,8 @@ private:
     Checked methodCall(Checked base, PouInfo* method, const ast::Expr& call);
     Checked checkThis(const ast::Expr& e, bool deref);
     Checked propertyAccess(Checked base, const std::string& upperName, const ast::Loc& loc, bool& found);
+    // `x` inside a block that has a PROPERTY x: THIS^.x (decision 0440).
+    Checked ownProperty(const std::string& upperName, const ast::Loc& loc, bool& found);
     exec::Stmt* assignProperty(Checked target, Checked value, const ast::Loc& loc);
     Checked autoDeref(Checked c);
     Checked addressOf(const ast::Expr& e, const char* fn);

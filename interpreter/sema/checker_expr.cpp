@@ -429,7 +429,14 @@ Checked Checker::checkName(const ast::Expr& e) {
         auto it = listGlobals_.find(qualifiedList_ + "." + key);
         if (it != listGlobals_.end() && !(pou_ && pou_->ast && libraryFiles_.count(pou_->ast->loc.file))) return varAccess(it->second, e.loc, false);
     }
-    if (VarSym* v = lookupVar(key)) {
+    VarSym* v = lookupVar(key);
+    if (!v || v->section == ast::VarSection::Global) {
+        // The block's own property: a member, so before the globals (decision 0440).
+        bool found = false;
+        Checked p = ownProperty(key, e.loc, found);
+        if (found) return p;
+    }
+    if (v) {
         // A base class's `VAR PRIVATE` member, named in a derived class (decision 0278).
         if (v->access == ast::Access::Private && v->section == ast::VarSection::Var && v->owner &&
             v->owner != (pou_ && pou_->owner ? pou_->owner : pou_) && v->owner != pou_) {

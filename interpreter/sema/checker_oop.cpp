@@ -251,6 +251,21 @@ Checked Checker::propertyAccess(Checked base, const std::string& key, const ast:
     return c;
 }
 
+// Inside a block (its body, methods, actions, other properties' accessors) its
+// own properties are named without THIS^, as its variables are: `x := x + d;`
+// calls GET and SET (TwinCAT, CODESYS; decision 0440). Inside a property's own
+// accessors the name is the result / the new value, a variable found first.
+Checked Checker::ownProperty(const std::string& key, const ast::Loc& loc, bool& found) {
+    found = false;
+    PouInfo* fb = pou_ && pou_->owner ? pou_->owner : pou_;
+    if (!fb || (fb->kind != ast::PouKind::FunctionBlock && fb->kind != ast::PouKind::Program)) return bad(loc);
+    if (!findMethod(fb, "__GET_" + key) && !findMethod(fb, "__SET_" + key)) return bad(loc);
+    ast::Expr thisExpr;
+    thisExpr.kind = ast::ExprKind::This;
+    thisExpr.loc = loc;
+    return propertyAccess(checkThis(thisExpr, true), key, loc, found);
+}
+
 exec::Stmt* Checker::assignProperty(Checked target, Checked value, const ast::Loc& loc) {
     PouInfo* setter = target.propertySetter;
     if (!setter) {
