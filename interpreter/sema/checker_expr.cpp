@@ -290,13 +290,6 @@ VarSym* Checker::lookupVar(const std::string& key) {
     return g->second;
 }
 
-const Enumerator* Checker::lookupEnumValue(const std::string& key, const Type** enumType) {
-    auto it = enumValues_.find(key);
-    if (it == enumValues_.end()) return nullptr;
-    *enumType = it->second.first;
-    return it->second.second;
-}
-
 template <class T>
 using Index1Self = exec::Index1Var<T, exec::BaseKind::Self>;
 template <class T>
@@ -486,8 +479,9 @@ Checked Checker::checkName(const ast::Expr& e) {
         return c;
     }
     const Type* et = nullptr;
-    if (const Enumerator* en = lookupEnumValue(key, &et)) {
-        if (ambiguousEnumValues_.count(key)) {
+    bool ambiguousEnum = false;
+    if (const Enumerator* en = lookupEnumValue(key, &et, ambiguousEnum)) {
+        if (ambiguousEnum) {
             error(diag::E0108, e.loc, fmt::format("'{}' is a value of several enumerations; qualify it (Type#{} or Type.{})", e.name, e.name, e.name));
             return bad(e.loc);
         }

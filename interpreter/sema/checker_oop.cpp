@@ -255,11 +255,15 @@ Checked Checker::propertyAccess(Checked base, const std::string& key, const ast:
 // own properties are named without THIS^, as its variables are: `x := x + d;`
 // calls GET and SET (TwinCAT, CODESYS; decision 0440). Inside a property's own
 // accessors the name is the result / the new value, a variable found first.
+bool Checker::hasOwnProperty(const std::string& key) {
+    PouInfo* fb = pou_ && pou_->owner ? pou_->owner : pou_;
+    if (!fb || (fb->kind != ast::PouKind::FunctionBlock && fb->kind != ast::PouKind::Program)) return false;
+    return findMethod(fb, "__GET_" + key) || findMethod(fb, "__SET_" + key);
+}
+
 Checked Checker::ownProperty(const std::string& key, const ast::Loc& loc, bool& found) {
     found = false;
-    PouInfo* fb = pou_ && pou_->owner ? pou_->owner : pou_;
-    if (!fb || (fb->kind != ast::PouKind::FunctionBlock && fb->kind != ast::PouKind::Program)) return bad(loc);
-    if (!findMethod(fb, "__GET_" + key) && !findMethod(fb, "__SET_" + key)) return bad(loc);
+    if (!hasOwnProperty(key)) return bad(loc);
     ast::Expr thisExpr;
     thisExpr.kind = ast::ExprKind::This;
     thisExpr.loc = loc;

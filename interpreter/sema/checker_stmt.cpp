@@ -258,7 +258,7 @@ exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
         if (root && root->kind == ast::ExprKind::Name && upper(root->name) == upper(pou_->result->name)) assignedResult_ = true;
     }
     Checked target = checkExpr(*s.target);
-    Checked value = checkExpr(*s.expr);
+    Checked value = checkExprExpecting(*s.expr, target.ok ? target.type : nullptr);
     if (!target.ok || !value.ok) return nullptr;
     if (s.kind == ast::StmtKind::SetAssign || s.kind == ast::StmtKind::ResetAssign) {
         if (target.type->kind != TK::Bool || value.type->kind != TK::Bool) {
@@ -354,7 +354,7 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
         size_t index = arms.blocks.size();
         for (const auto& lab : br.labels) {
             auto one = [&](const ast::Expr* e, int64_t& out) -> bool {
-                Checked c = checkExpr(*e);
+                Checked c = checkExprExpecting(*e, st);
                 if (!c.ok) return false;
                 if (!c.isConst) {
                     error(diag::E0503, e->loc, "a CASE label must be a constant");
