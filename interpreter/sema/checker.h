@@ -214,6 +214,7 @@ private:
     bool hasOwnProperty(const std::string& upperName);
     exec::Stmt* assignProperty(Checked target, Checked value, const ast::Loc& loc);
     Checked autoDeref(Checked c);
+    Checked derefReference(Checked c);
     Checked addressOf(const ast::Expr& e, const char* fn);
     std::map<std::string, int> methodSlots_;
     bool suppressAutoDeref_ = false;
@@ -247,6 +248,7 @@ private:
     Checked checkName(const ast::Expr& e);
     Checked checkMember(const ast::Expr& e);
     Checked checkMemberBase(const ast::Expr& base);
+    Checked checkMethodBase(const ast::Expr& base);
     Checked checkIndex(const ast::Expr& e);
     // TwinCAT/CODESYS forms (checker_lang_forms.cpp): s[i] on a STRING, p[i] on a
     // POINTER, `(x := v)` used as a value.

@@ -856,6 +856,16 @@ Checked Checker::checkMemberBase(const ast::Expr& base) {
     return checkExpr(base);
 }
 
+// The instance `base.M()` calls M of. `F().M()`, `fb.Now().ToLocal()`: the
+// REFERENCE TO a block that a call returns is the block (fluent interfaces;
+// decision 0442), as a REFERENCE variable is (autoDeref).
+Checked Checker::checkMethodBase(const ast::Expr& base) {
+    Checked c = checkMemberBase(base);
+    if (c.ok && c.type->kind == TK::Reference && (c.type->target->kind == TK::FunctionBlock || c.type->target->kind == TK::Interface))
+        return derefReference(c);
+    return c;
+}
+
 Checked Checker::checkIndex(const ast::Expr& e) {
     Checked base = checkExpr(*e.kids[0]);
     if (!base.ok) return base;

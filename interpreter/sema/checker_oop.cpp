@@ -296,7 +296,13 @@ exec::Stmt* Checker::assignProperty(Checked target, Checked value, const ast::Lo
 
 // REFERENCE TO x values are used as the x they refer to.
 Checked Checker::autoDeref(Checked c) {
-    if (!c.ok || c.type->kind != TK::Reference || suppressAutoDeref_) return c;
+    if (suppressAutoDeref_) return c;
+    return derefReference(c);
+}
+
+// The x a REFERENCE TO x value refers to, as a place (a NULL reference faults).
+Checked Checker::derefReference(Checked c) {
+    if (!c.ok || c.type->kind != TK::Reference) return c;
     const Type* target = c.type->target;
     Checked d;
     d.ok = true;

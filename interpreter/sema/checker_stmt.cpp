@@ -441,7 +441,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                                              !lookupVar(upper(chainRoot(*callee.kids[0]).name));  // GVL.fbInstance(...)
                 if (callee.kind == ast::ExprKind::Member && !qualifiedGlobal) {
                     // inst.Method(...) vs. structVar.fbMember(...)
-                    Checked base = checkMemberBase(*callee.kids[0]);
+                    Checked base = checkMethodBase(*callee.kids[0]);
                     PouInfo* method = nullptr;
                     if (base.ok && (base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou)
                         method = findMethod(base.type->pou, upper(callee.name));
