@@ -239,6 +239,17 @@ Checked Checker::propertyAccess(Checked base, const std::string& key, const ast:
         call->type = c.type;
         c.node = call;
         c.hasCall = true;
+        if (c.type->kind == TK::Reference && !suppressAutoDeref_) {
+            // A REFERENCE TO T property reads as the T it refers to, a place that
+            // `fb.Output.bDone := TRUE` writes through; assigning the property
+            // itself still calls SET (decision 0443). REF= on it keeps the reference.
+            Checked d = derefReference(c);
+            d.propertySetter = c.propertySetter;
+            d.propertyInstance = c.propertyInstance;
+            d.propertyName = c.propertyName;
+            d.superRef = c.superRef;
+            c = d;
+        }
     } else {
         layoutPou(setter);
         if (setter->params.empty()) return bad(loc);  // the property's type did not resolve (reported there)
@@ -279,8 +290,17 @@ exec::Stmt* Checker::assignProperty(Checked target, Checked value, const ast::Lo
     layoutPou(setter);
     if (setter->params.empty()) return nullptr;
     VarSym* p = setter->params.front();
-    Checked v = coerce(value, p->type, value.loc, "property value");
-    if (!v.ok) return nullptr;
+    exec::Expr* place = makeByRep<exec::PendingVar>(pool(), isAggregate(p->type) ? Rep::Void : repOf(p->type), p->offset);
+    exec::Stmt* bind = nullptr;
+    if (p->type->kind == TK::Reference) {
+        // A REFERENCE TO T property, set with := or REF=: SET receives a
+        // reference to the value, as a REFERENCE input does (decision 0443).
+        bind = bindReference(p, value, place, value.loc);
+    } else {
+        Checked v = coerce(value, p->type, value.loc, "property value");
+        if (v.ok) bind = storeTo(place, p->type, v.node);
+    }
+    if (!bind) return nullptr;
     ++userCallsMade_;
     auto* call = pool().make<exec::CallPou>();
     call->callee = setter->code;
@@ -288,8 +308,7 @@ exec::Stmt* Checker::assignProperty(Checked target, Checked value, const ast::Lo
     call->site = site(loc);
     call->rep = exec::ResultRep::None;
     if (!target.superRef && !(setter->owner && setter->owner->kind == ast::PouKind::Program)) call->virtualSlot = setter->slot;
-    exec::Expr* place = makeByRep<exec::PendingVar>(pool(), isAggregate(p->type) ? Rep::Void : repOf(p->type), p->offset);
-    call->inputs.push_back(storeTo(place, p->type, v.node));
+    call->inputs.push_back(bind);
     call->type = types().voidType();
     return pool().make<exec::EvalStmt>(call, exec::EvalStmt::Rep::Int);
 }

@@ -202,11 +202,17 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
     suppressAutoDeref_ = saved;
     if (!target.ok) return nullptr;
     if (s.kind == ast::StmtKind::RefAssign) {
+        bool isNull = s.expr->kind == ast::ExprKind::Literal && s.expr->lit == ast::LitKind::Integer && s.expr->text == "0";
+        if (target.propertyInstance && target.type->kind == TK::Reference) {
+            // `i_Timer.Input REF= _Input;` on a REFERENCE TO property: SET with the reference (decision 0443).
+            Checked src = isNull ? constInt(0, target.type, s.expr->loc) : checkExpr(*s.expr);
+            if (!src.ok) return nullptr;
+            return assignProperty(target, src, s.loc);
+        }
         if (target.type->kind != TK::Reference || !target.isPlace) {
             error(diag::E0206, s.target->loc, "REF= needs a REFERENCE TO variable on the left");
             return nullptr;
         }
-        bool isNull = s.expr->kind == ast::ExprKind::Literal && s.expr->lit == ast::LitKind::Integer && s.expr->text == "0";
         Checked v;
         if (isNull) {
             v = constInt(0, target.type, s.expr->loc);
