@@ -223,8 +223,12 @@ private:
     Checked methodCall(Checked base, PouInfo* method, const ast::Expr& call);
     Checked checkThis(const ast::Expr& e, bool deref);
     Checked propertyAccess(Checked base, const std::string& upperName, const ast::Loc& loc, bool& found);
+    // `x` inside a block that has a PROPERTY x: THIS^.x (decision 0440).
+    Checked ownProperty(const std::string& upperName, const ast::Loc& loc, bool& found);
+    bool hasOwnProperty(const std::string& upperName);
     exec::Stmt* assignProperty(Checked target, Checked value, const ast::Loc& loc);
     Checked autoDeref(Checked c);
+    Checked derefReference(Checked c);
     Checked addressOf(const ast::Expr& e, const char* fn);
     std::map<std::string, int> methodSlots_;
     bool suppressAutoDeref_ = false;
@@ -259,6 +263,7 @@ private:
     Checked checkName(const ast::Expr& e);
     Checked checkMember(const ast::Expr& e);
     Checked checkMemberBase(const ast::Expr& base);
+    Checked checkMethodBase(const ast::Expr& base);
     Checked checkIndex(const ast::Expr& e);
     // TwinCAT/CODESYS forms (checker_lang_forms.cpp): s[i] on a STRING, p[i] on a
     // POINTER, `(x := v)` used as a value.
@@ -295,7 +300,11 @@ private:
     std::set<std::pair<const PouInfo*, std::string>> constantsUsedEarly_;
     Checked partialAccess(Checked base, const std::string& key, const std::string& member, const ast::Loc& loc);
     VarSym* lookupVar(const std::string& upperName);
-    const Enumerator* lookupEnumValue(const std::string& upperName, const Type** enumType);
+    const Enumerator* lookupEnumValue(const std::string& upperName, const Type** enumType, bool& ambiguous);
+    // `e` where a value of `expected` is wanted (an assignment to it, a CASE label of
+    // it, the right of a comparison with it): a bare name of one of its values is
+    // that value, whatever else is called so (decision 0441); else checkExpr(e).
+    Checked checkExprExpecting(const ast::Expr& e, const Type* expected);
     Checked makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc);
     Checked makeCompare(ast::Op op, Checked a, Checked b, const ast::Loc& loc);
     Checked makeLogic(ast::Op op, Checked a, Checked b, const ast::Loc& loc);
@@ -543,8 +552,22 @@ private:
     exec::Stmt* callFunctionBlockEnEno(Checked inst, const ast::Expr& e);
     // `A` of `A.B.C`: a local variable named like it makes the chain a member access.
     static const ast::Expr& chainRoot(const ast::Expr& e);
-    std::map<std::string, std::pair<const Type*, const Enumerator*>> enumValues_;  // unqualified, unique ones
-    std::set<std::string> ambiguousEnumValues_;
+    // Enumeration values named without their type (checker_enum_scope.cpp, decision 0441):
+    // the global ones (named types, anonymous ones outside POUs), those of the
+    // anonymous enumerations of each POU's declarations, and all of the latter
+    // together (a value of another POU's anonymous enumeration, the last resort).
+    struct EnumNames {
+        std::map<std::string, std::pair<const Type*, const Enumerator*>> unique;
+        std::set<std::string> ambiguous;
+        void add(const std::string& upperName, const Type* t, const Enumerator* e) {
+            if (!unique.emplace(upperName, std::make_pair(t, e)).second) ambiguous.insert(upperName);
+        }
+    };
+    EnumNames enumValues_;
+    std::map<const PouInfo*, EnumNames> pouEnumValues_;
+    EnumNames anyPouEnumValues_;
+    const PouInfo* inlineEnumScope_ = nullptr;  // the POU whose declarations are being resolved
+    void registerEnumValues(const Type* created, bool inlineEnum);
     std::unordered_map<std::string, size_t> programIndex_;  // upper-case instance name -> model_.programs index
 
     // state while checking one body

@@ -516,7 +516,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         return bad(e.loc);
     }
     if (callee.kind == ast::ExprKind::Member) {
-        Checked base = checkMemberBase(*callee.kids[0]);
+        Checked base = checkMethodBase(*callee.kids[0]);
         if (!base.ok) return base;
         if ((base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou) {
             if (Checked overloaded; !methodOverloads_.empty() && callOverloadedMethod(base, base.type->pou, upper(callee.name), e, overloaded))

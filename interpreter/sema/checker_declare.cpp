@@ -248,6 +248,11 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
     if (!depth.ok()) return nullptr;
     NameScopeGuard scope(*this, decl->nameSpace, decl->loc.file);
     resolvingTypes_.insert(key);
+    // A TYPE's own inline enumerations (a STRUCT member's) are global, whichever
+    // POU's declaration made it be resolved now.
+    const bool inlineEnum = decl->name.rfind("__ENUM_", 0) == 0;
+    const PouInfo* enumScope = inlineEnumScope_;
+    if (!inlineEnum) inlineEnumScope_ = nullptr;
     const Type* result = nullptr;
     const ast::TypeSpec* spec = decl->spec.get();
     if (spec && spec->kind == ast::TypeSpecKind::Struct) {
@@ -348,12 +353,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
         t.enumDefault = t.enumerators.empty() ? 0 : t.enumerators.front().value;
         Type* created = types().create(std::move(t));
         resolvedTypes_[key] = created;
-        for (const auto& e : created->enumerators) {
-            std::string ek = upper(e.name);
-            if (created->qualifiedOnly) continue;  // only E.value / E#value name it
-            if (enumValues_.count(ek)) ambiguousEnumValues_.insert(ek);
-            else enumValues_[ek] = {created, &e};
-        }
+        registerEnumValues(created, inlineEnum);
         if (decl->init && decl->init->expr && decl->init->expr->kind == ast::ExprKind::Name) {
             const Enumerator* named = created->findEnumerator(upper(decl->init->expr->name));
             if (named) created->enumDefault = named->value;
@@ -376,6 +376,7 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
             result = base;  // a plain alias is the same type
         }
     }
+    inlineEnumScope_ = enumScope;
     resolvingTypes_.erase(key);
     resolvedTypes_[key] = result;
     return result;
@@ -754,7 +755,12 @@ void Checker::declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks
         for (const auto& decl : block.vars) {
             const Type* t = nullptr;
             bool isExternal = block.section == ast::VarSection::External;
-            if (decl.type) t = resolveTypeSpec(decl.type.get(), pou->name);
+            if (decl.type) {
+                const PouInfo* outer = inlineEnumScope_;
+                inlineEnumScope_ = pou;  // `eState : (IDLE, RUN)`: its values are the POU's (decision 0441)
+                t = resolveTypeSpec(decl.type.get(), pou->name);
+                inlineEnumScope_ = outer;
+            }
             if (!t && !isExternal) {
                 for (const std::string& name : decl.names) unresolvedVars_.insert({pou, upper(name)});
                 continue;

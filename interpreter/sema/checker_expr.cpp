@@ -302,13 +302,6 @@ VarSym* Checker::lookupVar(const std::string& key) {
     return g->second;
 }
 
-const Enumerator* Checker::lookupEnumValue(const std::string& key, const Type** enumType) {
-    auto it = enumValues_.find(key);
-    if (it == enumValues_.end()) return nullptr;
-    *enumType = it->second.first;
-    return it->second.second;
-}
-
 template <class T>
 using Index1Self = exec::Index1Var<T, exec::BaseKind::Self>;
 template <class T>
@@ -450,7 +443,14 @@ Checked Checker::checkName(const ast::Expr& e) {
         auto it = listGlobals_.find(qualifiedList_ + "." + key);
         if (it != listGlobals_.end() && !(pou_ && pou_->ast && libraryFiles_.count(pou_->ast->loc.file))) return varAccess(it->second, e.loc, false);
     }
-    if (VarSym* v = lookupVar(key)) {
+    VarSym* v = lookupVar(key);
+    if (!v || v->section == ast::VarSection::Global) {
+        // The block's own property: a member, so before the globals (decision 0440).
+        bool found = false;
+        Checked p = ownProperty(key, e.loc, found);
+        if (found) return p;
+    }
+    if (v) {
         // A base class's `VAR PRIVATE` member, named in a derived class (decision 0278).
         if (v->access == ast::Access::Private && v->section == ast::VarSection::Var && v->owner &&
             v->owner != (pou_ && pou_->owner ? pou_->owner : pou_) && v->owner != pou_) {
@@ -500,8 +500,9 @@ Checked Checker::checkName(const ast::Expr& e) {
         return c;
     }
     const Type* et = nullptr;
-    if (const Enumerator* en = lookupEnumValue(key, &et)) {
-        if (ambiguousEnumValues_.count(key)) {
+    bool ambiguousEnum = false;
+    if (const Enumerator* en = lookupEnumValue(key, &et, ambiguousEnum)) {
+        if (ambiguousEnum) {
             error(diag::E0108, e.loc, fmt::format("'{}' is a value of several enumerations; qualify it (Type#{} or Type.{})", e.name, e.name, e.name));
             return bad(e.loc);
         }
@@ -874,6 +875,16 @@ Checked Checker::checkMember(const ast::Expr& e) {
 Checked Checker::checkMemberBase(const ast::Expr& base) {
     if (base.kind == ast::ExprKind::This || base.kind == ast::ExprKind::Super) return checkThis(base, true);
     return checkExpr(base);
+}
+
+// The instance `base.M()` calls M of. `F().M()`, `fb.Now().ToLocal()`: the
+// REFERENCE TO a block that a call returns is the block (fluent interfaces;
+// decision 0442), as a REFERENCE variable is (autoDeref).
+Checked Checker::checkMethodBase(const ast::Expr& base) {
+    Checked c = checkMemberBase(base);
+    if (c.ok && c.type->kind == TK::Reference && (c.type->target->kind == TK::FunctionBlock || c.type->target->kind == TK::Interface))
+        return derefReference(c);
+    return c;
 }
 
 Checked Checker::checkIndex(const ast::Expr& e) {

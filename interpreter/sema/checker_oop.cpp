@@ -245,6 +245,17 @@ Checked Checker::propertyAccess(Checked base, const std::string& key, const ast:
         call->type = c.type;
         c.node = call;
         c.hasCall = true;
+        if (c.type->kind == TK::Reference && !suppressAutoDeref_) {
+            // A REFERENCE TO T property reads as the T it refers to, a place that
+            // `fb.Output.bDone := TRUE` writes through; assigning the property
+            // itself still calls SET (decision 0443). REF= on it keeps the reference.
+            Checked d = derefReference(c);
+            d.propertySetter = c.propertySetter;
+            d.propertyInstance = c.propertyInstance;
+            d.propertyName = c.propertyName;
+            d.superRef = c.superRef;
+            c = d;
+        }
     } else {
         layoutPou(setter);
         if (setter->params.empty()) return bad(loc);  // the property's type did not resolve (reported there)
@@ -257,6 +268,25 @@ Checked Checker::propertyAccess(Checked base, const std::string& key, const ast:
     return c;
 }
 
+// Inside a block (its body, methods, actions, other properties' accessors) its
+// own properties are named without THIS^, as its variables are: `x := x + d;`
+// calls GET and SET (TwinCAT, CODESYS; decision 0440). Inside a property's own
+// accessors the name is the result / the new value, a variable found first.
+bool Checker::hasOwnProperty(const std::string& key) {
+    PouInfo* fb = pou_ && pou_->owner ? pou_->owner : pou_;
+    if (!fb || (fb->kind != ast::PouKind::FunctionBlock && fb->kind != ast::PouKind::Program)) return false;
+    return findMethod(fb, "__GET_" + key) || findMethod(fb, "__SET_" + key);
+}
+
+Checked Checker::ownProperty(const std::string& key, const ast::Loc& loc, bool& found) {
+    found = false;
+    if (!hasOwnProperty(key)) return bad(loc);
+    ast::Expr thisExpr;
+    thisExpr.kind = ast::ExprKind::This;
+    thisExpr.loc = loc;
+    return propertyAccess(checkThis(thisExpr, true), key, loc, found);
+}
+
 exec::Stmt* Checker::assignProperty(Checked target, Checked value, const ast::Loc& loc) {
     PouInfo* setter = target.propertySetter;
     if (!setter) {
@@ -266,8 +296,17 @@ exec::Stmt* Checker::assignProperty(Checked target, Checked value, const ast::Lo
     layoutPou(setter);
     if (setter->params.empty()) return nullptr;
     VarSym* p = setter->params.front();
-    Checked v = coerce(value, p->type, value.loc, "property value");
-    if (!v.ok) return nullptr;
+    exec::Expr* place = makeByRep<exec::PendingVar>(pool(), isAggregate(p->type) ? Rep::Void : repOf(p->type), p->offset);
+    exec::Stmt* bind = nullptr;
+    if (p->type->kind == TK::Reference) {
+        // A REFERENCE TO T property, set with := or REF=: SET receives a
+        // reference to the value, as a REFERENCE input does (decision 0443).
+        bind = bindReference(p, value, place, value.loc);
+    } else {
+        Checked v = coerce(value, p->type, value.loc, "property value");
+        if (v.ok) bind = storeTo(place, p->type, v.node);
+    }
+    if (!bind) return nullptr;
     ++userCallsMade_;
     auto* call = pool().make<exec::CallPou>();
     call->callee = setter->code;
@@ -275,15 +314,20 @@ exec::Stmt* Checker::assignProperty(Checked target, Checked value, const ast::Lo
     call->site = site(loc);
     call->rep = exec::ResultRep::None;
     if (!target.superRef && !(setter->owner && setter->owner->kind == ast::PouKind::Program)) call->virtualSlot = setter->slot;
-    exec::Expr* place = makeByRep<exec::PendingVar>(pool(), isAggregate(p->type) ? Rep::Void : repOf(p->type), p->offset);
-    call->inputs.push_back(storeTo(place, p->type, v.node));
+    call->inputs.push_back(bind);
     call->type = types().voidType();
     return pool().make<exec::EvalStmt>(call, exec::EvalStmt::Rep::Int);
 }
 
 // REFERENCE TO x values are used as the x they refer to.
 Checked Checker::autoDeref(Checked c) {
-    if (!c.ok || c.type->kind != TK::Reference || suppressAutoDeref_) return c;
+    if (suppressAutoDeref_) return c;
+    return derefReference(c);
+}
+
+// The x a REFERENCE TO x value refers to, as a place (a NULL reference faults).
+Checked Checker::derefReference(Checked c) {
+    if (!c.ok || c.type->kind != TK::Reference) return c;
     const Type* target = c.type->target;
     Checked d;
     d.ok = true;

@@ -179,7 +179,9 @@ Checked Checker::checkUnary(const ast::Expr& e) {
 
 Checked Checker::checkBinary(const ast::Expr& e) {
     Checked a = checkExpr(*e.kids[0]);
-    Checked b = checkExpr(*e.kids[1]);
+    const bool compare = e.op == ast::Op::Eq || e.op == ast::Op::Ne || e.op == ast::Op::Lt || e.op == ast::Op::Le ||
+                         e.op == ast::Op::Gt || e.op == ast::Op::Ge;
+    Checked b = compare && a.ok ? checkExprExpecting(*e.kids[1], a.type) : checkExpr(*e.kids[1]);
     if (!a.ok || !b.ok) return bad(e.loc);
     switch (e.op) {
         case ast::Op::Eq: case ast::Op::Ne: case ast::Op::Lt: case ast::Op::Le: case ast::Op::Gt: case ast::Op::Ge:

@@ -220,11 +220,17 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
     suppressAutoDeref_ = saved;
     if (!target.ok) return nullptr;
     if (s.kind == ast::StmtKind::RefAssign) {
+        bool isNull = s.expr->kind == ast::ExprKind::Literal && s.expr->lit == ast::LitKind::Integer && s.expr->text == "0";
+        if (target.propertyInstance && target.type->kind == TK::Reference) {
+            // `i_Timer.Input REF= _Input;` on a REFERENCE TO property: SET with the reference (decision 0443).
+            Checked src = isNull ? constInt(0, target.type, s.expr->loc) : checkExpr(*s.expr);
+            if (!src.ok) return nullptr;
+            return assignProperty(target, src, s.loc);
+        }
         if (target.type->kind != TK::Reference || !target.isPlace) {
             error(diag::E0206, s.target->loc, "REF= needs a REFERENCE TO variable on the left");
             return nullptr;
         }
-        bool isNull = s.expr->kind == ast::ExprKind::Literal && s.expr->lit == ast::LitKind::Integer && s.expr->text == "0";
         Checked v;
         if (isNull) {
             v = constInt(0, target.type, s.expr->loc);
@@ -316,7 +322,7 @@ exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
         if (root && root->kind == ast::ExprKind::Name && upper(root->name) == upper(pou_->result->name)) assignedResult_ = true;
     }
     Checked target = checkExpr(*s.target);
-    Checked value = checkExpr(*s.expr);
+    Checked value = checkExprExpecting(*s.expr, target.ok ? target.type : nullptr);
     if (!target.ok || !value.ok) return nullptr;
     if (s.kind == ast::StmtKind::SetAssign || s.kind == ast::StmtKind::ResetAssign) {
         if (target.type->kind != TK::Bool || value.type->kind != TK::Bool) {
@@ -412,7 +418,7 @@ exec::Stmt* Checker::checkCase(const ast::Stmt& s) {
         size_t index = arms.blocks.size();
         for (const auto& lab : br.labels) {
             auto one = [&](const ast::Expr* e, int64_t& out) -> bool {
-                Checked c = checkExpr(*e);
+                Checked c = checkExprExpecting(*e, st);
                 if (!c.ok) return false;
                 if (!c.isConst) {
                     error(diag::E0503, e->loc, "a CASE label must be a constant");
@@ -499,7 +505,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                                              !lookupVar(upper(chainRoot(*callee.kids[0]).name));  // GVL.fbInstance(...)
                 if (callee.kind == ast::ExprKind::Member && !qualifiedGlobal) {
                     // inst.Method(...) vs. structVar.fbMember(...)
-                    Checked base = checkMemberBase(*callee.kids[0]);
+                    Checked base = checkMethodBase(*callee.kids[0]);
                     PouInfo* method = nullptr;
                     if (base.ok && (base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou)
                         method = findMethod(base.type->pou, upper(callee.name));

@@ -55,7 +55,7 @@ std::vector<std::string> Checker::visibleVariableNames() const {
         for (const PouInfo* p = self->owner; p != nullptr; p = p->parent)
             for (const auto& [key, v] : p->vars) out.push_back(v->name);
     for (const auto& [key, v] : globals_) out.push_back(v->name);
-    for (const auto& [key, value] : enumValues_) out.push_back(value.second->name);
+    for (const auto& [key, value] : enumValues_.unique) out.push_back(value.second->name);
     return out;
 }
 

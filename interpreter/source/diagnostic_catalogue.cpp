@@ -109,9 +109,10 @@ const std::vector<CodeInfo> kCatalogue = {
      "VAR\n    t : TON;\nEND_VAR\nt(IN := start, PT := T#1s);"},
     {"E0108", K::Error, "the name must be qualified",
      "The name is ambiguous or only reachable with its qualifier: an enumeration value that several enumerations "
-     "have (write `E_Mode#Run` or `E_Mode.Run`), or a variable of a global list with {attribute 'qualified_only'} "
-     "(write `GVL.name`).",
-     "x := Run;  (* Run is a value of two enumerations *)", "x := E_Mode.Run;"},
+     "have, where nothing says which one is meant (write `E_Mode#Run` or `E_Mode.Run`; assigned to an enumeration "
+     "variable, as a CASE label of one or compared with one, the bare value is that enumeration's), or a variable "
+     "of a global list with {attribute 'qualified_only'} (write `GVL.name`).",
+     "n := Run;  (* n is an INT; Run is a value of two enumerations *)", "n := E_Mode.Run;"},
     {"E0109", K::Error, "not visible from here",
      "The name exists but cannot be reached from this place: an internal variable (VAR) of a function block read "
      "from outside (only VAR_INPUT and VAR_OUTPUT are visible), a PRIVATE method, or THIS/SUPER outside a function "
