@@ -157,7 +157,8 @@ bool Checker::readsOnly(const ast::Expr& e, bool callerArgument, int depth) {
             if (!callerArgument) return true;  // a leaf's names are variables, enumeration values or constants
             const std::string key = upper(e.name);
             const Type* enumType = nullptr;
-            return lookupVar(key) != nullptr || lookupEnumValue(key, &enumType) != nullptr;
+            bool ambiguous = false;  // a value several enumerations share is still a value
+            return lookupVar(key) != nullptr || lookupEnumValue(key, &enumType, ambiguous) != nullptr || ambiguous;
         }
         case ast::ExprKind::Member:
             // In a leaf a member is a field, a bit or a qualified name, never a

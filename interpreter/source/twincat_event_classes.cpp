@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <pugixml.hpp>
 
+#include "interpreter/source/identifier_text.h"
 #include "stdlib/literals.h"
 #include "stdlib/number_scan.h"
 
@@ -13,19 +14,7 @@ namespace strun::source {
 
 namespace {
 
-std::string ecTrimmed(const std::string& s) {
-    const auto blank = [](unsigned char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
-    size_t first = 0, last = s.size();
-    while (first < last && blank(static_cast<unsigned char>(s[first]))) ++first;
-    while (last > first && blank(static_cast<unsigned char>(s[last - 1]))) --last;
-    return s.substr(first, last - first);
-}
-
-bool ecIsIdentifier(const std::string& s) {
-    if (s.empty() || s.size() > 127) return false;
-    if (!std::isalpha(static_cast<unsigned char>(s[0])) && s[0] != '_') return false;
-    return std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
-}
+std::string ecTrimmed(const std::string& s) { return std::string(stdlib::trimBlanks(s)); }
 
 int ecHexDigit(char c) {
     if (c >= '0' && c <= '9') return c - '0';
@@ -87,7 +76,7 @@ void readTwinCatEventClasses(const std::string& xml, std::vector<TwinCatEventCla
         TwinCatEventClass cls;
         const pugi::xml_node name = dataType.child("Name");
         cls.name = ecTrimmed(name.text().as_string());
-        if (!ecIsIdentifier(cls.name) || !ecParseGuid(name.attribute("GUID").as_string(), cls.guid)) continue;
+        if (!isPlainIdentifier(cls.name) || !ecParseGuid(name.attribute("GUID").as_string(), cls.guid)) continue;
         const bool known = std::any_of(out.begin(), out.end(), [&](const TwinCatEventClass& c) { return stdlib::equalsIgnoreCase(c.name, cls.name); });
         if (known) continue;
         cls.text = dataType.child("DisplayName").text().as_string();
@@ -96,7 +85,7 @@ void readTwinCatEventClasses(const std::string& xml, std::vector<TwinCatEventCla
             const pugi::xml_node evName = ev.child("Name");
             e.name = ecTrimmed(evName.text().as_string());
             const pugi::xml_attribute id = evName.attribute("Id");
-            if (!ecIsIdentifier(e.name) || !id) continue;
+            if (!isPlainIdentifier(e.name) || !id) continue;
             const std::string idText = ecTrimmed(id.as_string());
             if (idText.empty() || !std::all_of(idText.begin(), idText.end(), [](unsigned char c) { return std::isdigit(c); }) ||
                 idText.size() > 10)

@@ -6,26 +6,15 @@
 #include <pugixml.hpp>
 #include <set>
 
+#include "interpreter/source/identifier_text.h"
 #include "stdlib/literals.h"
+#include "stdlib/number_scan.h"
 
 namespace strun::source {
 
 namespace {
 
-std::string gtTrimmed(const std::string& s) {
-    const auto blank = [](unsigned char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
-    size_t first = 0, last = s.size();
-    while (first < last && blank(static_cast<unsigned char>(s[first]))) ++first;
-    while (last > first && blank(static_cast<unsigned char>(s[last - 1]))) --last;
-    return s.substr(first, last - first);
-}
-
-bool gtWordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
-bool gtIsIdentifier(const std::string& s) {
-    if (s.empty() || s.size() > 127 || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
-    return std::all_of(s.begin(), s.end(), gtWordChar);
-}
+std::string gtTrimmed(const std::string& s) { return std::string(stdlib::trimBlanks(s)); }
 
 std::string gtUpper(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
@@ -43,7 +32,7 @@ std::string gtLower(std::string s) {
 // their simple names. Empty when the text is no type name strun can read.
 std::string gtTypeText(pugi::xml_node type) {
     std::string text = gtTrimmed(type.text().as_string());
-    const bool simple = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return gtWordChar(c) || c == '(' || c == ')' || c == ' ' || c == '.'; });
+    const bool simple = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return isIdentifierChar(c) || c == '(' || c == ')' || c == ' ' || c == '.'; });
     if (!simple) return {};
     std::string prefix;
     for (int k = type.attribute("PointerTo").as_int(0); k > 0 && k < 4; --k) prefix += "POINTER TO ";
@@ -55,7 +44,7 @@ std::string gtTypeText(pugi::xml_node type) {
 std::string gtTypeName(const pugi::xml_node type) {
     const std::string text = gtTrimmed(type.text().as_string());
     size_t end = 0;
-    while (end < text.size() && gtWordChar(text[end])) ++end;
+    while (end < text.size() && isIdentifierChar(text[end])) ++end;
     return text.substr(0, end);
 }
 
@@ -86,7 +75,7 @@ std::string gtDefault(pugi::xml_node item) {
     if (pugi::xml_node b = d.child("Bool")) return std::string(" := ") + (b.text().as_bool() ? "TRUE" : "FALSE");
     if (pugi::xml_node e = d.child("EnumText")) {
         const std::string text = gtTrimmed(e.text().as_string());
-        return std::all_of(text.begin(), text.end(), [](char c) { return gtWordChar(c) || c == '.'; }) && !text.empty() ? " := " + text : std::string();
+        return std::all_of(text.begin(), text.end(), [](char c) { return isIdentifierChar(c) || c == '.'; }) && !text.empty() ? " := " + text : std::string();
     }
     if (pugi::xml_node t = d.child("DateTime")) {
         const std::string text = gtTrimmed(t.text().as_string());
@@ -124,7 +113,7 @@ bool gtConvert(pugi::xml_node dataType, TwinCatDataType& t) {
         for (pugi::xml_node e : dataType.children("EnumInfo")) {
             const std::string text = gtTrimmed(e.child("Text").text().as_string());
             const std::string value = gtTrimmed(e.child("Enum").text().as_string());
-            if (!gtIsIdentifier(text) || value.empty() || value.find_first_not_of("-0123456789") != std::string::npos) return false;
+            if (!isPlainIdentifier(text) || value.empty() || value.find_first_not_of("-0123456789") != std::string::npos) return false;
             values += (values.empty() ? "" : ", ") + text + " := " + value;
         }
         t.st = attributes + "TYPE " + t.name + " : (" + values + ")" + (base.empty() ? "" : " " + base) + ";\nEND_TYPE\n";
@@ -134,7 +123,7 @@ bool gtConvert(pugi::xml_node dataType, TwinCatDataType& t) {
         std::string head = "TYPE " + t.name;
         if (pugi::xml_node ext = dataType.child("ExtendsType")) {
             const std::string base = gtTypeName(ext);
-            if (!gtIsIdentifier(base)) return false;
+            if (!isPlainIdentifier(base)) return false;
             head += " EXTENDS " + base;
             t.uses.push_back(base);
         }
@@ -143,7 +132,7 @@ bool gtConvert(pugi::xml_node dataType, TwinCatDataType& t) {
             const std::string name = gtTrimmed(item.child("Name").text().as_string());
             const std::string type = gtTypeText(item.child("Type"));
             const std::string array = gtArrayPrefix(item);
-            if (!gtIsIdentifier(name) || type.empty() || array == "?") return false;
+            if (!isPlainIdentifier(name) || type.empty() || array == "?") return false;
             members += "    " + name + " : " + array + type + gtDefault(item) + ";\n";
             t.uses.push_back(gtTypeName(item.child("Type")));
         }
@@ -168,9 +157,9 @@ bool mentionsWord(const std::string& text, const std::string& lowerName) {
     const char first = lowerName[0];
     for (size_t i = 0; i + lowerName.size() <= text.size(); ++i) {
         if (std::tolower(static_cast<unsigned char>(text[i])) != first) continue;
-        if (i > 0 && gtWordChar(text[i - 1])) continue;
+        if (i > 0 && isIdentifierChar(text[i - 1])) continue;
         const size_t end = i + lowerName.size();
-        if (end < text.size() && gtWordChar(text[end])) continue;
+        if (end < text.size() && isIdentifierChar(text[end])) continue;
         bool same = true;
         for (size_t k = 1; k < lowerName.size() && same; ++k) same = std::tolower(static_cast<unsigned char>(text[i + k])) == lowerName[k];
         if (same) return true;
@@ -190,7 +179,7 @@ void readTwinCatDataTypes(const std::string& xml, const std::vector<std::string>
         if (dataType.child("EventId") || name.attribute("TcBaseType").as_bool(false) || gtIsPou(dataType)) continue;
         TwinCatDataType t;
         t.name = gtTrimmed(name.text().as_string());
-        if (!gtIsIdentifier(t.name)) continue;
+        if (!isPlainIdentifier(t.name)) continue;
         if (!all && std::none_of(onlyPinned->begin(), onlyPinned->end(), [&](const std::string& p) { return gtUpper(p) == gtUpper(t.name); })) continue;
         t.guid = gtUpper(gtTrimmed(name.attribute("GUID").as_string()));
         for (pugi::xml_node hide : dataType.child("Hides").children("Hide")) t.hides.push_back(gtUpper(gtTrimmed(hide.attribute("GUID").as_string())));
