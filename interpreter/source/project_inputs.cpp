@@ -13,6 +13,7 @@
 #include "interpreter/source/twincat_event_classes.h"
 #include "interpreter/source/twincat_global_types.h"
 #include "interpreter/source/twincat_plc_project.h"
+#include "interpreter/source/twincat_solution.h"
 #include "interpreter/source/twincat_system_event_classes.h"
 #include "interpreter/source/xml_inputs.h"
 
@@ -240,6 +241,9 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
             }
             std::sort(plcProjects.begin(), plcProjects.end());
             applyPlcProjects(plcProjects, found, sources, pinnedTypes);
+            // A PLC project folder without its solution: the solution around it (decision 0474).
+            if (std::none_of(typeSystems.begin(), typeSystems.end(), [](const std::string& f) { return lowerExtension(f) == ".tsproj"; }))
+                for (std::string& f : enclosingTwinCatTypeSystems(plcProjects)) typeSystems.push_back(std::move(f));
             std::sort(found.begin(), found.end());
             // A Beremiz / OpenPLC Editor folder is its plc.xml (decision 0356).
             for (BeremizFolder& folder : takeBeremizFolders(found)) addBeremizProject(folder, true, sources, userFiles, log);
