@@ -379,7 +379,22 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
     inlineEnumScope_ = enumScope;
     resolvingTypes_.erase(key);
     resolvedTypes_[key] = result;
+    if (resolvingTypes_.empty()) layOutDeferredMethods();
     return result;
+}
+
+// The methods of the blocks laid out while a TYPE was being resolved. A
+// method's variables live in its call frame, not in the instance, so
+// `TYPE T_Error : FB_Error;` with a method of FB_Error returning a T_Error
+// through a VAR_OUTPUT is no cycle (decision 0458): they wait until no TYPE is
+// in progress.
+void Checker::layOutDeferredMethods() {
+    while (!methodsDeferred_.empty()) {
+        std::vector<PouInfo*> blocks;
+        blocks.swap(methodsDeferred_);
+        for (PouInfo* fb : blocks)
+            for (auto& [name, m] : fb->methods) layoutPou(m);
+    }
 }
 
 const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::string& context) {
@@ -720,6 +735,10 @@ void Checker::layoutPou(PouInfo* pou) {
     pou->layingOut = false;
     pou->laidOut = true;
     pou_ = savedPou;
+    if (!resolvingTypes_.empty() && !pou->methods.empty()) {
+        methodsDeferred_.push_back(pou);  // after the TYPE in progress (layOutDeferredMethods)
+        return;
+    }
     for (auto& [name, m] : pou->methods) layoutPou(m);
 }
 

@@ -755,7 +755,14 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
         exec::Expr* slot = base.direct != Checked::Direct::None
                                ? directNode(pool(), base.direct, base.directOffset + f->offset, base.directAbs, types().voidType())
                                : pool().make<exec::OffsetPlace>(base.node, f->offset);
-        c.node = loadFrom(pool().make<exec::RefSlotPlace>(slot, site(loc), static_cast<uint32_t>(ft->size)), ft);
+        if (ft->flexible) {
+            // `THIS^.arr[i]` of the block's own VAR_IN_OUT ARRAY[*]: its slot holds
+            // the descriptor, as for the bare name (varAccess; decision 0459).
+            c.flexDesc = slot;
+            c.node = pool().make<exec::RefSlotPlace>(slot, site(loc), 1u);
+        } else {
+            c.node = loadFrom(pool().make<exec::RefSlotPlace>(slot, site(loc), static_cast<uint32_t>(ft->size)), ft);
+        }
     } else if (base.direct != Checked::Direct::None) {
         c.direct = base.direct;
         c.directOffset = base.directOffset + f->offset;
