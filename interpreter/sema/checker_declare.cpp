@@ -1138,6 +1138,11 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
                 // `ipSourceInfo : I_TcSourceInfo := 0` (Beckhoff's declarations),
                 // `value : PVOID := 0` (LCLS's T_HashTableEntry; decision 0439):
                 // no instance, no address, the storage's zero.
+            } else if (const VarSym* named = c.var; named && named->constant && named->abs && isAggregate(t) && sameType(named->type, t)) {
+                // A structured CONSTANT named whole (`astAttenuators := [N(stAttenuators)]`
+                // in LCLS's PMPS_GVL CONSTANT list): its image, written when it was
+                // declared, is its value for good (decision 0462).
+                std::memcpy(p, named->abs, t->size);
             } else if (!deferred()) {
                 error(diag::E0401, init->expr->loc, fmt::format("a value of type {} cannot be initialised with an expression", typeName(t)));
             }
