@@ -295,6 +295,7 @@ private:
     Checked memberOf(Checked base, const std::string& member, const ast::Loc& loc);
     Checked laterConstant(const std::string& upperName, const ast::Loc& loc);
     Checked earlyGlobalConstant(const std::string& key, const ast::Loc& loc);
+    Checked earlyStructureConstant(const ast::VarDecl& decl, const Type* t, const std::string& key, const ast::Loc& loc);
     bool globalsDeclared_ = false;  // declareGlobals has run: global constants are variables from then on
     std::set<std::string> pendingConstants_;
     // Constants read by laterConstant before their VarSym existed: used, for warnUnused.
