@@ -159,6 +159,7 @@ private:
     const Type* resolveNamedType(const std::string& name, const ast::Loc& loc);
     const Type* resolveTypeDecl(const std::string& upperName, const ast::Loc& loc);
     void layoutPou(PouInfo* pou);
+    void layOutDeferredMethods();
     void declareVars(PouInfo* pou, const std::vector<ast::VarBlock>& blocks, uint32_t& instOff, uint32_t& frameOff,
                      std::vector<Field>* instanceFields, bool instOnly = false);
     void declareGlobals();
@@ -294,6 +295,7 @@ private:
     Checked memberOf(Checked base, const std::string& member, const ast::Loc& loc);
     Checked laterConstant(const std::string& upperName, const ast::Loc& loc);
     Checked earlyGlobalConstant(const std::string& key, const ast::Loc& loc);
+    Checked earlyStructureConstant(const ast::VarDecl& decl, const Type* t, const std::string& key, const ast::Loc& loc);
     bool globalsDeclared_ = false;  // declareGlobals has run: global constants are variables from then on
     std::set<std::string> pendingConstants_;
     // Constants read by laterConstant before their VarSym existed: used, for warnUnused.
@@ -458,6 +460,7 @@ private:
     std::map<std::string, ast::TypeDecl*> typeDecls_;
     std::map<std::string, const Type*> resolvedTypes_;
     std::set<std::string> resolvingTypes_;
+    std::vector<PouInfo*> methodsDeferred_;  // blocks laid out during a TYPE's resolution (decision 0458)
     std::map<std::string, PouInfo*> pous_;  // owned by model_.pouStore
     std::vector<PouInfo*> pouOrder_;
     std::vector<ast::GlobalList*> globalLists_;

@@ -1,7 +1,8 @@
 // An ACTION called with arguments (TwinCAT, CODESYS): `fb.A_Add(putValue := s,
 // bOk => ok)`. An action has no parameters of its own; the arguments name the
 // block's inputs, set before the action runs, and its outputs, read after it,
-// as Beckhoff documents for the buffer blocks (FB_MemRingBuffer.A_AddTail).
+// as Beckhoff documents for the buffer blocks (FB_MemRingBuffer.A_AddTail);
+// a VAR_IN_OUT is bound to its argument before the action runs.
 // The call becomes the statements it stands for, checked as if written so.
 #include <fmt/format.h>
 
@@ -48,11 +49,24 @@ exec::Stmt* Checker::callActionWithArguments(const ast::Expr& call, PouInfo* blo
         VarSym* p = blockParameter(block, upper(a.name));
         const bool isInput = p && p->section == ast::VarSection::Input;
         const bool isOutput = p && p->section == ast::VarSection::Output;
-        if (a.output ? !isOutput : !isInput) {
-            error(diag::E0302, a.loc, fmt::format("'{}' is not {} of '{}' (the arguments of an action call set the block's inputs with ':=' "
-                                                  "and read its outputs with '=>')",
+        const bool isInOut = p && p->section == ast::VarSection::InOut;
+        if (a.output ? !isOutput : !(isInput || isInOut)) {
+            error(diag::E0302, a.loc, fmt::format("'{}' is not {} of '{}' (the arguments of an action call set the block's inputs and "
+                                                  "VAR_IN_OUTs with ':=' and read its outputs with '=>')",
                                                   a.name, a.output ? "an output" : "an input", block->name));
             ok = false;
+            continue;
+        }
+        if (isInOut) {
+            // `fbTable.A_Add(hTable := hTable, ...)` (Beckhoff's FB_HashTableCtrl):
+            // the VAR_IN_OUT is bound to the variable, as a call of the block binds it (decision 0463).
+            Checked inst = checkExpr(instance);
+            Checked v = checkExpr(*a.value);
+            if (!inst.ok || !v.ok) { ok = false; continue; }
+            const Field* f = inst.type->findField(upper(p->name));
+            exec::Expr* slot = pool().make<exec::OffsetPlace>(inst.node, f ? f->offset : 0);
+            if (exec::Stmt* bind = bindInOut(p, v, slot, a.value->loc)) seq->stmts.push_back(bind);
+            else ok = false;
             continue;
         }
         auto stmt = std::make_unique<ast::Stmt>();

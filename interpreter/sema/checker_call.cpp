@@ -568,7 +568,16 @@ exec::Stmt* Checker::bindInOut(VarSym* p, const Checked& v, exec::Expr* slot, co
     if (enumOnBase && !lenient(diag::W0001, loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}: passed as its base type", p->name,
                                                              typeName(p->type), typeName(v.type))))
         return nullptr;
-    if (!enumOnBase && !sameType(v.type, p->type) && !(isStringType(v.type->kind) && v.type->kind == p->type->kind) &&
+    // A POINTER variable for a VAR_IN_OUT POINTER TO another type (`pString`
+    // for `pBuffer : POINTER TO BYTE`): the same 8-byte address, as any pointer
+    // assigns to any other; --strict keeps IEC's own type for VAR_IN_OUT (decision 0460).
+    const bool pointerToPointer = v.type->kind == TK::Pointer && p->type->kind == TK::Pointer && !sameType(v.type, p->type) &&
+                                  !isFlexibleRef(v.type) && !isFlexibleRef(p->type);
+    if (pointerToPointer && refusedByStrict(diag::E0201, loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}: with --strict a VAR_IN_OUT "
+                                                                          "takes a variable of its own type",
+                                                                          p->name, typeName(p->type), typeName(v.type))))
+        return nullptr;
+    if (!enumOnBase && !pointerToPointer && !sameType(v.type, p->type) && !(isStringType(v.type->kind) && v.type->kind == p->type->kind) &&
         !isBlockOrExtends(v.type, p->type)) {
         error(diag::E0201, loc, fmt::format("VAR_IN_OUT '{}' is {}, the argument is {}", p->name, typeName(p->type), typeName(v.type)));
         return nullptr;

@@ -379,7 +379,22 @@ const Type* Checker::resolveTypeDecl(const std::string& key, const ast::Loc& loc
     inlineEnumScope_ = enumScope;
     resolvingTypes_.erase(key);
     resolvedTypes_[key] = result;
+    if (resolvingTypes_.empty()) layOutDeferredMethods();
     return result;
+}
+
+// The methods of the blocks laid out while a TYPE was being resolved. A
+// method's variables live in its call frame, not in the instance, so
+// `TYPE T_Error : FB_Error;` with a method of FB_Error returning a T_Error
+// through a VAR_OUTPUT is no cycle (decision 0458): they wait until no TYPE is
+// in progress.
+void Checker::layOutDeferredMethods() {
+    while (!methodsDeferred_.empty()) {
+        std::vector<PouInfo*> blocks;
+        blocks.swap(methodsDeferred_);
+        for (PouInfo* fb : blocks)
+            for (auto& [name, m] : fb->methods) layoutPou(m);
+    }
 }
 
 const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::string& context) {
@@ -720,6 +735,10 @@ void Checker::layoutPou(PouInfo* pou) {
     pou->layingOut = false;
     pou->laidOut = true;
     pou_ = savedPou;
+    if (!resolvingTypes_.empty() && !pou->methods.empty()) {
+        methodsDeferred_.push_back(pou);  // after the TYPE in progress (layOutDeferredMethods)
+        return;
+    }
     for (auto& [name, m] : pou->methods) layoutPou(m);
 }
 
@@ -1119,6 +1138,14 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
                 // `ipSourceInfo : I_TcSourceInfo := 0` (Beckhoff's declarations),
                 // `value : PVOID := 0` (LCLS's T_HashTableEntry; decision 0439):
                 // no instance, no address, the storage's zero.
+            } else if (const VarSym* named = c.var; named && named->constant && named->abs && isAggregate(t) && sameType(named->type, t)) {
+                // A structured CONSTANT named whole (`astAttenuators := [N(stAttenuators)]`
+                // in LCLS's PMPS_GVL CONSTANT list): its image, written when it was
+                // declared, is its value for good (decision 0462).
+                std::memcpy(p, named->abs, t->size);
+            } else if (auto* image = dynamic_cast<exec::ConstBytes*>(c.node);
+                       image && c.isConst && t->kind == TK::Struct && sameType(c.type, t) && image->bytes.size() == t->size) {
+                std::memcpy(p, image->bytes.data(), t->size);  // the same, named in a TYPE (earlyStructureConstant)
             } else if (!deferred()) {
                 error(diag::E0401, init->expr->loc, fmt::format("a value of type {} cannot be initialised with an expression", typeName(t)));
             }

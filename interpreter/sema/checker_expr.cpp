@@ -548,9 +548,10 @@ Checked Checker::earlyGlobalConstant(const std::string& key, const ast::Loc& loc
                 if (!block.constant || block.section != ast::VarSection::Global) continue;
                 for (const auto& decl : block.vars)
                     for (const auto& name : decl.names) {
-                        if (upper(name) != key || !decl.type || !decl.init || decl.init->kind != ast::InitKind::Expr || !decl.init->expr)
-                            continue;
+                        if (upper(name) != key || !decl.type || !decl.init) continue;
                         const Type* t = resolveTypeSpec(decl.type.get(), name);
+                        if (t && t->kind == TK::Struct) return earlyStructureConstant(decl, t, key, loc);
+                        if (decl.init->kind != ast::InitKind::Expr || !decl.init->expr) continue;
                         if (!t || !(isIntRep(t) || isRealRep(t))) return bad(loc);
                         pendingConstants_.insert(key);
                         const bool wasQualified = qualifiedAccess_;
@@ -570,6 +571,40 @@ Checked Checker::earlyGlobalConstant(const std::string& key, const ast::Loc& loc
             }
         }
     return bad(loc);
+}
+
+// A structured constant of a global list named in a TYPE's member default
+// (LCLS ST_DbStateParams: `stBeamParams : ST_BeamParams := PMPS_GVL.cst0RateBeam;`):
+// its initial image, as writeInitial gives it, for writeInitial to copy
+// (decision 0462). Its own errors are reported where the list is declared.
+Checked Checker::earlyStructureConstant(const ast::VarDecl& decl, const Type* t, const std::string& key, const ast::Loc& loc) {
+    pendingConstants_.insert(key);
+    const bool wasQualified = qualifiedAccess_;
+    const std::string savedList = qualifiedList_;
+    auto* savedRuntime = runtimeInits_;
+    qualifiedAccess_ = false;
+    qualifiedList_.clear();
+    runtimeInits_ = nullptr;  // a constant has no run-time part
+    const size_t messagesBefore = log_.messages().size();
+    const size_t errorsBefore = log_.errorCount();
+    std::vector<uint8_t> image(t->size, 0);
+    writeDefault(image.data(), t);
+    writeInitial(image.data(), t, decl.init.get(), decl.loc);
+    const bool failed = log_.errorCount() != errorsBefore;
+    log_.dropFrom(messagesBefore);
+    qualifiedAccess_ = wasQualified;
+    qualifiedList_ = savedList;
+    runtimeInits_ = savedRuntime;
+    pendingConstants_.erase(key);
+    if (failed) return bad(loc);
+    Checked c;
+    c.ok = true;
+    c.loc = loc;
+    c.type = t;
+    c.isConst = true;
+    c.node = pool().make<exec::ConstBytes>(std::move(image));
+    c.node->type = t;
+    return c;
 }
 
 Checked Checker::laterConstant(const std::string& key, const ast::Loc& loc) {
@@ -755,7 +790,14 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
         exec::Expr* slot = base.direct != Checked::Direct::None
                                ? directNode(pool(), base.direct, base.directOffset + f->offset, base.directAbs, types().voidType())
                                : pool().make<exec::OffsetPlace>(base.node, f->offset);
-        c.node = loadFrom(pool().make<exec::RefSlotPlace>(slot, site(loc), static_cast<uint32_t>(ft->size)), ft);
+        if (ft->flexible) {
+            // `THIS^.arr[i]` of the block's own VAR_IN_OUT ARRAY[*]: its slot holds
+            // the descriptor, as for the bare name (varAccess; decision 0459).
+            c.flexDesc = slot;
+            c.node = pool().make<exec::RefSlotPlace>(slot, site(loc), 1u);
+        } else {
+            c.node = loadFrom(pool().make<exec::RefSlotPlace>(slot, site(loc), static_cast<uint32_t>(ft->size)), ft);
+        }
     } else if (base.direct != Checked::Direct::None) {
         c.direct = base.direct;
         c.directOffset = base.directOffset + f->offset;

@@ -62,8 +62,9 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
         }
         model_.initCalls.push_back(pool().make<exec::WithSelf>(addr, p->addressInitCode));
     }
-    PouInfo* init = fb->kind == ast::PouKind::FunctionBlock ? findMethod(fb, "FB_INIT") : nullptr;
-    if (!init) return;
+    const std::vector<PouInfo*> inits = fb->kind == ast::PouKind::FunctionBlock ? fbInitChain(fb) : std::vector<PouInfo*>{};
+    if (inits.empty()) return;
+    PouInfo* init = inits.back();  // the declaration's arguments are the most derived FB_init's
     // One resolved call per instance: cap them (docs/limits.md) so that an
     // array of ten million such blocks is an error, not gigabytes and minutes.
     if (model_.initCalls.size() >= kMaxFbInitCalls) {
@@ -83,12 +84,17 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
     const bool inEnclosing = enclosing && declSpec && (!declSpec->initArgs.empty() || !declSpec->enumValues.empty());
     PouInfo* savedPou = pou_;
     if (inEnclosing) pou_ = enclosing;
+    std::vector<exec::Stmt*> runs;
     Checked c = callUserFunction(init, call, instance);
+    for (size_t k = 0; c.ok && k + 1 < inits.size(); ++k) {  // the bases' FB_init first (decision 0461)
+        ast::Expr baseCall = baseFbInitCall(*inits[k], call);
+        Checked b = callUserFunction(inits[k], baseCall, instance);
+        if (b.ok) runs.push_back(pool().make<exec::EvalStmt>(b.node, exec::EvalStmt::Rep::Int));
+    }
     pou_ = savedPou;
     if (!c.ok) return;
-    exec::Stmt* run = pool().make<exec::EvalStmt>(c.node, exec::EvalStmt::Rep::Int);
-    if (inEnclosing) run = pool().make<exec::WithSelf>(enclosingAddr, run);
-    model_.initCalls.push_back(run);
+    runs.push_back(pool().make<exec::EvalStmt>(c.node, exec::EvalStmt::Rep::Int));
+    for (exec::Stmt* run : runs) model_.initCalls.push_back(inEnclosing ? pool().make<exec::WithSelf>(enclosingAddr, run) : run);
 }
 
 // The elements of an array, with the FB_init arguments written after its

@@ -59,12 +59,18 @@ void Checker::heapInitStmts(const Type* t, exec::Expr* place, const ast::TypeSpe
         pou_ = savedPou;
         out.push_back(pool().make<exec::WithSelfAt>(place, block));
     }
-    PouInfo* init = fb->kind == ast::PouKind::FunctionBlock ? findMethod(fb, "FB_INIT") : nullptr;
-    if (!init) return;
+    const std::vector<PouInfo*> inits = fb->kind == ast::PouKind::FunctionBlock ? fbInitChain(fb) : std::vector<PouInfo*>{};
+    if (inits.empty()) return;
+    PouInfo* init = inits.back();
     ast::Expr call = fbInitCall(*init, declSpec, declSpec ? declSpec->loc : init->ast->loc);
     place->type = t;
     Checked c = callUserFunction(init, call, place);
-    if (c.ok) out.push_back(pool().make<exec::EvalStmt>(c.node, exec::EvalStmt::Rep::Int));
+    if (!c.ok) return;
+    for (size_t k = 0; k + 1 < inits.size(); ++k) {  // the bases' FB_init first (decision 0461)
+        Checked b = callUserFunction(inits[k], baseFbInitCall(*inits[k], call), place);
+        if (b.ok) out.push_back(pool().make<exec::EvalStmt>(b.node, exec::EvalStmt::Rep::Int));
+    }
+    out.push_back(pool().make<exec::EvalStmt>(c.node, exec::EvalStmt::Rep::Int));
 }
 
 Checked Checker::heapCall(const std::string& key, const ast::Expr& e, bool& handled) {

@@ -61,6 +61,19 @@ bool sameSignature(const PouInfo* a, const PouInfo* b) {
     }
     return true;
 }
+
+// A derived block's FB_init repeats its base's inputs and may add more
+// (Beckhoff, "Behavior with derived function blocks"; decision 0461).
+bool extendsFbInitSignature(const PouInfo* base, const PouInfo* derived) {
+    if (!sameType(base->resultType, derived->resultType) && (base->resultType || derived->resultType)) return false;
+    if (derived->params.size() < base->params.size()) return false;
+    for (size_t k = 0; k < base->params.size(); ++k) {
+        const VarSym* x = base->params[k];
+        const VarSym* y = derived->params[k];
+        if (x->section != y->section || !sameType(x->type, y->type) || upper(x->name) != upper(y->name)) return false;
+    }
+    return true;
+}
 }  // namespace
 
 void Checker::buildClasses() {
@@ -89,7 +102,7 @@ void Checker::buildClasses() {
                 PouInfo* base = findMethod(fb->parent, key);
                 if (base && base->ast && base->ast->final)
                     error(diag::E0405, m->ast->loc, fmt::format("method '{}' is FINAL in '{}'", m->name, fb->parent->name));
-                if (base && !sameSignature(base, m))
+                if (base && !sameSignature(base, m) && !(key == "FB_INIT" && extendsFbInitSignature(base, m)))
                     error(diag::E0405, m->ast->nameLoc.line ? m->ast->nameLoc : m->ast->loc,
                           fmt::format("'{}' overrides '{}.{}' with a different signature", m->name, fb->parent->name, m->name));
             }

@@ -41,4 +41,24 @@ ast::Expr fbInitCall(const PouInfo& init, const ast::TypeSpec* declSpec, const a
     return call;
 }
 
+std::vector<PouInfo*> fbInitChain(PouInfo* fb) {
+    std::vector<PouInfo*> chain;
+    for (PouInfo* p = fb; p; p = p->parent) {
+        auto it = p->methods.find("FB_INIT");
+        if (it != p->methods.end()) chain.insert(chain.begin(), it->second);
+    }
+    return chain;
+}
+
+ast::Expr baseFbInitCall(const PouInfo& base, const ast::Expr& derivedCall) {
+    ast::Expr call = implicitMethodCall("FB_init", derivedCall.loc);
+    for (size_t k = 0; k < derivedCall.args.size(); ++k) {
+        const ast::Arg& a = derivedCall.args[k];
+        bool declared = a.name.empty() && k < base.params.size();
+        for (const VarSym* p : base.params) declared = declared || (!a.name.empty() && upper(p->name) == upper(a.name));
+        if (declared) call.args.push_back(ast::cloneArg(a));
+    }
+    return call;
+}
+
 }  // namespace strun::sema
