@@ -674,6 +674,19 @@ struct Network {
         if (t == "TRUNC") return "DINT";
         if (t == "LEN" || t == "FIND") return "INT";
         if (t == "CONCAT" || t == "LEFT" || t == "RIGHT" || t == "MID" || t == "INSERT" || t == "DELETE" || t == "REPLACE") return "STRING";
+        if (t == "SUB") {
+            // The difference of two dates or times of day is a duration (IEC 61131-3
+            // table 30: SUB_DT_DT, SUB_DATE_DATE, SUB_TOD_TOD): not the type of IN1 (C21).
+            static const std::map<std::string, std::string> durations = {
+                {"DT", "TIME"},   {"DATE_AND_TIME", "TIME"},   {"DATE", "TIME"},   {"TOD", "TIME"},   {"TIME_OF_DAY", "TIME"},
+                {"LDT", "LTIME"}, {"LDATE_AND_TIME", "LTIME"}, {"LDATE", "LTIME"}, {"LTOD", "LTIME"}, {"LTIME_OF_DAY", "LTIME"}};
+            auto in1 = durations.find(typeOfInput(e, 0, depth)), in2 = durations.find(typeOfInput(e, 1, depth));
+            // DT and DATE_AND_TIME are one type: compare what their difference is and whether both are dates, times of day or both DT.
+            auto family = [](const std::string& t) { return t.find("DATE") != std::string::npos && t.find("TIME") == std::string::npos ? 'D'
+                                                            : t.find("TOD") != std::string::npos || t.find("DAY") != std::string::npos ? 'T' : 'X'; };
+            if (in1 != durations.end() && in2 != durations.end() && in1->second == in2->second && family(in1->first) == family(in2->first))
+                return in1->second;
+        }
         // The type of the first typed input (SEL, MUX and LIMIT: of the values, not the selector).
         size_t first = (t == "SEL" || t == "MUX" || t == "LIMIT") ? 1 : 0;
         size_t n = 0;
@@ -682,6 +695,17 @@ struct Network {
             if (n++ < first || in.conns.empty()) continue;
             std::string type = connectionType(in.conns[0], depth + 1);
             if (!type.empty()) return type;
+        }
+        return "";
+    }
+
+    // The type of the n-th input of block e (EN left out, upper case), "" when not known.
+    std::string typeOfInput(const Element& e, size_t n, int depth) {
+        size_t k = 0;
+        for (const PinIn& in : e.ins) {
+            if (stdlib::upperAscii(in.name) == "EN") continue;
+            if (k++ != n) continue;
+            return in.conns.empty() ? "" : stdlib::upperAscii(connectionType(in.conns[0], depth + 1));
         }
         return "";
     }
