@@ -511,6 +511,22 @@ private:
         return v;
     }
 
+    // The `(` of a nested instruction list when `:= ( LD ...` starts at i, else npos.
+    static size_t nestedListAt(const std::string& operand, size_t i) {
+        for (; i + 1 < operand.size(); ++i) {
+            if (operand.compare(i, 2, ":=") != 0) continue;
+            size_t open = i + 2;
+            while (open < operand.size() && operand[open] == ' ') ++open;
+            if (open >= operand.size() || operand[open] != '(') continue;
+            size_t w = open + 1;
+            while (w < operand.size() && operand[w] == ' ') ++w;
+            size_t we = w;
+            while (we < operand.size() && identChar(operand[we])) ++we;
+            if (we > w && isOperator(upper(operand.substr(w, we - w)))) return open;  // `IN := (a + b)` is ST
+        }
+        return std::string::npos;
+    }
+
     // `CAL fb(IN := ( LD a AND b ), PT := T#1s)`: each argument that is a
     // nested instruction list (IEC 61131-3 2nd edition 3.2.3, il_param_assignment)
     // is translated where the call is: its statements (an ST inside it) come
@@ -523,15 +539,8 @@ private:
                     if (operand[i] == '$') ++i;
                 continue;
             }
-            if (operand.compare(i, 2, ":=") != 0) continue;
-            size_t open = i + 2;
-            while (open < operand.size() && operand[open] == ' ') ++open;
-            if (open >= operand.size() || operand[open] != '(') continue;
-            size_t w = open + 1;
-            while (w < operand.size() && operand[w] == ' ') ++w;
-            size_t we = w;
-            while (we < operand.size() && identChar(operand[we])) ++we;
-            if (we == w || !isOperator(upper(operand.substr(w, we - w)))) continue;  // `IN := (a + b)`: ST
+            const size_t open = nestedListAt(operand, i);
+            if (open == std::string::npos) continue;
             int depth = 0;
             size_t close = open;
             for (; close < operand.size(); ++close) {
@@ -692,6 +701,9 @@ private:
                 if (in.conditional && !needCr(k)) return;
                 beforeStatement(k, in.conditional ? 1 : 0);
                 std::string operand = in.operand;
+                // A nested list's statements run before the call (and its condition): the CR read after them must not change under them.
+                if (in.op == Op::Call && cr.defined && (in.conditional || liveIn[k + 1]) && nestedListAt(operand, 0) != std::string::npos)
+                    materialize(k);
                 if (in.op == Op::Call && !expandNestedLists(k, operand)) return;
                 std::vector<Frag> s;
                 if (in.conditional) s = condition(k);

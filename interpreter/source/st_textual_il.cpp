@@ -71,7 +71,7 @@ struct IlTextReader {
         if (!w.word || !il::isOperator(w.up)) return false;
         static const std::set<std::string> stFollowers = {":=", "(", "[", ".", "^", ";", "=>", ",", ":", "=", "<>"};
         const StToken& next = at(k + 1);
-        if (next.line == w.line && stFollowers.count(next.text)) return false;
+        if (stFollowers.count(next.text)) return false;  // also on the next line: `IN\n := 5;` is ST
         size_t last = k;
         while (at(last + 1).line == w.line && last + 1 < toks.size()) ++last;
         return at(last).text != ";";
