@@ -21,7 +21,7 @@
 
 #include "interpreter/source/il_body.h"
 #include "interpreter/source/plcopen_graphical.h"
-#include "interpreter/source/st_assembler.h"
+#include "interpreter/source/st_splice.h"
 #include "interpreter/source/st_tokens.h"
 #include "stdlib/number_scan.h"
 
@@ -44,13 +44,7 @@ struct IlTextReader {
     std::vector<StToken> toks;
     Converted result;
     std::vector<std::pair<size_t, size_t>> blanked;  // IL spans, replaced by blanks
-    struct Insert {
-        size_t at;
-        int order;  // declarations before the body at the same place
-        std::vector<plcopen::StLine> lines;
-        bool varSection;  // `lines` are declarations: wrapped in VAR ... END_VAR
-    };
-    std::vector<Insert> inserts;
+    std::vector<StSplice> inserts;  // declarations before the body where both go to one place
     int bodies = 0;
 
     // What `S x` / `R x` need: is x a function-block instance?
@@ -93,8 +87,8 @@ struct IlTextReader {
         const std::string text = src.substr(from, to - from);
         blanked.push_back({from, to});
         if (!il::translate(text, at(b).line, at(b).col, around, tr)) return;
-        if (!tr.declarations.empty()) inserts.push_back({at(declAt).begin, 0, std::move(tr.declarations), true});
-        inserts.push_back({from, 1, std::move(tr.body), false});
+        if (!tr.declarations.empty()) inserts.push_back({at(declAt).begin, std::move(tr.declarations), {}});
+        inserts.push_back({from, {}, std::move(tr.body)});
     }
 
     void run() {
@@ -147,38 +141,7 @@ struct IlTextReader {
             result.text = src;
             return;
         }
-        std::string text = src;
-        for (auto [from, to] : blanked)
-            for (size_t i = from; i < to && i < text.size(); ++i)
-                if (text[i] != '\n' && text[i] != '\r') text[i] = ' ';
-        std::stable_sort(inserts.begin(), inserts.end(),
-                         [](const Insert& a, const Insert& b) { return a.at != b.at ? a.at < b.at : a.order < b.order; });
-        StAssembler out;
-        TextPositions pos(src);
-        size_t done = 0;
-        auto emit = [&](const std::vector<plcopen::StLine>& lines) {
-            for (const plcopen::StLine& l : lines) {
-                if (l.verbatim) out.verbatim(l.text, l.line, l.col, l.element);
-                else out.written(l.text, l.line, l.col, l.element);
-            }
-        };
-        for (const Insert& ins : inserts) {
-            auto [line, col] = pos.at(static_cast<std::ptrdiff_t>(done));
-            if (ins.at > done) out.verbatim(std::string_view(text).substr(done, ins.at - done), line, col);
-            if (ins.varSection) {
-                const plcopen::StLine& d = ins.lines.front();
-                out.written("VAR", d.line, d.col);
-                emit(ins.lines);
-                out.written("END_VAR", d.line, d.col);
-            } else {
-                emit(ins.lines);
-            }
-            done = std::max(done, ins.at);
-        }
-        auto [line, col] = pos.at(static_cast<std::ptrdiff_t>(done));
-        out.verbatim(std::string_view(text).substr(done), line, col);
-        result.text = std::move(out.text());
-        result.origins = std::move(out.origins());
+        spliceSt(src, blanked, std::move(inserts), result);
     }
 };
 

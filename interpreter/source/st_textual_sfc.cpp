@@ -17,7 +17,7 @@
 #include <set>
 
 #include "interpreter/source/sfc_chart.h"
-#include "interpreter/source/st_assembler.h"
+#include "interpreter/source/st_splice.h"
 #include "interpreter/source/st_tokens.h"
 #include "stdlib/number_scan.h"
 
@@ -238,35 +238,9 @@ struct Reader {
             return;
         }
         // The text with the SFC elements blanked and each chart's ST inserted where its POU's body starts.
-        std::string text = src;
-        for (auto [from, to] : blanked)
-            for (size_t i = from; i < to && i < text.size(); ++i)
-                if (text[i] != '\n') text[i] = ' ';
-        StAssembler out;
-        TextPositions pos(src);
-        size_t done = 0;
-        for (Insert& ins : inserts) {
-            auto [line, col] = pos.at(static_cast<std::ptrdiff_t>(done));
-            out.verbatim(std::string_view(text).substr(done, ins.at - done), line, col);
-            auto emit = [&](const std::vector<plcopen::StLine>& lines) {
-                for (const plcopen::StLine& l : lines) {
-                    if (l.verbatim) out.verbatim(l.text, l.line, l.col, l.element);
-                    else out.written(l.text, l.line, l.col, l.element);
-                }
-            };
-            if (!ins.tr.declarations.empty()) {
-                const plcopen::StLine& d = ins.tr.declarations.front();
-                out.written("VAR", d.line, d.col);
-                emit(ins.tr.declarations);
-                out.written("END_VAR", d.line, d.col);
-            }
-            emit(ins.tr.body);
-            done = ins.at;
-        }
-        auto [line, col] = pos.at(static_cast<std::ptrdiff_t>(done));
-        out.verbatim(std::string_view(text).substr(done), line, col);
-        result.text = std::move(out.text());
-        result.origins = std::move(out.origins());
+        std::vector<StSplice> splices;
+        for (Insert& ins : inserts) splices.push_back({ins.at, std::move(ins.tr.declarations), std::move(ins.tr.body)});
+        spliceSt(src, blanked, std::move(splices), result);
     }
 };
 
