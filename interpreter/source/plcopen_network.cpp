@@ -677,15 +677,13 @@ struct Network {
         if (t == "SUB") {
             // The difference of two dates or times of day is a duration (IEC 61131-3
             // table 30: SUB_DT_DT, SUB_DATE_DATE, SUB_TOD_TOD): not the type of IN1 (C21).
-            static const std::map<std::string, std::string> durations = {
-                {"DT", "TIME"},   {"DATE_AND_TIME", "TIME"},   {"DATE", "TIME"},   {"TOD", "TIME"},   {"TIME_OF_DAY", "TIME"},
-                {"LDT", "LTIME"}, {"LDATE_AND_TIME", "LTIME"}, {"LDATE", "LTIME"}, {"LTOD", "LTIME"}, {"LTIME_OF_DAY", "LTIME"}};
-            auto in1 = durations.find(typeOfInput(e, 0, depth)), in2 = durations.find(typeOfInput(e, 1, depth));
-            // DT and DATE_AND_TIME are one type: compare what their difference is and whether both are dates, times of day or both DT.
-            auto family = [](const std::string& t) { return t.find("DATE") != std::string::npos && t.find("TIME") == std::string::npos ? 'D'
-                                                            : t.find("TOD") != std::string::npos || t.find("DAY") != std::string::npos ? 'T' : 'X'; };
-            if (in1 != durations.end() && in2 != durations.end() && in1->second == in2->second && family(in1->first) == family(in2->first))
-                return in1->second;
+            // Each name of a date type -> (its one spelling, the type of a difference of two).
+            static const std::map<std::string, std::pair<std::string, std::string>> dates = {
+                {"DT", {"DT", "TIME"}},     {"DATE_AND_TIME", {"DT", "TIME"}},     {"DATE", {"DATE", "TIME"}},   {"TOD", {"TOD", "TIME"}},
+                {"TIME_OF_DAY", {"TOD", "TIME"}}, {"LDT", {"LDT", "LTIME"}},       {"LDATE_AND_TIME", {"LDT", "LTIME"}},
+                {"LDATE", {"LDATE", "LTIME"}},    {"LTOD", {"LTOD", "LTIME"}},     {"LTIME_OF_DAY", {"LTOD", "LTIME"}}};
+            auto in1 = dates.find(typeOfInput(e, 0, depth)), in2 = dates.find(typeOfInput(e, 1, depth));
+            if (in1 != dates.end() && in2 != dates.end() && in1->second.first == in2->second.first) return in1->second.second;
         }
         // The type of the first typed input (SEL, MUX and LIMIT: of the values, not the selector).
         size_t first = (t == "SEL" || t == "MUX" || t == "LIMIT") ? 1 : 0;
