@@ -127,6 +127,12 @@ public:
     // The inferred temporaries of translated IL bodies (decision 0415).
     VarSym* inferredTemp(const ast::Expr& target);
     void fixInferredTemp(VarSym* v, const Type* t);
+    // The value an inferred temporary gets first (decision 0415), typed for it.
+    Checked inferredValue(const ast::Expr& value);
+    // A temporary read before, in the text, its first assignment (an IL label
+    // reached only by a backward jump): typed from that assignment (decision 0467).
+    bool typeInferredTempAhead(VarSym* v);
+    bool typingAhead_ = false;
     // A fresh aggregate place in the current frame's temporaries with the given type.
     exec::Expr* tempPlace(const Type* t, uint32_t* offsetOut = nullptr);
     // Bindings the operators `+` / `-` on dates and times of day delegate to.

@@ -1278,7 +1278,16 @@ uint8_t* Checker::mapAddress(const std::string& address, const Type* t, const as
         if (parts.size() == 1) { byte = parts[0] / 8; bit = static_cast<int>(parts[0] % 8); }
         else { byte = parts[parts.size() - 2]; bit = static_cast<int>(parts.back()); }
         if (bit > 7) return fail("bit number above 7");
-        if (t->kind != TK::Bool) return fail("a bit address needs a BOOL variable");
+        // matiec/Beremiz: a structure located at `%I3.0` (no size prefix) is
+        // the structure from byte 3 on, which an extension fills (decision 0465).
+        if (t->kind == TK::Struct && bit == 0 && parts.size() == 2) {
+            // With --strict an error, but the variable keeps its place: no follow-on message at its uses.
+            refusedByStrict(diag::E0408, loc,
+                            fmt::format("bad direct address '{}': a structure needs a byte address ('%{}B{}'), not a bit address", address, a[1], byte));
+            bit = -1;
+        } else if (t->kind != TK::Bool) {
+            return fail("a bit address needs a BOOL variable");
+        }
     } else {
         if (parts.size() != 1) {
             // %MW1.3: a bit of a word is not a storage location of its own.

@@ -329,7 +329,7 @@ exec::Expr* Checker::loadFrom(exec::Expr* place, const Type* t) {
 }
 
 Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
-    if (v->inferredPending) {
+    if (v->inferredPending && !typeInferredTempAhead(v)) {
         // IL: an instruction reads the current result before the body ever sets it (decision 0415).
         error(diag::E0008, loc, "the current result is read before any instruction sets it");
         return bad(loc);

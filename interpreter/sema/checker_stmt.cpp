@@ -291,6 +291,46 @@ void Checker::fixInferredTemp(VarSym* v, const Type* t) {
     v->inferredPending = false;
 }
 
+Checked Checker::inferredValue(const ast::Expr& e) {
+    Checked value = checkExpr(e);
+    if (!value.ok) return value;
+    // `LD 40`: an untyped integer literal is an INT where it fits (decision 0415).
+    if (value.untypedInt && value.isConst && value.constInt >= -32768 && value.constInt <= 32767)
+        value = coerce(value, types().elementary(TK::Int), e.loc, "current result");
+    return settle(value);
+}
+
+namespace {
+// The first assignment to `name` (upper case) in the text of `list`, in IF
+// branches too (where an IL jump assigns a label's temporary), or null.
+const ast::Stmt* firstAssignment(const ast::StmtList& list, const std::string& name) {
+    for (const auto& s : list) {
+        if (s->kind == ast::StmtKind::Assign && s->target && s->target->kind == ast::ExprKind::Name && upper(s->target->name) == name)
+            return s.get();
+        for (const ast::StmtList& b : s->blocks)
+            if (const ast::Stmt* found = firstAssignment(b, name)) return found;
+        if (s->elseBlock)
+            if (const ast::Stmt* found = firstAssignment(*s->elseBlock, name)) return found;
+    }
+    return nullptr;
+}
+}  // namespace
+
+bool Checker::typeInferredTempAhead(VarSym* v) {
+    if (!pou_ || !pou_->ast || typingAhead_) return false;
+    const ast::Stmt* first = firstAssignment(pou_->ast->body, upper(v->name));
+    if (!first) return false;
+    // Checked here only for its type: its messages come where it stands.
+    typingAhead_ = true;
+    const size_t before = log_.messages().size();
+    Checked value = inferredValue(*first->expr);
+    log_.dropFrom(before);
+    typingAhead_ = false;
+    if (!value.ok) return false;
+    fixInferredTemp(v, value.type);
+    return true;
+}
+
 exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
     VarSym* temp = s.kind == ast::StmtKind::Assign ? inferredTemp(*s.target) : nullptr;
     if (temp && !temp->inferredPending) {
@@ -305,12 +345,8 @@ exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
         return st;
     }
     if (temp) {
-            Checked value = checkExpr(*s.expr);
+            Checked value = inferredValue(*s.expr);
             if (!value.ok) return nullptr;
-            // `LD 40`: an untyped integer literal is an INT where it fits (decision 0415).
-            if (value.untypedInt && value.isConst && value.constInt >= -32768 && value.constInt <= 32767)
-                value = coerce(value, types().elementary(TK::Int), s.expr->loc, "current result");
-            value = settle(value);
             fixInferredTemp(temp, value.type);
             Checked target = checkExpr(*s.target);
             return target.ok ? assignChecked(target, value, s.loc) : nullptr;

@@ -73,12 +73,27 @@ std::string beremizSkipReason(const BeremizFolder& folder, const std::string& sk
     return "'" + relative.generic_string() + "' skipped: Beremiz compiles plc.xml alone (an ST export of it?)";
 }
 
-Converted readBeremizExtensionGlobals(const std::string& xml) {
+Converted readBeremizExtensionGlobals(const std::string& xml, const std::string& path) {
     XmlConversion c(xml);
     pugi::xml_document doc;
     if (!c.load(doc)) return {};
     const pugi::xml_node root = doc.document_element();
     const std::string kind = root.name();
+    // The MQTT client extension (folder `name@mqtt`) declares its connection
+    // status MQTT_STATUS_<channel> : INT (Beremiz mqtt/client.py,
+    // CTNGlobalInstances); its channel is the IEC_Channel of the folder's
+    // baseconfnode.xml (decision 0465). Its topics are located variables of plc.xml.
+    const std::string folder = stdlib::lowerAscii(fs::path(path).parent_path().filename().string());
+    if (kind == "BaseParams" && fileName(path) == "baseconfnode.xml" && folder.size() > 5 &&
+        folder.compare(folder.size() - 5, 5, "@mqtt") == 0 && root.attribute("IEC_Channel")) {
+        auto [line, col] = c.where(root);
+        c.out.written("VAR_GLOBAL", line, col);
+        c.out.written(std::string("    MQTT_STATUS_") + root.attribute("IEC_Channel").value() + " : INT;", line, col);
+        c.out.written("END_VAR", line, col);
+        c.result.text = std::move(c.out.text());
+        c.result.origins = std::move(c.out.origins());
+        return std::move(c.result);
+    }
     if (kind != "CFile" && kind != "PyFile") return {};
     bool any = false;
     for (const pugi::xml_node v : root.child("variables").children("variable")) {

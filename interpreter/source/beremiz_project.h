@@ -34,7 +34,9 @@ std::string beremizSkipReason(const BeremizFolder& folder, const std::string& sk
 // The global variables a Beremiz extension of the project declares (a C or
 // Python file's `<variables>`: cfile.xml, pyfile.xml), which Beremiz adds to
 // every configuration of plc.xml: `VAR_GLOBAL name : TYPE := initial; END_VAR`,
-// each line at its XML element. Empty text when `xml` is no such file.
-Converted readBeremizExtensionGlobals(const std::string& xml);
+// each line at its XML element; and the status variable of an MQTT client
+// extension (`baseconfnode.xml` of a folder `name@mqtt`, at `path`).
+// Empty text when `xml` is no such file.
+Converted readBeremizExtensionGlobals(const std::string& xml, const std::string& path);
 
 }  // namespace strun::source

@@ -173,7 +173,7 @@ struct Cr {
 
 class Translator {
 public:
-    Translator(const Surroundings& a, plcopen::Translation& o) : around(a), out(o) {}
+    Translator(const Surroundings& a, plcopen::Translation& o, bool nestedList = false) : around(a), out(o), nested(nestedList) {}
 
     bool run(std::string_view text, int line, int col) {
         read(text, line, col);
@@ -194,6 +194,8 @@ private:
     std::map<int, std::string> labelTemps;  // Label instruction -> its temporary
     bool failed = false;
     int temps = 0;
+    const bool nested;  // the instructions of a nested list `IN := ( LD a AND b )` in a formal call
+    int nestedLists = 0;
 
     void fail(const Instr& in, const std::string& message) {
         if (failed) return;  // one mistake, one message: the body is left out after the first
@@ -496,10 +498,112 @@ private:
 
     void write() {
         for (int k = 0; k < static_cast<int>(code.size()) && !failed; ++k) writeOne(k);
-        if (failed) {
+        if (failed && !nested) {
             out.body.clear();
             out.declarations.clear();
         }
+    }
+
+    // The current result at the end of the instructions, as one ST expression.
+    std::string finalValue() const {
+        std::string v;
+        for (const Frag& f : cr.frags) v += f.text;
+        return v;
+    }
+
+    // The `(` of a nested instruction list when `:= ( LD ...` starts at i, else npos.
+    static size_t nestedListAt(const std::string& operand, size_t i) {
+        for (; i + 1 < operand.size(); ++i) {
+            if (operand.compare(i, 2, ":=") != 0) continue;
+            size_t open = i + 2;
+            while (open < operand.size() && operand[open] == ' ') ++open;
+            if (open >= operand.size() || operand[open] != '(') continue;
+            size_t w = open + 1;
+            while (w < operand.size() && operand[w] == ' ') ++w;
+            size_t we = w;
+            while (we < operand.size() && identChar(operand[we])) ++we;
+            if (we > w && isOperator(upper(operand.substr(w, we - w)))) return open;  // `IN := (a + b)` is ST
+        }
+        return std::string::npos;
+    }
+
+    // `CAL fb(IN := ( LD a AND b ), PT := T#1s)`: each argument that is a
+    // nested instruction list (IEC 61131-3 2nd edition 3.2.3, il_param_assignment)
+    // is translated where the call is: its statements (an ST inside it) come
+    // before the call, and its current result at `)` is the argument.
+    bool expandNestedLists(int k, std::string& operand) {
+        for (size_t i = 0; i + 1 < operand.size(); ++i) {
+            if (operand[i] == '\'' || operand[i] == '"') {
+                const char q = operand[i];
+                for (++i; i < operand.size() && operand[i] != q; ++i)
+                    if (operand[i] == '$') ++i;
+                continue;
+            }
+            const size_t open = nestedListAt(operand, i);
+            if (open == std::string::npos) continue;
+            int depth = 0;
+            size_t close = open;
+            for (; close < operand.size(); ++close) {
+                if (operand[close] == '(') ++depth;
+                if (operand[close] == ')' && --depth == 0) break;
+            }
+            if (close >= operand.size()) return fail(code[k], "the nested instruction list after ':=' has no closing ')'"), false;
+            Surroundings inner = around;
+            inner.prefix = around.prefix + "n" + std::to_string(++nestedLists) + "_";
+            Translator sub(inner, out, true);
+            if (!sub.run(oneInstructionPerLine(operand.substr(open + 1, close - open - 1)), code[k].line, code[k].col)) {
+                failed = true;
+                return false;
+            }
+            if (!sub.cr.defined) return fail(code[k], "the nested instruction list after ':=' leaves no current result"), false;
+            const std::string value = "(" + sub.finalValue() + ")";
+            operand.replace(open, close - open + 1, value);
+            i = open + value.size() - 1;
+        }
+        return true;
+    }
+
+    // `LD a AND b` written on one line (the nested list of a call is read as
+    // one line): a line per instruction, a new one at each operator word
+    // that does not stand where the previous operator's operand goes.
+    static std::string oneInstructionPerLine(const std::string& s) {
+        std::string out;
+        bool wantsOperand = false;
+        int depth = 0;
+        for (size_t i = 0; i < s.size();) {
+            if (std::isspace(static_cast<unsigned char>(s[i]))) {
+                out += ' ';
+                ++i;
+                continue;
+            }
+            size_t e = i;
+            if (identStart(s[i]) && depth == 0) {
+                while (e < s.size() && identChar(s[e])) ++e;
+                const std::string w = upper(s.substr(i, e - i));
+                if (!wantsOperand && isOperator(w)) {
+                    if (!trim(out).empty()) out += '\n';
+                    out += s.substr(i, e - i);
+                    wantsOperand = w != "NOT" && w.rfind("RET", 0) != 0;
+                    i = e;
+                    continue;
+                }
+            }
+            // an operand: up to the next blank outside parentheses and strings
+            while (e < s.size() && (depth > 0 || !std::isspace(static_cast<unsigned char>(s[e])))) {
+                if (s[e] == '(') ++depth;
+                if (s[e] == ')') --depth;
+                if (s[e] == '\'' || s[e] == '"') {
+                    const char q = s[e];
+                    for (++e; e < s.size() && s[e] != q; ++e)
+                        if (s[e] == '$') ++e;
+                }
+                ++e;
+            }
+            out += s.substr(i, e - i);
+            wantsOperand = false;
+            i = e;
+        }
+        return out;
     }
 
     void writeOne(int k) {
@@ -596,9 +700,14 @@ private:
             case Op::Return: {
                 if (in.conditional && !needCr(k)) return;
                 beforeStatement(k, in.conditional ? 1 : 0);
+                std::string operand = in.operand;
+                // A nested list's statements run before the call (and its condition): the CR read after them must not change under them.
+                if (in.op == Op::Call && cr.defined && (in.conditional || liveIn[k + 1]) && nestedListAt(operand, 0) != std::string::npos)
+                    materialize(k);
+                if (in.op == Op::Call && !expandNestedLists(k, operand)) return;
                 std::vector<Frag> s;
                 if (in.conditional) s = condition(k);
-                s.push_back({in.op == Op::Call ? in.operand + ";" : std::string("RETURN;"), k});
+                s.push_back({in.op == Op::Call ? operand + ";" : std::string("RETURN;"), k});
                 if (in.conditional) s.push_back({" END_IF;", k});
                 emit(s);
                 if (in.op == Op::Return && !in.conditional) {
@@ -645,14 +754,25 @@ private:
                 cr = {std::move(f), true, false};
                 return;
             }
-            case Op::FormalFunction:
-                cr = {{{in.operand, k}}, true, false};
+            case Op::FormalFunction: {
+                std::string operand = in.operand;
+                if (!expandNestedLists(k, operand)) return;
+                cr = {{{operand, k}}, true, false};
                 return;
+            }
         }
     }
 };
 
 }  // namespace
+
+bool isOperator(const std::string& w) {
+    static const char* const words[] = {"LD",  "LDN",  "ST",  "STN",   "S",   "R",    "NOT",   "JMP", "JMPC",
+                                        "JMPCN", "CAL", "CALC", "CALCN", "RET", "RETC", "RETCN"};
+    for (const char* k : words)
+        if (w == k) return true;
+    return binaryOperators().count(w) > 0 || isBlockInputOperator(w);
+}
 
 bool translate(std::string_view text, int line, int col, const Surroundings& around, plcopen::Translation& out) {
     Translator t(around, out);

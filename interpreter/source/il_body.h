@@ -36,4 +36,9 @@ struct Surroundings {
 // False after an error (reported through `fail`; `out` is left empty).
 bool translate(std::string_view text, int line, int col, const Surroundings& around, plcopen::Translation& out);
 
+// True when `upperWord` is an IL operator (LD, ST, S, JMPC, CAL, RET, ADD,
+// ANDN, CU, ...): what tells an IL body from an ST one in a text file
+// (st_textual_il.cpp, decision 0464).
+bool isOperator(const std::string& upperWord);
+
 }  // namespace strun::source::il

@@ -674,6 +674,17 @@ struct Network {
         if (t == "TRUNC") return "DINT";
         if (t == "LEN" || t == "FIND") return "INT";
         if (t == "CONCAT" || t == "LEFT" || t == "RIGHT" || t == "MID" || t == "INSERT" || t == "DELETE" || t == "REPLACE") return "STRING";
+        if (t == "SUB") {
+            // The difference of two dates or times of day is a duration (IEC 61131-3
+            // table 30: SUB_DT_DT, SUB_DATE_DATE, SUB_TOD_TOD): not the type of IN1 (C21).
+            // Each name of a date type -> (its one spelling, the type of a difference of two).
+            static const std::map<std::string, std::pair<std::string, std::string>> dates = {
+                {"DT", {"DT", "TIME"}},     {"DATE_AND_TIME", {"DT", "TIME"}},     {"DATE", {"DATE", "TIME"}},   {"TOD", {"TOD", "TIME"}},
+                {"TIME_OF_DAY", {"TOD", "TIME"}}, {"LDT", {"LDT", "LTIME"}},       {"LDATE_AND_TIME", {"LDT", "LTIME"}},
+                {"LDATE", {"LDATE", "LTIME"}},    {"LTOD", {"LTOD", "LTIME"}},     {"LTIME_OF_DAY", {"LTOD", "LTIME"}}};
+            auto in1 = dates.find(typeOfInput(e, 0, depth)), in2 = dates.find(typeOfInput(e, 1, depth));
+            if (in1 != dates.end() && in2 != dates.end() && in1->second.first == in2->second.first) return in1->second.second;
+        }
         // The type of the first typed input (SEL, MUX and LIMIT: of the values, not the selector).
         size_t first = (t == "SEL" || t == "MUX" || t == "LIMIT") ? 1 : 0;
         size_t n = 0;
@@ -682,6 +693,17 @@ struct Network {
             if (n++ < first || in.conns.empty()) continue;
             std::string type = connectionType(in.conns[0], depth + 1);
             if (!type.empty()) return type;
+        }
+        return "";
+    }
+
+    // The type of the n-th input of block e (EN left out, upper case), "" when not known.
+    std::string typeOfInput(const Element& e, size_t n, int depth) {
+        size_t k = 0;
+        for (const PinIn& in : e.ins) {
+            if (stdlib::upperAscii(in.name) == "EN") continue;
+            if (k++ != n) continue;
+            return in.conns.empty() ? "" : stdlib::upperAscii(connectionType(in.conns[0], depth + 1));
         }
         return "";
     }

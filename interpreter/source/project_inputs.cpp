@@ -9,6 +9,7 @@
 #include "interpreter/source/beremiz_project.h"
 #include "interpreter/source/beremiz_standard_blocks.h"
 #include "interpreter/source/read_source.h"
+#include "interpreter/source/st_textual_il.h"
 #include "interpreter/source/st_textual_sfc.h"
 #include "interpreter/source/twincat_event_classes.h"
 #include "interpreter/source/twincat_global_types.h"
@@ -104,6 +105,12 @@ void addFile(const std::string& path, std::string text, SourceSet& sources, std:
             userFiles.push_back(sources.add(path, std::move(text)));
             return;
         }
+    } else if (mayHoldTextualIl(text)) {
+        converted = convertTextualIl(text);  // ST files with IL bodies: the IL becomes ST (decision 0464)
+        if (converted.errors.empty() && converted.origins.empty()) {  // no IL body after all: plain ST
+            userFiles.push_back(sources.add(path, std::move(text)));
+            return;
+        }
     } else {
         userFiles.push_back(sources.add(path, std::move(text)));
         return;
@@ -119,7 +126,7 @@ void addBeremizProject(BeremizFolder& folder, bool warnSkipped, SourceSet& sourc
     std::erase_if(folder.skipped, [&](const std::string& f) {
         std::string text, unused;
         if (lowerExtension(f) != ".xml" || !readSourceText(f, projectBytes(sources), text, unused)) return false;
-        Converted globals = readBeremizExtensionGlobals(text);
+        Converted globals = readBeremizExtensionGlobals(text, f);
         if (globals.text.empty() && globals.errors.empty()) return false;
         addConverted(f, std::move(text), std::move(globals), sources, userFiles, log);
         return true;

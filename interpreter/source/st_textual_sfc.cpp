@@ -17,71 +17,15 @@
 #include <set>
 
 #include "interpreter/source/sfc_chart.h"
-#include "interpreter/source/st_assembler.h"
+#include "interpreter/source/st_splice.h"
+#include "interpreter/source/st_tokens.h"
 #include "stdlib/number_scan.h"
 
 namespace strun::source {
 
 namespace {
 
-struct Token {
-    std::string text, up;  // as written; upper case
-    size_t begin = 0, end = 0;
-    int line = 1, col = 1;
-    bool word = false;
-};
-
-// Words, strings, numbers and symbols, without comments, pragmas and blanks.
-std::vector<Token> tokenize(const std::string& s) {
-    std::vector<Token> out;
-    size_t i = 0;
-    int line = 1;
-    size_t lineStart = 0;
-    auto advance = [&](size_t to) {
-        for (; i < to && i < s.size(); ++i)
-            if (s[i] == '\n') {
-                ++line;
-                lineStart = i + 1;
-            }
-    };
-    while (i < s.size()) {
-        const char c = s[i];
-        if (std::isspace(static_cast<unsigned char>(c))) { advance(i + 1); continue; }
-        if (s.compare(i, 2, "(*") == 0) { size_t e = s.find("*)", i + 2); advance(e == std::string::npos ? s.size() : e + 2); continue; }
-        if (s.compare(i, 2, "/*") == 0) { size_t e = s.find("*/", i + 2); advance(e == std::string::npos ? s.size() : e + 2); continue; }
-        if (s.compare(i, 2, "//") == 0) { size_t e = s.find('\n', i); advance(e == std::string::npos ? s.size() : e); continue; }
-        if (c == '{') { size_t e = s.find('}', i); advance(e == std::string::npos ? s.size() : e + 1); continue; }
-        Token t;
-        t.begin = i;
-        t.line = line;
-        t.col = static_cast<int>(i - lineStart) + 1;
-        size_t e = i + 1;
-        if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
-            while (e < s.size() && (std::isalnum(static_cast<unsigned char>(s[e])) || s[e] == '_')) ++e;
-            // typed literals and times (T#5s, INT#3) are one token
-            if (e < s.size() && s[e] == '#') {
-                ++e;
-                while (e < s.size() && (std::isalnum(static_cast<unsigned char>(s[e])) || s[e] == '_' || s[e] == '.' || s[e] == ':' || s[e] == '-')) ++e;
-            } else {
-                t.word = true;
-            }
-        } else if (std::isdigit(static_cast<unsigned char>(c))) {
-            while (e < s.size() && (std::isalnum(static_cast<unsigned char>(s[e])) || s[e] == '_' || s[e] == '.' || s[e] == '#')) ++e;
-        } else if (c == '\'' || c == '"') {
-            while (e < s.size() && s[e] != c) e += s[e] == '$' ? 2 : 1;
-            e = std::min(e + 1, s.size());
-        } else if (s.compare(i, 2, ":=") == 0 || s.compare(i, 2, "=>") == 0 || s.compare(i, 2, "<=") == 0 || s.compare(i, 2, ">=") == 0 ||
-                   s.compare(i, 2, "<>") == 0 || s.compare(i, 2, "**") == 0) {
-            e = i + 2;
-        }
-        t.text = s.substr(i, e - i);
-        t.up = stdlib::upperAscii(t.text);
-        t.end = e;
-        out.push_back(std::move(t));
-        advance(e);
-    }
-    return out;
-}
+using Token = StToken;
 
 struct Reader {
     const std::string& src;
@@ -95,7 +39,7 @@ struct Reader {
     std::vector<Insert> inserts;
     int charts = 0;
 
-    explicit Reader(const std::string& s) : src(s), toks(tokenize(s)) {}
+    explicit Reader(const std::string& s) : src(s), toks(tokenizeSt(s)) {}
 
     bool failed = false;
     std::string pou;
@@ -294,35 +238,9 @@ struct Reader {
             return;
         }
         // The text with the SFC elements blanked and each chart's ST inserted where its POU's body starts.
-        std::string text = src;
-        for (auto [from, to] : blanked)
-            for (size_t i = from; i < to && i < text.size(); ++i)
-                if (text[i] != '\n') text[i] = ' ';
-        StAssembler out;
-        TextPositions pos(src);
-        size_t done = 0;
-        for (Insert& ins : inserts) {
-            auto [line, col] = pos.at(static_cast<std::ptrdiff_t>(done));
-            out.verbatim(std::string_view(text).substr(done, ins.at - done), line, col);
-            auto emit = [&](const std::vector<plcopen::StLine>& lines) {
-                for (const plcopen::StLine& l : lines) {
-                    if (l.verbatim) out.verbatim(l.text, l.line, l.col, l.element);
-                    else out.written(l.text, l.line, l.col, l.element);
-                }
-            };
-            if (!ins.tr.declarations.empty()) {
-                const plcopen::StLine& d = ins.tr.declarations.front();
-                out.written("VAR", d.line, d.col);
-                emit(ins.tr.declarations);
-                out.written("END_VAR", d.line, d.col);
-            }
-            emit(ins.tr.body);
-            done = ins.at;
-        }
-        auto [line, col] = pos.at(static_cast<std::ptrdiff_t>(done));
-        out.verbatim(std::string_view(text).substr(done), line, col);
-        result.text = std::move(out.text());
-        result.origins = std::move(out.origins());
+        std::vector<StSplice> splices;
+        for (Insert& ins : inserts) splices.push_back({ins.at, std::move(ins.tr.declarations), std::move(ins.tr.body)});
+        spliceSt(src, blanked, std::move(splices), result);
     }
 };
 

@@ -4,9 +4,12 @@
 // adds the END_xxx lines TwinCAT leaves out.
 #include <cctype>
 #include <cstring>
+#include <map>
 
 #include <pugixml.hpp>
 
+#include "interpreter/source/il_body.h"
+#include "interpreter/source/st_tokens.h"
 #include "interpreter/source/twincat_tasks.h"
 #include "interpreter/source/xml_conversion.h"
 
@@ -31,7 +34,51 @@ struct TwincatReader : XmlConversion {
         out.written(st, line, col);
     }
 
-    // <Implementation><ST>...</ST></Implementation>; another language is an error naming the POU.
+    // IL bodies translated to ST before their POU is written (decision 0466):
+    // the temporaries of the POU's own body and of its actions go into a VAR
+    // section after the POU's declaration, a method's or accessor's after its own.
+    std::map<const void*, plcopen::Translation> ilBodies;
+    plcopen::ProjectTypes ilProject;  // no project-wide knowledge: the standard blocks are the instances `S fb` knows
+    int ilCount = 0;
+
+    // The <IL> text of `owner`'s implementation translated; its hidden temporaries into `decls`.
+    std::string pouDeclaration;  // the text of the POU's <Declaration>: its variables are the IL's too
+
+    void translateIl(const pugi::xml_node& owner, std::vector<plcopen::StLine>& decls) {
+        pugi::xml_node il = owner.child("Implementation").child("IL");
+        if (!il) return;
+        std::string declText = pouDeclaration;
+        for (pugi::xml_node c : owner.child("Declaration").children()) declText += std::string("\n") + c.value();
+        plcopen::PouContext ctx;
+        ctx.project = &ilProject;
+        const std::vector<StToken> toks = tokenizeSt(declText);
+        declaredVariables(toks, 0, toks.size(), false, ctx.variables);
+        il::Surroundings around;
+        around.prefix = "_il" + std::to_string(++ilCount) + "_";
+        around.isBlockInstance = [&ctx](const std::string& name) { return ctx.isBlockInstance(name); };
+        around.fail = [this](int line, int col, const std::string& message) { result.errors.push_back({line, col, message}); };
+        plcopen::Translation& tr = ilBodies[il.internal_object()];
+        for (pugi::xml_node c : il.children()) {
+            if (c.type() != pugi::node_cdata && c.type() != pugi::node_pcdata) continue;
+            auto [line, col] = where(c);
+            if (!il::translate(c.value(), line, col, around, tr)) return;
+        }
+        decls.insert(decls.end(), tr.declarations.begin(), tr.declarations.end());
+    }
+
+    void writeLines(const std::vector<plcopen::StLine>& lines) {
+        for (const plcopen::StLine& l : lines) out.written(l.text, l.line, l.col, l.element);
+    }
+
+    void declarationsOfIl(const std::vector<plcopen::StLine>& decls) {
+        if (decls.empty()) return;
+        out.written("VAR", decls.front().line, decls.front().col);
+        writeLines(decls);
+        out.written("END_VAR", decls.front().line, decls.front().col);
+    }
+
+    // <Implementation><ST>...</ST></Implementation> (or <IL>, translated
+    // before); another language is an error naming the POU.
     void implementation(const pugi::xml_node& owner, const std::string& pouName) {
         pugi::xml_node impl = owner.child("Implementation");
         if (!impl) return;
@@ -39,11 +86,24 @@ struct TwincatReader : XmlConversion {
             if (lang.type() != pugi::node_element) continue;
             if (std::strcmp(lang.name(), "ST") == 0) {
                 copyText(lang);
+            } else if (std::strcmp(lang.name(), "IL") == 0) {
+                auto it = ilBodies.find(lang.internal_object());
+                if (it != ilBodies.end()) writeLines(it->second.body);
+            } else if (std::strcmp(lang.name(), "NWL") == 0 && hasActiveIl(lang)) {
+                error(lang, "'" + pouName + "' has a body in IL, kept by TwinCAT's FBD/LD/IL editor as networks (<NWL>), " +
+                                "which strun does not read; strun runs ST bodies and IL written as text (<IL>)");
             } else {
                 error(lang, "'" + pouName + "' has a body in " + languageName(lang.name()) +
                                 "; strun runs Structured Text (ST) bodies only");
             }
         }
+    }
+
+    // TwinCAT's FBD/LD/IL editor marks a network shown as IL with <v n="ILActive">true</v>.
+    static bool hasActiveIl(const pugi::xml_node& nwl) {
+        for (pugi::xpath_node v : nwl.select_nodes(".//v[@n='ILActive']"))
+            if (std::strcmp(v.node().child_value(), "true") == 0) return true;
+        return false;
     }
 
     static std::string languageName(const char* tag) {
@@ -76,7 +136,10 @@ struct TwincatReader : XmlConversion {
 
     void methods(const pugi::xml_node& pou, bool prototypes) {
         for (pugi::xml_node m : pou.children("Method")) {
+            std::vector<plcopen::StLine> ilDecls;
+            if (!prototypes) translateIl(m, ilDecls);
             copyText(m.child("Declaration"));
+            declarationsOfIl(ilDecls);
             if (!prototypes) implementation(m, m.attribute("Name").value());
             written(m, "END_METHOD");
         }
@@ -86,7 +149,10 @@ struct TwincatReader : XmlConversion {
                 pugi::xml_node a = p.child(accessor);
                 if (!a) continue;
                 written(a, std::strcmp(accessor, "Get") == 0 ? "GET" : "SET");
+                std::vector<plcopen::StLine> ilDecls;
+                if (!prototypes) translateIl(a, ilDecls);
                 copyText(a.child("Declaration"));
+                declarationsOfIl(ilDecls);
                 if (!prototypes) implementation(a, std::string(p.attribute("Name").value()) + "." + accessor);
                 written(a, std::strcmp(accessor, "Get") == 0 ? "END_GET" : "END_SET");
             }
@@ -104,7 +170,13 @@ struct TwincatReader : XmlConversion {
             error(decl ? decl : pou, "'" + name + "': the declaration does not start with PROGRAM, FUNCTION_BLOCK or FUNCTION");
             return;
         }
+        std::vector<plcopen::StLine> ilDecls;  // of the POU's body and its actions
+        pouDeclaration.clear();
+        for (pugi::xml_node c : decl.children()) pouDeclaration += c.value();
+        translateIl(pou, ilDecls);
+        for (pugi::xml_node a : pou.children("Action")) translateIl(a, ilDecls);
         copyText(decl);
+        declarationsOfIl(ilDecls);
         implementation(pou, name);
         methods(pou, false);
         for (pugi::xml_node a : pou.children("Action")) {
