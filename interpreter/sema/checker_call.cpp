@@ -522,6 +522,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             if (Checked overloaded; !methodOverloads_.empty() && callOverloadedMethod(base, base.type->pou, upper(callee.name), e, overloaded))
                 return overloaded;  // decision 0362
             if (PouInfo* m = findMethod(base.type->pou, upper(callee.name))) return methodCall(base, m, e);
+            if (isImplicitFbInit(base.type, callee.name)) return implicitFbInitCall(base, e);
         }
         Diagnostic& d = error(diag::E0103, callee.nameLoc.line ? callee.nameLoc : callee.loc, fmt::format("'{}' is not a method of {}", callee.name, typeName(base.type)));
         if ((base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou) {

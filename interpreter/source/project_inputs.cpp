@@ -12,6 +12,7 @@
 #include "interpreter/source/st_textual_sfc.h"
 #include "interpreter/source/twincat_event_classes.h"
 #include "interpreter/source/twincat_global_types.h"
+#include "interpreter/source/twincat_library_namespaces.h"
 #include "interpreter/source/twincat_plc_project.h"
 #include "interpreter/source/twincat_system_event_classes.h"
 #include "interpreter/source/xml_inputs.h"
@@ -46,7 +47,7 @@ std::size_t projectBytes(const SourceSet& sources) {
 // the libraries they reference are noted (decision 0279). A .plcproj that
 // cannot be read, or lists no file, changes nothing.
 void applyPlcProjects(const std::vector<std::string>& plcProjects, std::vector<std::string>& found, SourceSet& sources,
-                      std::vector<std::string>& pinnedTypes) {
+                      std::vector<std::string>& pinnedTypes, std::vector<GivenPlcProject>& given) {
     std::set<std::string> compiled;
     bool listsFiles = false;
     for (const std::string& path : plcProjects) {
@@ -59,6 +60,7 @@ void applyPlcProjects(const std::vector<std::string>& plcProjects, std::vector<s
         for (const std::string& library : project.libraries) sources.addReferencedLibrary(library);
         pinnedTypes.insert(pinnedTypes.end(), project.pinnedTypes.begin(), project.pinnedTypes.end());
         for (const std::string& type : project.pinnedTypes) sources.addPinnedType(type);
+        given.push_back({fs::path(path).parent_path().string(), std::move(project)});
     }
     if (!listsFiles) return;
     std::erase_if(found, [&](const std::string& f) { return isTwinCatObject(f) && !compiled.count(lowerPath(f)); });
@@ -221,6 +223,7 @@ bool isProjectSource(const std::string& path) {
 bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log,
                        std::string& usageError) {
     bool stdinRead = false;
+    std::vector<GivenPlcProject> plcProjectsGiven;  // for the namespaces of the libraries among them
     for (const auto& path : paths) {
         std::error_code ec;
         if (fs::is_directory(path, ec)) {
@@ -239,7 +242,7 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
                 return false;
             }
             std::sort(plcProjects.begin(), plcProjects.end());
-            applyPlcProjects(plcProjects, found, sources, pinnedTypes);
+            applyPlcProjects(plcProjects, found, sources, pinnedTypes, plcProjectsGiven);
             std::sort(found.begin(), found.end());
             // A Beremiz / OpenPLC Editor folder is its plc.xml (decision 0356).
             for (BeremizFolder& folder : takeBeremizFolders(found)) addBeremizProject(folder, true, sources, userFiles, log);
@@ -283,6 +286,7 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
         }
         addFile(path, std::move(text), sources, userFiles, log, false);
     }
+    assignLibraryNamespaces(plcProjectsGiven, userFiles, sources);
     return true;
 }
 
