@@ -33,11 +33,12 @@ bool names(const std::string& reference, const PlcProject& p) {
            (!p.defaultNamespace.empty() && sameName(reference, p.defaultNamespace));
 }
 
-// How far down `folder` lies below `dir` (-1: not below it).
+// How deep `dir` is when `file` lies below it; -1 when it does not.
 int depthBelow(const fs::path& file, const fs::path& dir) {
-    const fs::path rel = file.lexically_normal().lexically_relative(dir.lexically_normal());
+    const fs::path folder = dir.lexically_normal();
+    const fs::path rel = file.lexically_normal().lexically_relative(folder);
     if (rel.empty() || *rel.begin() == "..") return -1;
-    return static_cast<int>(std::distance(dir.lexically_normal().begin(), dir.lexically_normal().end()));
+    return static_cast<int>(std::distance(folder.begin(), folder.end()));
 }
 
 }  // namespace
