@@ -23,6 +23,28 @@
 
 namespace strun::project {
 
+namespace {
+
+// Puts a TwinCAT library project's POUs and types into the namespace its
+// consumer's reference gives it (decision 0454); its global lists keep their
+// names (`Lib.GVL_X.x` already names one). Once: the LSP lends units it
+// parsed before.
+void placeInNamespace(ast::Pou& pou, const std::string& ns) {
+    if (pou.nameSpace != ns && pou.nameSpace.rfind(ns + ".", 0) != 0) pou.nameSpace = pou.nameSpace.empty() ? ns : ns + "." + pou.nameSpace;
+    for (auto& m : pou.methods) placeInNamespace(*m, ns);
+    for (auto& p : pou.properties)
+        for (ast::Pou* accessor : {p.getter.get(), p.setter.get()})
+            if (accessor) placeInNamespace(*accessor, ns);
+}
+
+void placeInLibraryNamespace(ast::CompilationUnit& unit, const std::string& ns) {
+    for (auto& p : unit.pous) placeInNamespace(*p, ns);
+    for (auto& t : unit.types)
+        if (t.nameSpace != ns && t.nameSpace.rfind(ns + ".", 0) != 0) t.nameSpace = t.nameSpace.empty() ? ns : ns + "." + t.nameSpace;
+}
+
+}  // namespace
+
 std::unique_ptr<ParsedLibrary> parseLibrary(CompileLog& log) {
     auto library = std::make_unique<ParsedLibrary>();
     std::vector<int> files;
@@ -119,6 +141,8 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     }
     // After local syntax errors the recovered tree is still checked, so that
     // the later mistakes of the file are reported too (decision 0161).
+    for (ast::CompilationUnit& unit : units)
+        if (const std::string& ns = sources.libraryNamespace(unit.file); !ns.empty()) placeInLibraryNamespace(unit, ns);
     const SyntaxDamage damage = assessSyntaxErrors(log);
     if (log.hasErrors() && !damage.checkable) return nullptr;
     auto model = std::make_unique<sema::ProgramModel>();

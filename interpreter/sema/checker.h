@@ -295,6 +295,9 @@ private:
     exec::Stmt* callFunctionBlock(Checked inst, const ast::Expr& e);
     // Whether some block EXTENDS `fb` (known once every block is laid out).
     bool isExtended(const PouInfo* fb);
+    // `inst.FB_init(...)` of a block that declares none: the implicit one (decision 0457).
+    bool isImplicitFbInit(const Type* instance, const std::string& member);
+    Checked implicitFbInitCall(const Checked& base, const ast::Expr& call);
     std::set<const PouInfo*> extendedBlocks_;
     bool extendedKnown_ = false;
     Checked varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside);

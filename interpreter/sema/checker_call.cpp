@@ -371,6 +371,12 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
                 t = types().byName(upper(a.name));
                 const std::string typeKey = scopedKey(upper(a.name));
                 if (!t && (typeDecls_.count(typeKey) || pous_.count(typeKey))) t = resolveNamedType(a.name, a.loc);
+            } else if (a.kind == ast::ExprKind::Member && isNamespace(*a.kids[0]) && !lookupVar(upper(chainRoot(a).name))) {
+                // SIZEOF(FsCommon.T_Generic): a type written with its library's namespace (decision 0454).
+                const std::string path = writtenPath(a);
+                const std::string typeKey = scopedKey(path);
+                if (typeDecls_.count(typeKey) || pous_.count(typeKey) || typeDecls_.count(upper(a.name)) || pous_.count(upper(a.name)))
+                    t = resolveNamedType(path, a.loc);
             }
             if (!t) {
                 bool saved = suppressAutoDeref_;
@@ -522,6 +528,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
             if (Checked overloaded; !methodOverloads_.empty() && callOverloadedMethod(base, base.type->pou, upper(callee.name), e, overloaded))
                 return overloaded;  // decision 0362
             if (PouInfo* m = findMethod(base.type->pou, upper(callee.name))) return methodCall(base, m, e);
+            if (isImplicitFbInit(base.type, callee.name)) return implicitFbInitCall(base, e);
         }
         Diagnostic& d = error(diag::E0103, callee.nameLoc.line ? callee.nameLoc : callee.loc, fmt::format("'{}' is not a method of {}", callee.name, typeName(base.type)));
         if ((base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou) {

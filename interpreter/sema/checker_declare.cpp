@@ -943,7 +943,13 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     // project's GVL): the project's takes the name, as a user POU or type named
     // like a library's does; TwinCAT keeps the library's behind its namespace.
     const bool replacesLibraryGlobal = other && libraryFiles_.count(other->loc.file) && !libraryFiles_.count(loc.file);
-    if (replacesLibraryGlobal) other = nullptr;
+    // A {attribute 'qualified_only'} list's name is invisible unqualified, so
+    // it neither takes the bare name from another global nor clashes with one
+    // (decision 0455): a bare PI beside Struckig's Constants.PI is Tc2_System's.
+    const bool inOtherList = other && !listGlobals_.count(upper(declaringList_) + "." + key);
+    const bool hiddenBesideOther = inOtherList && !qualifiedOnlyList_.empty();
+    const bool otherHidden = inOtherList && !other->qualifiedOnlyList.empty();
+    if (replacesLibraryGlobal || hiddenBesideOther || otherHidden) other = nullptr;
     if (other && (other->listName.empty() || declaringList_.empty() || listGlobals_.count(upper(declaringList_) + "." + key))) {
         error(diag::E0106, loc, fmt::format("duplicate global variable '{}'", name));
         return nullptr;
@@ -987,7 +993,7 @@ VarSym* Checker::addGlobal(const ast::VarDecl& decl, size_t n, const ast::VarBlo
     if (!declaringList_.empty()) listGlobals_[upper(declaringList_) + "." + key] = raw;
     if (other) {
         other->sharedName = raw->sharedName = true;  // unqualified use: an error naming both lists
-    } else {
+    } else if (!hiddenBesideOther) {
         globals_[key] = raw;
     }
     // The library's own lists (GVL_Param_TcUnit) are not the project's state:

@@ -440,8 +440,17 @@ Checked Checker::checkName(const ast::Expr& e) {
     }
     std::string key = upper(e.name);
     if (qualifiedAccess_ && !qualifiedList_.empty()) {
+        // `GVL.x`, `__SYSTEM.Constants.x`, and a library's namespace in front of its list (`Lib.GVL.x`).
         auto it = listGlobals_.find(qualifiedList_ + "." + key);
+        if (const auto dot = qualifiedList_.rfind('.'); it == listGlobals_.end() && dot != std::string::npos)
+            it = listGlobals_.find(qualifiedList_.substr(dot + 1) + "." + key);
         if (it != listGlobals_.end() && !(pou_ && pou_->ast && libraryFiles_.count(pou_->ast->loc.file))) return varAccess(it->second, e.loc, false);
+    }
+    // Inside a global list, its own variables come first and need no
+    // qualifier, also with {attribute 'qualified_only'} (decision 0455).
+    if (!declaringList_.empty() && !qualifiedAccess_) {
+        auto it = listGlobals_.find(upper(declaringList_) + "." + key);
+        if (it != listGlobals_.end()) return varAccess(it->second, e.loc, false);
     }
     VarSym* v = lookupVar(key);
     if (!v || v->section == ast::VarSection::Global) {
@@ -543,7 +552,9 @@ Checked Checker::earlyGlobalConstant(const std::string& key, const ast::Loc& loc
     for (int pass = 0; pass < 2; ++pass)
         for (const ast::GlobalList* list : globalLists_) {
             if ((libraryFiles_.count(list->loc.file) != 0) != (pass == 1)) continue;
-            if (!qualifiedList_.empty() && upper(list->nameSpace) != qualifiedList_) continue;
+            if (!qualifiedList_.empty() && upper(list->nameSpace) != qualifiedList_ &&
+                !qualifiedList_.ends_with("." + upper(list->nameSpace)))
+                continue;
             for (const auto& block : list->blocks) {
                 if (!block.constant || block.section != ast::VarSection::Global) continue;
                 for (const auto& decl : block.vars)
@@ -861,7 +872,7 @@ Checked Checker::checkMember(const ast::Expr& e) {
         plain.loc = e.nameLoc.line ? e.nameLoc : e.loc;
         plain.name = e.name;
         qualifiedAccess_ = true;
-        qualifiedList_ = baseExpr.kind == ast::ExprKind::Name ? upper(baseExpr.name) : "";
+        qualifiedList_ = writtenPath(baseExpr);
         Checked c = checkName(plain);
         qualifiedAccess_ = false;
         qualifiedList_.clear();

@@ -546,7 +546,8 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                     if (base.ok && (base.type->kind == TK::FunctionBlock || base.type->kind == TK::Interface) && base.type->pou)
                         method = findMethod(base.type->pou, upper(callee.name));
                     if (!base.ok) return nullptr;
-                    isMethod = method != nullptr || methodOverloads_.count(upper(callee.name)) != 0;  // overloaded (decision 0362)
+                    isMethod = method != nullptr || methodOverloads_.count(upper(callee.name)) != 0 ||  // overloaded (decision 0362)
+                               isImplicitFbInit(base.type, callee.name);                                        // decision 0457
                     if (method && method->ast->isAction && !s.expr->args.empty()) return callActionWithArguments(*s.expr, base.type->pou);
                 }
                 if (!isMethod) {

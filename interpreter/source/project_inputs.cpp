@@ -13,6 +13,7 @@
 #include "interpreter/source/st_textual_sfc.h"
 #include "interpreter/source/twincat_event_classes.h"
 #include "interpreter/source/twincat_global_types.h"
+#include "interpreter/source/twincat_library_namespaces.h"
 #include "interpreter/source/twincat_plc_project.h"
 #include "interpreter/source/twincat_solution.h"
 #include "interpreter/source/twincat_system_event_classes.h"
@@ -48,7 +49,7 @@ std::size_t projectBytes(const SourceSet& sources) {
 // the libraries they reference are noted (decision 0279). A .plcproj that
 // cannot be read, or lists no file, changes nothing.
 void applyPlcProjects(const std::vector<std::string>& plcProjects, std::vector<std::string>& found, SourceSet& sources,
-                      std::vector<std::string>& pinnedTypes) {
+                      std::vector<std::string>& pinnedTypes, std::vector<GivenPlcProject>& given) {
     std::set<std::string> compiled;
     bool listsFiles = false;
     for (const std::string& path : plcProjects) {
@@ -61,6 +62,7 @@ void applyPlcProjects(const std::vector<std::string>& plcProjects, std::vector<s
         for (const std::string& library : project.libraries) sources.addReferencedLibrary(library);
         pinnedTypes.insert(pinnedTypes.end(), project.pinnedTypes.begin(), project.pinnedTypes.end());
         for (const std::string& type : project.pinnedTypes) sources.addPinnedType(type);
+        given.push_back({fs::path(path).parent_path().string(), std::move(project)});
     }
     if (!listsFiles) return;
     std::erase_if(found, [&](const std::string& f) { return isTwinCatObject(f) && !compiled.count(lowerPath(f)); });
@@ -229,6 +231,7 @@ bool isProjectSource(const std::string& path) {
 bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources, std::vector<int>& userFiles, CompileLog& log,
                        std::string& usageError) {
     bool stdinRead = false;
+    std::vector<GivenPlcProject> plcProjectsGiven;  // for the namespaces of the libraries among them
     for (const auto& path : paths) {
         std::error_code ec;
         if (fs::is_directory(path, ec)) {
@@ -247,7 +250,7 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
                 return false;
             }
             std::sort(plcProjects.begin(), plcProjects.end());
-            applyPlcProjects(plcProjects, found, sources, pinnedTypes);
+            applyPlcProjects(plcProjects, found, sources, pinnedTypes, plcProjectsGiven);
             // A PLC project folder without its solution: the solution around it (decision 0474).
             if (std::none_of(typeSystems.begin(), typeSystems.end(), [](const std::string& f) { return lowerExtension(f) == ".tsproj"; }))
                 for (std::string& f : enclosingTwinCatTypeSystems(plcProjects)) typeSystems.push_back(std::move(f));
@@ -294,6 +297,7 @@ bool readProjectInputs(const std::vector<std::string>& paths, SourceSet& sources
         }
         addFile(path, std::move(text), sources, userFiles, log, false);
     }
+    assignLibraryNamespaces(plcProjectsGiven, userFiles, sources);
     return true;
 }
 

@@ -63,6 +63,20 @@ public:
         if (std::find(libraries_.begin(), libraries_.end(), name) == libraries_.end()) libraries_.push_back(name);
     }
     const std::vector<std::string>& referencedLibraries() const { return libraries_; }
+    // A referenced library whose own project folder is given: strun reads it,
+    // so it is not missing (decision 0454).
+    void dropReferencedLibrary(const std::string& name) { std::erase(libraries_, name); }
+    // The namespace of a TwinCAT library project's file: the `<Namespace>` of
+    // the reference that names the library, else its `<DefaultNamespace>`
+    // (decision 0454); "" for every other file.
+    void setLibraryNamespace(int index, std::string nameSpace) {
+        if (libraryNamespaces_.size() <= static_cast<size_t>(index)) libraryNamespaces_.resize(static_cast<size_t>(index) + 1);
+        libraryNamespaces_[static_cast<size_t>(index)] = std::move(nameSpace);
+    }
+    const std::string& libraryNamespace(int index) const {
+        static const std::string none;
+        return index >= 0 && static_cast<size_t>(index) < libraryNamespaces_.size() ? libraryNamespaces_[static_cast<size_t>(index)] : none;
+    }
     // `<PinnedGlobalDataType>` names of a .plcproj (decision 0447).
     void addPinnedType(const std::string& name) { pinnedTypes_.push_back(name); }
     const std::vector<std::string>& pinnedTypes() const { return pinnedTypes_; }
@@ -79,6 +93,7 @@ private:
     std::vector<std::string> libraries_;
     std::vector<int> projectLibraries_;
     std::vector<std::string> pinnedTypes_;
+    std::vector<std::string> libraryNamespaces_;  // by file index
 };
 
 class CompileLog {

@@ -30,6 +30,12 @@ bool readPlcProject(const std::string& text, PlcProject& out, std::string& error
         error = "not a TwinCAT PLC project (the root must be <Project>)";
         return false;
     }
+    for (const pugi::xml_node group : project.children("PropertyGroup")) {
+        if (const pugi::xml_node n = group.child("Name"); n && out.name.empty()) out.name = trimmed(n.text().as_string());
+        if (const pugi::xml_node n = group.child("Title"); n && out.title.empty()) out.title = trimmed(n.text().as_string());
+        if (const pugi::xml_node n = group.child("DefaultNamespace"); n && out.defaultNamespace.empty())
+            out.defaultNamespace = trimmed(n.text().as_string());
+    }
     for (const pugi::xml_node group : project.children("ItemGroup")) {
         for (const pugi::xml_node item : group.children()) {
             const std::string include = trimmed(item.attribute("Include").as_string());
@@ -42,8 +48,10 @@ bool readPlcProject(const std::string& text, PlcProject& out, std::string& error
             } else if (kind == "PlaceholderReference" || kind == "LibraryReference") {
                 // "Tc2_MC2, 3.3.12.0 (Beckhoff Automation GmbH)": the name is before the comma.
                 std::string name = trimmed(include.substr(0, include.find(',')));
-                if (!name.empty() && std::find(out.libraries.begin(), out.libraries.end(), name) == out.libraries.end())
+                if (!name.empty() && std::find(out.libraries.begin(), out.libraries.end(), name) == out.libraries.end()) {
                     out.libraries.push_back(name);
+                    out.libraryNamespaces.push_back(trimmed(item.child("Namespace").text().as_string()));
+                }
             } else if (kind == "PinnedGlobalDataType") {
                 out.pinnedTypes.push_back(include);
             }

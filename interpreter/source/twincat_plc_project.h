@@ -17,6 +17,15 @@ struct PlcProject {
     // `<PlaceholderReference Include="Tc2_MC2">`, `<LibraryReference
     // Include="Tc2_MC2, 3.3.12.0 (Beckhoff Automation GmbH)">`: the names.
     std::vector<std::string> libraries;
+    // The `<Namespace>` each reference gives its library's names in this
+    // project (`<PlaceholderReference Include="lcls-twincat-math">` ...
+    // `<Namespace>lcls_twincat_math</Namespace>`), parallel to `libraries`;
+    // "" when the reference names none (decision 0454).
+    std::vector<std::string> libraryNamespaces;
+    // `<PropertyGroup>`: the project's `<Name>`, `<Title>` (what a consumer's
+    // reference names it by) and `<DefaultNamespace>` (the qualifier of its
+    // names when the reference gives none).
+    std::string name, title, defaultNamespace;
     // `<PinnedGlobalDataType Include="ST_X"/>`: global data types of the
     // solution's type system the project pins (decision 0447).
     std::vector<std::string> pinnedTypes;

@@ -1,0 +1,79 @@
+#include "interpreter/source/twincat_library_namespaces.h"
+
+#include <cctype>
+#include <filesystem>
+
+#include "interpreter/source/project_inputs.h"
+
+namespace strun::source {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool sameName(const std::string& a, const std::string& b) {
+    if (a.size() != b.size()) return false;
+    for (size_t k = 0; k < a.size(); ++k)
+        if (std::toupper(static_cast<unsigned char>(a[k])) != std::toupper(static_cast<unsigned char>(b[k]))) return false;
+    return true;
+}
+
+// Code can only write a namespace that is an identifier ("LCLS_General", not "LCLS General").
+bool isIdentifier(const std::string& s) {
+    if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
+    for (unsigned char c : s)
+        if (!std::isalnum(c) && c != '_') return false;
+    return true;
+}
+
+// Whether a reference `Include="name"` names `p`: TwinCAT matches a
+// placeholder by the library's title; projects also write its name.
+bool names(const std::string& reference, const PlcProject& p) {
+    return (!p.title.empty() && sameName(reference, p.title)) || (!p.name.empty() && sameName(reference, p.name)) ||
+           (!p.defaultNamespace.empty() && sameName(reference, p.defaultNamespace));
+}
+
+// How deep `dir` is when `file` lies below it; -1 when it does not.
+int depthBelow(const fs::path& file, const fs::path& dir) {
+    const fs::path folder = dir.lexically_normal();
+    const fs::path rel = file.lexically_normal().lexically_relative(folder);
+    if (rel.empty() || *rel.begin() == "..") return -1;
+    return static_cast<int>(std::distance(folder.begin(), folder.end()));
+}
+
+}  // namespace
+
+void assignLibraryNamespaces(const std::vector<GivenPlcProject>& projects, const std::vector<int>& userFiles, SourceSet& sources) {
+    std::vector<std::string> spaces(projects.size());  // "" for a project no one references
+    for (size_t lib = 0; lib < projects.size(); ++lib) {
+        bool referenced = false;
+        for (size_t user = 0; user < projects.size() && spaces[lib].empty(); ++user) {
+            if (user == lib) continue;
+            const PlcProject& p = projects[user].project;
+            for (size_t k = 0; k < p.libraries.size(); ++k) {
+                if (!names(p.libraries[k], projects[lib].project)) continue;
+                referenced = true;
+                sources.dropReferencedLibrary(p.libraries[k]);  // given: not missing
+                if (k < p.libraryNamespaces.size() && isIdentifier(p.libraryNamespaces[k])) {
+                    spaces[lib] = p.libraryNamespaces[k];
+                    break;
+                }
+            }
+        }
+        if (referenced && spaces[lib].empty() && isIdentifier(projects[lib].project.defaultNamespace))
+            spaces[lib] = projects[lib].project.defaultNamespace;
+    }
+    for (int f : userFiles) {
+        const std::string& path = sources.file(f).path;
+        if (!isTwinCatObject(path)) continue;
+        // The deepest project folder holding the file is its project.
+        int best = -1, bestDepth = -1;
+        for (size_t k = 0; k < projects.size(); ++k) {
+            const int depth = depthBelow(path, projects[k].folder);
+            if (depth > bestDepth) best = static_cast<int>(k), bestDepth = depth;
+        }
+        if (best >= 0 && !spaces[static_cast<size_t>(best)].empty()) sources.setLibraryNamespace(f, spaces[static_cast<size_t>(best)]);
+    }
+}
+
+}  // namespace strun::source
