@@ -239,6 +239,9 @@ private:
     Checked addressOf(const ast::Expr& e, const char* fn);
     std::map<std::string, int> methodSlots_;
     bool suppressAutoDeref_ = false;
+    // Set while the operand of ADR()/REF() is checked: a CONSTANT named there
+    // is its storage, not its folded value (decision 0475).
+    bool addressOperand_ = false;
 
     // ---- configuration (checker_config.cpp)
     void buildConfiguration();

@@ -357,8 +357,9 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
         c.constInt = v->constInt;
         c.constReal = v->constReal;
     }
-    if (v->hasConstValue && (isIntRep(v->type) || isRealRep(v->type))) {
-        // A CONSTANT with a constant initial value is its value everywhere.
+    if (v->hasConstValue && (isIntRep(v->type) || isRealRep(v->type)) && !addressOperand_) {
+        // A CONSTANT with a constant initial value is its value everywhere,
+        // except under ADR()/REF(), which take its storage's address (decision 0475).
         exec::Expr* k = isRealRep(v->type) ? static_cast<exec::Expr*>(pool().make<exec::ConstReal>(v->constReal))
                                            : pool().make<exec::ConstInt>(v->constInt);
         k->type = v->type;
@@ -1100,6 +1101,15 @@ Checked Checker::checkExpr(const ast::Expr& e) {
 }
 
 Checked Checker::checkExprOfKind(const ast::Expr& e) {
+    // ADR()/REF() of a CONSTANT takes its storage (decision 0475) only for the
+    // named variable itself: subscripts, arguments and operands inside the
+    // operand fold their constants as usual.
+    if (addressOperand_ && e.kind != ast::ExprKind::Name && e.kind != ast::ExprKind::Member) {
+        addressOperand_ = false;
+        Checked c = checkExprOfKind(e);
+        addressOperand_ = true;
+        return c;
+    }
     switch (e.kind) {
         case ast::ExprKind::Literal: return checkLiteral(e);
         case ast::ExprKind::Name: return checkName(e);

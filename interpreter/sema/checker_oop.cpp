@@ -359,7 +359,10 @@ Checked Checker::addressOf(const ast::Expr& e, const char* fn) {
     // REF(THIS) / ADR(THIS) (SIMATIC AX): the instance's own address, which THIS already is (decision 0316).
     if (e.kind == ast::ExprKind::This) return checkThis(e, false);
     bool saved = suppressAutoDeref_;
+    const bool savedOperand = addressOperand_;
+    addressOperand_ = true;
     Checked v = checkExpr(e);
+    addressOperand_ = savedOperand;
     suppressAutoDeref_ = saved;
     if (!v.ok) return v;
     if (!v.isPlace || v.node->bitIndex() >= 0) {
