@@ -385,7 +385,9 @@ private:
     // `enclosing`/`enclosingAddr`: the instance that declares this one, whose
     // variables the FB_init arguments on the declaration may name.
     void collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth,
-                        PouInfo* enclosing = nullptr, uint8_t* enclosingAddr = nullptr);
+                        PouInfo* enclosing = nullptr, uint8_t* enclosingAddr = nullptr, const ast::Init* declInit = nullptr);
+    std::vector<const VarSym*> membersDeclaredInLiterals(PouInfo* fb, const ast::Init& declInit);  // decision 0476
+    bool isLiteralInit(const ast::Init& init);
     void collectArrayFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth, PouInfo* enclosing,
                              uint8_t* enclosingAddr);
     bool holdsFbInit(const Type* t);

@@ -9,6 +9,7 @@
 #include "interpreter/ast/ast_clone.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/fb_init_call.h"
+#include "interpreter/exec/instance_init_nodes.h"
 #include "interpreter/sema/instance_search.h"
 
 namespace strun::sema {
@@ -28,7 +29,7 @@ bool Checker::holdsFbInit(const Type* t) {
 }
 
 void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth, PouInfo* enclosing,
-                             uint8_t* enclosingAddr) {
+                             uint8_t* enclosingAddr, const ast::Init* declInit) {
     if (!t || depth > kMaxFbInitNesting || !holdsFbInit(t)) return;
     if (t->kind == TK::Array) {
         if (t->elem && (t->elem->kind == TK::FunctionBlock || t->elem->kind == TK::Struct || t->elem->kind == TK::Array))
@@ -45,7 +46,8 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
     for (PouInfo* p = fb; p; p = p->parent)
         for (auto& v : p->ownedVars)
             if (v->storage == Storage::Self && !v->byRef)
-                collectFbInits(v->type, addr + v->offset, v->decl ? v->decl->type.get() : nullptr, depth + 1, fb, addr);
+                collectFbInits(v->type, addr + v->offset, v->decl ? v->decl->type.get() : nullptr, depth + 1, fb, addr,
+                               v->decl ? v->decl->init.get() : nullptr);
     // Run-time initialisers of this instance (its base blocks' first, then its own), before its FB_init.
     std::vector<PouInfo*> chain;
     for (PouInfo* p = fb; p && chain.size() <= static_cast<size_t>(kMaxFbInitNesting); p = p->parent) chain.insert(chain.begin(), p);
@@ -94,15 +96,76 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
     pou_ = savedPou;
     if (!c.ok) return;
     runs.push_back(pool().make<exec::EvalStmt>(c.node, exec::EvalStmt::Rep::Int));
+    const std::vector<const VarSym*> declared = declInit ? membersDeclaredInLiterals(fb, *declInit) : std::vector<const VarSym*>{};
+    // FB_init sees the block's own initial values of those members, and the
+    // declaration's are assigned after it, as CODESYS documents (attribute
+    // call_after_init: `fbDoIt.FB_Init(); fbDoIt.in1 := 99;`; decision 0476).
+    for (const VarSym* m : declared)
+        if (fb->instanceInit.size() >= m->offset + m->type->size) {
+            const uint8_t* own = fb->instanceInit.data() + m->offset;
+            model_.initCalls.push_back(pool().make<exec::WriteBytes>(addr + m->offset, std::vector<uint8_t>(own, own + m->type->size)));
+        }
     for (exec::Stmt* run : runs) model_.initCalls.push_back(inEnclosing ? pool().make<exec::WithSelf>(enclosingAddr, run) : run);
+    for (const VarSym* m : declared) {  // the initial image holds the declared value
+        uint8_t* at = addr + m->offset;
+        model_.initCalls.push_back(pool().make<exec::WriteBytes>(at, std::vector<uint8_t>(at, at + m->type->size)));
+    }
 }
 
-// The elements of an array, with the FB_init arguments written after its
-// element type (decision 0330): `ARRAY[1..2] OF FB_X(a := 1)` gives every
-// element the same arguments, `ARRAY[1..2] OF FB_X[(a := 1), (a := 2)]` one
-// list per element in storage order (row-major for several dimensions).
-// Like those of a single instance, they are checked and run in the scope of
-// the block or program that declares the array.
+// Whether an initial value is written out in literals, enumeration values and
+// constants only, so that the instance's initial image holds it.
+bool Checker::isLiteralInit(const ast::Init& init) {
+    switch (init.kind) {
+        case ast::InitKind::Expr: {
+            const ast::Expr* e = init.expr.get();
+            while (e && e->kind == ast::ExprKind::Unary && !e->kids.empty()) e = e->kids[0].get();
+            if (!e) return false;
+            if (e->kind == ast::ExprKind::Literal) return true;
+            if (e->kind == ast::ExprKind::Name) {  // an enumeration value or a constant
+                const VarSym* v = lookupVar(upper(e->name));
+                return !v || (v->constant && v->hasConstValue);
+            }
+            if (e->kind == ast::ExprKind::Member) {  // Enum.Value, Namespace.Enum.Value
+                const ast::Expr* root = e;
+                while (root->kind == ast::ExprKind::Member && !root->kids.empty()) root = root->kids[0].get();
+                return root->kind == ast::ExprKind::Name && !lookupVar(upper(root->name));
+            }
+            return false;
+        }
+        case ast::InitKind::Array:
+            for (const ast::ArrayInitItem& item : init.items)
+                if (item.callForm || (item.value && !isLiteralInit(*item.value))) return false;
+            return true;
+        case ast::InitKind::Struct:
+            for (const ast::StructInitItem& item : init.fields)
+                if (item.value && !isLiteralInit(*item.value)) return false;
+            return true;
+    }
+    return false;
+}
+
+// The members of `fb` that a declaration's structured initial value
+// (`fb : FB(1) := (in1 := 99)`) gives in literals, enumeration values or
+// constants: the instance's initial image holds their declared values.
+// Struckig's tests give the limits its FB_init defaults to infinity this way.
+std::vector<const VarSym*> Checker::membersDeclaredInLiterals(PouInfo* fb, const ast::Init& declInit) {
+    std::vector<const VarSym*> members;
+    if (declInit.kind != ast::InitKind::Struct) return members;
+    for (const ast::StructInitItem& item : declInit.fields) {
+        if (!item.value || !isLiteralInit(*item.value)) continue;
+        const std::string name = upper(item.name);
+        const VarSym* member = nullptr;
+        for (PouInfo* p = fb; p && !member; p = p->parent)
+            for (const auto& v : p->ownedVars)
+                if (v->storage == Storage::Self && !v->byRef && upper(v->name) == name) {
+                    member = v.get();
+                    break;
+                }
+        if (member && member->type && member->type->size > 0) members.push_back(member);
+    }
+    return members;
+}
+
 void Checker::collectArrayFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth, PouInfo* enclosing,
                                   uint8_t* enclosingAddr) {
     const ast::TypeSpec* elemSpec = declSpec && declSpec->kind == ast::TypeSpecKind::Array ? declSpec->elem.get() : nullptr;
@@ -141,7 +204,8 @@ void Checker::buildFbInitCalls() {
         pou_ = nullptr;
     }
     for (VarSym* g : model_.globals)
-        if (g->abs) collectFbInits(g->type, g->abs, g->decl ? g->decl->type.get() : nullptr, 0);
+        if (g->abs) collectFbInits(g->type, g->abs, g->decl ? g->decl->type.get() : nullptr, 0, nullptr, nullptr,
+                                   g->decl ? g->decl->init.get() : nullptr);
     for (auto& prog : model_.programs) collectFbInits(prog.pou->instanceType, prog.memory, nullptr, 0);
     // Temporaries of the FB_init calls (aggregate results) live in the frame they run in.
     model_.maxFrameSize = std::max(model_.maxFrameSize, (frameTop_ + 15) / 16 * 16);
