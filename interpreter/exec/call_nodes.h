@@ -222,11 +222,19 @@ struct InlinedCall {
     std::vector<ArgBind> binds;
     // How a FUNCTION's or METHOD's call binds them (decision 0404): none at
     // all, one 4-byte integer (`arg` stored at `argDst`, without the list's
-    // dispatch), or the list.
-    enum class Args : uint8_t { None, One4, List };
+    // dispatch), several 4-byte integers computed per call (`ints`, decision
+    // 0471: no dispatch per argument), or the list.
+    enum class Args : uint8_t { None, One4, Int4s, List };
     Args args = Args::List;
     Expr* arg = nullptr;
     uint32_t argDst = 0;
+    // Args::Int4s: each argument's value node and its offset in the area,
+    // in the call's order, ended by a null `value`.
+    struct IntArg {
+        Expr* value = nullptr;
+        uint32_t dst = 0;
+    };
+    std::vector<IntArg> ints;
     // The area holds only the result and inputs that are bound per call or
     // read as their arguments (decision 0404): only the result is
     // initialised, from `resultInit` (its 8 bytes of the image).
@@ -260,7 +268,14 @@ struct InlinedCall {
     else if (in.size <= kSmallFrame) std::memcpy(f, in.image.data(), kSmallFrame);
     else std::memcpy(f, in.image.data(), in.size);
     if (in.args == InlinedCall::Args::One4) storeAs<uint32_t>(f + in.argDst, static_cast<uint32_t>(in.arg->i(c)));
-    else if (in.args == InlinedCall::Args::List) bindArgsUntilEnd(c, f, in.binds.data());
+    else if (in.args == InlinedCall::Args::Int4s) {
+        // The destination is computed after the value's call, so that it
+        // does not live across it (no spill per argument).
+        for (const InlinedCall::IntArg* a = in.ints.data(); a->value; ++a) {
+            const uint32_t v = static_cast<uint32_t>(a->value->i(c));
+            storeAs<uint32_t>(f + a->dst, v);
+        }
+    } else if (in.args == InlinedCall::Args::List) bindArgsUntilEnd(c, f, in.binds.data());
     return f;
 }
 

@@ -234,3 +234,64 @@ END_PROGRAM
     CHECK(plain->inlined != nullptr);
     CHECK(element->inlined == nullptr);
 }
+
+TEST_CASE("an inlined call binds several computed DINT arguments without the list (decision 0471)", "[inline][args]") {
+    // The arguments are computed per call (they are not constants or caller
+    // variables read in place): Blend's three are 4-byte integers, Mixed has
+    // an INT among them and keeps the ended ArgBind list. The calls pass
+    // arguments with side effects (Bump appends its digit to `order`), so
+    // that the order of their evaluation is observable too.
+    const char* source = R"(
+FUNCTION Blend : DINT
+VAR_INPUT a : DINT; b : UDINT; c : DINT; END_VAR
+Blend := a * 100 + UDINT_TO_DINT(b) * 10 + c;
+END_FUNCTION
+FUNCTION Mixed : DINT
+VAR_INPUT a : DINT; b : INT; c : DINT; END_VAR
+Mixed := a * 100 + INT_TO_DINT(b) * 10 + c;
+END_FUNCTION
+FUNCTION Bump : DINT
+VAR_INPUT k : DINT; END_VAR
+VAR_IN_OUT order : DINT; END_VAR
+order := order * 10 + k;
+Bump := k;
+END_FUNCTION
+PROGRAM Main
+VAR i : DINT := 2; x : DINT; y : DINT; z : DINT; w : DINT; order : DINT; END_VAR
+x := Blend(i + 1, DINT_TO_UDINT(i * 2), i - 5);
+y := Mixed(i + 1, DINT_TO_INT(i * 2), i - 5);
+z := Blend(c := i MOD 2, a := i * 3, b := DINT_TO_UDINT(i + 4));
+w := Blend(c := Bump(3, order), a := Bump(1, order), b := DINT_TO_UDINT(Bump(2, order)));
+END_PROGRAM
+)";
+    auto c = compileSt(source);
+    INFO(c->printed());
+    REQUIRE(c->ok());
+    REQUIRE(callIn(*c, 0));
+    REQUIRE(callIn(*c, 0)->inlined);
+    const exec::InlinedCall& blend = *callIn(*c, 0)->inlined;
+    CHECK(blend.args == exec::InlinedCall::Args::Int4s);
+    REQUIRE(blend.ints.size() == 4);  // three arguments and the null end
+    CHECK(blend.ints[3].value == nullptr);
+    CHECK(blend.ints[0].dst < blend.ints[1].dst);  // in the call's order: a, b, c
+    REQUIRE(callIn(*c, 1));
+    REQUIRE(callIn(*c, 1)->inlined);
+    CHECK(callIn(*c, 1)->inlined->args == exec::InlinedCall::Args::List);
+    REQUIRE(callIn(*c, 2));
+    REQUIRE(callIn(*c, 2)->inlined);
+    CHECK(callIn(*c, 2)->inlined->args == exec::InlinedCall::Args::Int4s);
+    REQUIRE(callIn(*c, 3));
+    REQUIRE(callIn(*c, 3)->inlined);
+    CHECK(callIn(*c, 3)->inlined->args == exec::InlinedCall::Args::Int4s);
+    auto r = runSt(source);
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "x") == 300 + 40 - 3);
+    CHECK(r.var("Main", "y") == 300 + 40 - 3);
+    CHECK(r.var("Main", "z") == 600 + 60 + 0);
+    CHECK(r.var("Main", "w") == 100 + 20 + 3);
+    CHECK(r.var("Main", "order") == 312);  // the arguments as written, not in the parameters' order
+    // The same program without inlining computes the same.
+    auto plain = compileSt(source, false, false);
+    REQUIRE(plain->ok());
+    CHECK(callIn(*plain, 0)->inlined == nullptr);
+}
