@@ -295,3 +295,73 @@ END_PROGRAM
     REQUIRE(plain->ok());
     CHECK(callIn(*plain, 0)->inlined == nullptr);
 }
+
+TEST_CASE("an inlined block call binds 4-byte and BOOL inputs as QuickArgs (decision 0472)", "[inline][fb][args]") {
+    const char* source = R"(
+FUNCTION_BLOCK Acc
+VAR_INPUT x : DINT; w : DINT; enable : BOOL; flag : BOOL; END_VAR
+VAR_OUTPUT total : DINT; seen : DINT; END_VAR
+IF enable THEN total := total + x * w; END_IF;
+IF flag THEN seen := seen + 1; END_IF;
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Small
+VAR_INPUT x : INT; END_VAR
+VAR_OUTPUT twice : INT; END_VAR
+twice := x * 2;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR a : Acc; b : Acc; c : Acc; s : Small; i : DINT; t : DINT; END_VAR
+FOR i := 1 TO 5 DO
+    a(x := i MOD 10, w := 3, enable := i MOD 2 = 1, flag := TRUE);
+    b(flag := FALSE, x := a.total MOD 1000, enable := a.total > 10, w := -2, total => t);
+    c(x := i, w := 1, enable := TRUE, flag := TRUE);
+    s(x := DINT_TO_INT(i));
+END_FOR;
+END_PROGRAM
+)";
+    auto c = compileSt(source);
+    INFO(c->printed());
+    REQUIRE(c->ok());
+    const exec::PouCode& main = codeOf(*c, "Main");
+    auto* loop = dynamic_cast<exec::ForStmt<int32_t>*>(main.body->stmts[0]);
+    REQUIRE(loop);
+    REQUIRE(loop->body.block);
+    auto* a = dynamic_cast<exec::CallFbStmt*>(loop->body.block->stmts[0]);
+    auto* b = dynamic_cast<exec::CallFbStmt*>(loop->body.block->stmts[1]);
+    auto* copy = dynamic_cast<exec::CallFbStmt*>(loop->body.block->stmts[2]);
+    auto* s = dynamic_cast<exec::CallFbStmt*>(loop->body.block->stmts[3]);
+    REQUIRE(a);
+    REQUIRE(b);
+    REQUIRE(s);
+    REQUIRE(a->inlined);
+    REQUIRE(a->quick.size() == 4);  // a value, a 4-byte constant, a BOOL value, a BOOL constant
+    CHECK(a->quick[0].value != nullptr);
+    CHECK_FALSE(a->quick[0].oneByte);
+    CHECK(a->quick[1].value == nullptr);
+    CHECK(a->quick[1].bits == 3);
+    CHECK(a->quick[2].oneByte);
+    CHECK(a->quick[3].value == nullptr);
+    CHECK(a->quick[3].oneByte);
+    CHECK(a->quick[3].last);
+    CHECK_FALSE(a->quick[2].last);
+    REQUIRE(b->quick.size() == 4);
+    CHECK(b->quick[0].value == nullptr);  // FALSE first: the order as written
+    CHECK(b->quick[3].bits == static_cast<uint32_t>(-2));
+    CHECK(s->inlined != nullptr);
+    CHECK(s->quick.empty());  // an INT input: the ArgBind list
+    REQUIRE(copy);
+    CHECK(copy->inlined != nullptr);
+    CHECK(copy->quick.empty());  // x := i copies the caller's variable: the ArgBind list
+    auto r = runSt(source);
+    REQUIRE(r.ok());
+    // a: x*3 added for i = 1, 3, 5: 27; seen 5. b: enabled once a.total > 10
+    // (i = 3: total 12, i = 4: 12, i = 5: 27): -24 - 24 - 54.
+    CHECK(r.var("Main", "a").at("total") == 27);
+    CHECK(r.var("Main", "a").at("seen") == 5);
+    CHECK(r.var("Main", "b").at("total") == -102);
+    CHECK(r.var("Main", "b").at("seen") == 0);
+    CHECK(r.var("Main", "t") == -102);
+    CHECK(r.var("Main", "s").at("twice") == 10);
+    CHECK(r.var("Main", "c").at("total") == 15);
+    CHECK(r.var("Main", "c").at("seen") == 5);
+}
