@@ -365,3 +365,30 @@ END_PROGRAM
     CHECK(r.var("Main", "c").at("total") == 15);
     CHECK(r.var("Main", "c").at("seen") == 5);
 }
+
+TEST_CASE("an inlined call's result of every integer width reads back sign- or zero-extended in an expression", "[inline][result]") {
+    // CallPou::iInlined reads DINT and BOOL results directly and the others
+    // through loadIntRep (decision 0471): each width keeps its extension.
+    const char* source = R"(
+FUNCTION S8 : SINT VAR_INPUT v : DINT; END_VAR S8 := DINT_TO_SINT(v); END_FUNCTION
+FUNCTION U8 : USINT VAR_INPUT v : DINT; END_VAR U8 := DINT_TO_USINT(v); END_FUNCTION
+FUNCTION I32 : DINT VAR_INPUT v : DINT; END_VAR I32 := v * 2; END_FUNCTION
+FUNCTION U32 : UDINT VAR_INPUT v : DINT; END_VAR U32 := DINT_TO_UDINT(v); END_FUNCTION
+FUNCTION B : BOOL VAR_INPUT v : DINT; END_VAR B := v > 0; END_FUNCTION
+PROGRAM Main
+VAR i : DINT := -6; a, b, d, e : LINT; f : BOOL; END_VAR
+a := S8(i) + 0;
+b := U8(i) + 0;
+d := I32(i) + 0;
+e := U32(i) + 0;
+f := B(i) OR B(i + 10);
+END_PROGRAM
+)";
+    auto r = runSt(source);
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "a") == -6);
+    CHECK(r.var("Main", "b") == 250);
+    CHECK(r.var("Main", "d") == -12);
+    CHECK(r.var("Main", "e") == 4294967290LL);
+    CHECK(r.var("Main", "f") == true);
+}
