@@ -72,7 +72,12 @@ template uint8_t* CallPou::runInlined<true>(Ctx&);
 
 int64_t CallPou::iInlined(Ctx& c) {
     uint8_t* f = runInlinedCall<false>(c, *this);
-    return f ? loadIntRep(f + inlined->resultOffset, rep) : 0;
+    if (!f) return 0;
+    const uint8_t* r = f + inlined->resultOffset;
+    // DINT and BOOL results, the common ones, without loadIntRep's jump table.
+    if (rep == ResultRep::I32) return loadAs<int32_t>(r);
+    if (rep == ResultRep::U8) return loadAs<uint8_t>(r);
+    return loadIntRep(r, rep);
 }
 
 // The result is stored with the caller's type, which is the result's own

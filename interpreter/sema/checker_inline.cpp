@@ -55,6 +55,28 @@ size_t countStatements(const ast::StmtList& list, size_t limit) {
     }
     return n;
 }
+// The inputs of an inlined block call as QuickArgs (decision 0472), when
+// every one is bound directly as a 1- or 4-byte constant, a 4-byte integer
+// value or a BOOL value; else none (the call keeps its ArgBind list).
+std::vector<exec::QuickArg> quickInputs(const exec::CallFbStmt& call) {
+    using H = exec::ArgBind::How;
+    std::vector<exec::QuickArg> out;
+    if (!call.directInputs || call.binds.empty()) return out;
+    for (const exec::ArgBind& b : call.binds) {
+        exec::QuickArg q;
+        q.dst = b.dst;
+        switch (b.how) {
+            case H::Const1: exec::storeAs<uint8_t>(reinterpret_cast<uint8_t*>(&q.bits), static_cast<uint8_t>(b.bits)); q.oneByte = true; break;
+            case H::Const4: q.bits = static_cast<uint32_t>(b.bits); break;
+            case H::Int4: q.value = b.value; break;
+            case H::Bool: q.value = b.value; q.oneByte = true; break;
+            default: return {};
+        }
+        out.push_back(q);
+    }
+    out.back().last = true;
+    return out;
+}
 }  // namespace
 
 void Checker::noteInlinable(PouInfo* pou, size_t messagesBefore, uint64_t callsBefore) {
@@ -151,6 +173,7 @@ void Checker::inlineLeafCalls() {
             site.call->inlinedOnCaller = !site.onInstance;
         } else {
             site.fbCall->inlined = in;  // its inputs are stored into the instance, not the frame
+            site.fbCall->quick = quickInputs(*site.fbCall);
             // A block instance that is a variable of the caller's instance: its address read inline.
             if (auto* var = dynamic_cast<exec::VarNode<void, exec::BaseKind::Self>*>(site.fbCall->instance)) {
                 in->instanceOnSelf = true;

@@ -9,6 +9,7 @@
 // A substituted parameter is no place: a body that writes it, takes its
 // address or passes it to a VAR_IN_OUT fails its (silent) check, and the
 // call is then inlined without substitution.
+#include <algorithm>
 #include <bit>
 #include <cctype>
 #include <cstring>
@@ -255,6 +256,12 @@ void Checker::chooseInlinedArgs(exec::InlinedCall& in, const PouInfo& fn, const 
         in.args = exec::InlinedCall::Args::One4;
         in.arg = in.binds[0].value;
         in.argDst = in.binds[0].dst;
+    } else if (perCall > 1 && std::all_of(in.binds.begin(), in.binds.end() - 1, [](const exec::ArgBind& b) { return b.how == How::Int4; })) {
+        // Decision 0471: several computed DINT/UDINT/DWORD arguments stored
+        // without the list's dispatch per argument.
+        in.args = exec::InlinedCall::Args::Int4s;
+        for (size_t k = 0; k < perCall; ++k) in.ints.push_back({in.binds[k].value, in.binds[k].dst});
+        in.ints.push_back({});
     }
     auto boundOrRead = [&](const VarSym* v) {
         for (size_t k = 0; k < perCall; ++k)

@@ -234,3 +234,161 @@ END_PROGRAM
     CHECK(plain->inlined != nullptr);
     CHECK(element->inlined == nullptr);
 }
+
+TEST_CASE("an inlined call binds several computed DINT arguments without the list (decision 0471)", "[inline][args]") {
+    // The arguments are computed per call (they are not constants or caller
+    // variables read in place): Blend's three are 4-byte integers, Mixed has
+    // an INT among them and keeps the ended ArgBind list. The calls pass
+    // arguments with side effects (Bump appends its digit to `order`), so
+    // that the order of their evaluation is observable too.
+    const char* source = R"(
+FUNCTION Blend : DINT
+VAR_INPUT a : DINT; b : UDINT; c : DINT; END_VAR
+Blend := a * 100 + UDINT_TO_DINT(b) * 10 + c;
+END_FUNCTION
+FUNCTION Mixed : DINT
+VAR_INPUT a : DINT; b : INT; c : DINT; END_VAR
+Mixed := a * 100 + INT_TO_DINT(b) * 10 + c;
+END_FUNCTION
+FUNCTION Bump : DINT
+VAR_INPUT k : DINT; END_VAR
+VAR_IN_OUT order : DINT; END_VAR
+order := order * 10 + k;
+Bump := k;
+END_FUNCTION
+PROGRAM Main
+VAR i : DINT := 2; x : DINT; y : DINT; z : DINT; w : DINT; order : DINT; END_VAR
+x := Blend(i + 1, DINT_TO_UDINT(i * 2), i - 5);
+y := Mixed(i + 1, DINT_TO_INT(i * 2), i - 5);
+z := Blend(c := i MOD 2, a := i * 3, b := DINT_TO_UDINT(i + 4));
+w := Blend(c := Bump(3, order), a := Bump(1, order), b := DINT_TO_UDINT(Bump(2, order)));
+END_PROGRAM
+)";
+    auto c = compileSt(source);
+    INFO(c->printed());
+    REQUIRE(c->ok());
+    REQUIRE(callIn(*c, 0));
+    REQUIRE(callIn(*c, 0)->inlined);
+    const exec::InlinedCall& blend = *callIn(*c, 0)->inlined;
+    CHECK(blend.args == exec::InlinedCall::Args::Int4s);
+    REQUIRE(blend.ints.size() == 4);  // three arguments and the null end
+    CHECK(blend.ints[3].value == nullptr);
+    CHECK(blend.ints[0].dst < blend.ints[1].dst);  // in the call's order: a, b, c
+    REQUIRE(callIn(*c, 1));
+    REQUIRE(callIn(*c, 1)->inlined);
+    CHECK(callIn(*c, 1)->inlined->args == exec::InlinedCall::Args::List);
+    REQUIRE(callIn(*c, 2));
+    REQUIRE(callIn(*c, 2)->inlined);
+    CHECK(callIn(*c, 2)->inlined->args == exec::InlinedCall::Args::Int4s);
+    REQUIRE(callIn(*c, 3));
+    REQUIRE(callIn(*c, 3)->inlined);
+    CHECK(callIn(*c, 3)->inlined->args == exec::InlinedCall::Args::Int4s);
+    auto r = runSt(source);
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "x") == 300 + 40 - 3);
+    CHECK(r.var("Main", "y") == 300 + 40 - 3);
+    CHECK(r.var("Main", "z") == 600 + 60 + 0);
+    CHECK(r.var("Main", "w") == 100 + 20 + 3);
+    CHECK(r.var("Main", "order") == 312);  // the arguments as written, not in the parameters' order
+    // The same program without inlining computes the same.
+    auto plain = compileSt(source, false, false);
+    REQUIRE(plain->ok());
+    CHECK(callIn(*plain, 0)->inlined == nullptr);
+}
+
+TEST_CASE("an inlined block call binds 4-byte and BOOL inputs as QuickArgs (decision 0472)", "[inline][fb][args]") {
+    const char* source = R"(
+FUNCTION_BLOCK Acc
+VAR_INPUT x : DINT; w : DINT; enable : BOOL; flag : BOOL; END_VAR
+VAR_OUTPUT total : DINT; seen : DINT; END_VAR
+IF enable THEN total := total + x * w; END_IF;
+IF flag THEN seen := seen + 1; END_IF;
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Small
+VAR_INPUT x : INT; END_VAR
+VAR_OUTPUT twice : INT; END_VAR
+twice := x * 2;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR a : Acc; b : Acc; c : Acc; s : Small; i : DINT; t : DINT; END_VAR
+FOR i := 1 TO 5 DO
+    a(x := i MOD 10, w := 3, enable := i MOD 2 = 1, flag := TRUE);
+    b(flag := FALSE, x := a.total MOD 1000, enable := a.total > 10, w := -2, total => t);
+    c(x := i, w := 1, enable := TRUE, flag := TRUE);
+    s(x := DINT_TO_INT(i));
+END_FOR;
+END_PROGRAM
+)";
+    auto c = compileSt(source);
+    INFO(c->printed());
+    REQUIRE(c->ok());
+    const exec::PouCode& main = codeOf(*c, "Main");
+    auto* loop = dynamic_cast<exec::ForStmt<int32_t>*>(main.body->stmts[0]);
+    REQUIRE(loop);
+    REQUIRE(loop->body.block);
+    auto* a = dynamic_cast<exec::CallFbStmt*>(loop->body.block->stmts[0]);
+    auto* b = dynamic_cast<exec::CallFbStmt*>(loop->body.block->stmts[1]);
+    auto* copy = dynamic_cast<exec::CallFbStmt*>(loop->body.block->stmts[2]);
+    auto* s = dynamic_cast<exec::CallFbStmt*>(loop->body.block->stmts[3]);
+    REQUIRE(a);
+    REQUIRE(b);
+    REQUIRE(s);
+    REQUIRE(a->inlined);
+    REQUIRE(a->quick.size() == 4);  // a value, a 4-byte constant, a BOOL value, a BOOL constant
+    CHECK(a->quick[0].value != nullptr);
+    CHECK_FALSE(a->quick[0].oneByte);
+    CHECK(a->quick[1].value == nullptr);
+    CHECK(a->quick[1].bits == 3);
+    CHECK(a->quick[2].oneByte);
+    CHECK(a->quick[3].value == nullptr);
+    CHECK(a->quick[3].oneByte);
+    CHECK(a->quick[3].last);
+    CHECK_FALSE(a->quick[2].last);
+    REQUIRE(b->quick.size() == 4);
+    CHECK(b->quick[0].value == nullptr);  // FALSE first: the order as written
+    CHECK(b->quick[3].bits == static_cast<uint32_t>(-2));
+    CHECK(s->inlined != nullptr);
+    CHECK(s->quick.empty());  // an INT input: the ArgBind list
+    REQUIRE(copy);
+    CHECK(copy->inlined != nullptr);
+    CHECK(copy->quick.empty());  // x := i copies the caller's variable: the ArgBind list
+    auto r = runSt(source);
+    REQUIRE(r.ok());
+    // a: x*3 added for i = 1, 3, 5: 27; seen 5. b: enabled once a.total > 10
+    // (i = 3: total 12, i = 4: 12, i = 5: 27): -24 - 24 - 54.
+    CHECK(r.var("Main", "a").at("total") == 27);
+    CHECK(r.var("Main", "a").at("seen") == 5);
+    CHECK(r.var("Main", "b").at("total") == -102);
+    CHECK(r.var("Main", "b").at("seen") == 0);
+    CHECK(r.var("Main", "t") == -102);
+    CHECK(r.var("Main", "s").at("twice") == 10);
+    CHECK(r.var("Main", "c").at("total") == 15);
+    CHECK(r.var("Main", "c").at("seen") == 5);
+}
+
+TEST_CASE("an inlined call's result of every integer width reads back sign- or zero-extended in an expression", "[inline][result]") {
+    // CallPou::iInlined reads DINT and BOOL results directly and the others
+    // through loadIntRep (decision 0471): each width keeps its extension.
+    const char* source = R"(
+FUNCTION S8 : SINT VAR_INPUT v : DINT; END_VAR S8 := DINT_TO_SINT(v); END_FUNCTION
+FUNCTION U8 : USINT VAR_INPUT v : DINT; END_VAR U8 := DINT_TO_USINT(v); END_FUNCTION
+FUNCTION I32 : DINT VAR_INPUT v : DINT; END_VAR I32 := v * 2; END_FUNCTION
+FUNCTION U32 : UDINT VAR_INPUT v : DINT; END_VAR U32 := DINT_TO_UDINT(v); END_FUNCTION
+FUNCTION B : BOOL VAR_INPUT v : DINT; END_VAR B := v > 0; END_FUNCTION
+PROGRAM Main
+VAR i : DINT := -6; a, b, d, e : LINT; f : BOOL; END_VAR
+a := S8(i) + 0;
+b := U8(i) + 0;
+d := I32(i) + 0;
+e := U32(i) + 0;
+f := B(i) OR B(i + 10);
+END_PROGRAM
+)";
+    auto r = runSt(source);
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "a") == -6);
+    CHECK(r.var("Main", "b") == 250);
+    CHECK(r.var("Main", "d") == -12);
+    CHECK(r.var("Main", "e") == 4294967290LL);
+    CHECK(r.var("Main", "f") == true);
+}
