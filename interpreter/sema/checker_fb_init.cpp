@@ -44,10 +44,10 @@ void Checker::collectFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* 
     if (t->kind != TK::FunctionBlock || !t->pou) return;
     PouInfo* fb = t->pou;
     for (PouInfo* p = fb; p; p = p->parent)
-        for (auto& v : p->ownedVars)
-            if (v->storage == Storage::Self && !v->byRef)
-                collectFbInits(v->type, addr + v->offset, v->decl ? v->decl->type.get() : nullptr, depth + 1, fb, addr,
-                               v->decl ? v->decl->init.get() : nullptr);
+        forEachInstanceVar(p, [&](VarSym* v) {  // the methods' VAR_INST too
+            collectFbInits(v->type, addr + v->offset, v->decl ? v->decl->type.get() : nullptr, depth + 1, fb, addr,
+                           v->decl ? v->decl->init.get() : nullptr);
+        });
     // Run-time initialisers of this instance (its base blocks' first, then its own), before its FB_init.
     std::vector<PouInfo*> chain;
     for (PouInfo* p = fb; p && chain.size() <= static_cast<size_t>(kMaxFbInitNesting); p = p->parent) chain.insert(chain.begin(), p);

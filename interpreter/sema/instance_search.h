@@ -12,6 +12,17 @@
 
 namespace strun::sema {
 
+// Every variable a block keeps in its instance: its own and its methods'
+// VAR_INST (decision 0143), which live in the instance too.
+template <typename Visit>
+void forEachInstanceVar(PouInfo* block, const Visit& visit) {
+    for (auto& v : block->ownedVars)
+        if (v->storage == Storage::Self && !v->byRef) visit(v.get());
+    for (auto& [name, method] : block->methods)
+        for (auto& v : method->ownedVars)
+            if (v->storage == Storage::Self && !v->byRef) visit(v.get());
+}
+
 // `blockHas(pou)`: the block itself has the property (asked for each block of
 // the EXTENDS chain); instances by value inside it are searched in turn.
 template <typename BlockHas>
@@ -29,8 +40,7 @@ bool holdsInstanceWhere(const Type* t, std::map<const Type*, bool>& memo, const 
     } else if (t->kind == TK::FunctionBlock && t->pou) {
         for (PouInfo* p = t->pou; p && !result; p = p->parent) result = blockHas(p);
         for (PouInfo* p = t->pou; p && !result; p = p->parent)
-            for (auto& v : p->ownedVars)
-                if (v->storage == Storage::Self && !v->byRef) result = result || holdsInstanceWhere(v->type, memo, blockHas);
+            forEachInstanceVar(p, [&](VarSym* v) { result = result || holdsInstanceWhere(v->type, memo, blockHas); });
     }
     memo[t] = result;
     return result;
