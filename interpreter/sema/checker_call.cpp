@@ -640,7 +640,17 @@ exec::Stmt* Checker::bindOutput(const ast::Arg& arg, VarSym* p, Checked src) {
 
 exec::Stmt* Checker::bindReference(VarSym* p, const Checked& v, exec::Expr* slot, const ast::Loc& loc) {
     if (v.type->kind == TK::Reference && sameType(v.type, p->type)) return storeTo(slot, types().elementary(TK::LWord), v.node);
-    if (!v.isPlace || !sameType(v.type, p->type->target)) {
+    // A POINTER variable for a REFERENCE TO POINTER TO another type (TcDynStringKit:
+    // `_fbFree : FB_Free(THIS^._pBuffer)`, a POINTER TO STRING for `REFERENCE TO
+    // POINTER TO BYTE`): the same 8-byte address, as for a VAR_IN_OUT (decision 0460).
+    const Type* target = p->type->target;
+    const bool pointerToPointer = v.isPlace && v.type->kind == TK::Pointer && target && target->kind == TK::Pointer &&
+                                  !sameType(v.type, target) && !isFlexibleRef(v.type) && !isFlexibleRef(target);
+    if (pointerToPointer && refusedByStrict(diag::E0206, loc, fmt::format("'{}' is {}, the argument is {}: with --strict a reference takes a "
+                                                                          "variable of its own type",
+                                                                          p->name, typeName(p->type), typeName(v.type))))
+        return nullptr;
+    if (!pointerToPointer && (!v.isPlace || !sameType(v.type, target))) {
         error(diag::E0206, loc, fmt::format("'{}' is {}: it needs a variable of type {}", p->name, typeName(p->type), typeName(p->type->target)));
         return nullptr;
     }
