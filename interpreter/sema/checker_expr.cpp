@@ -1117,7 +1117,9 @@ Checked Checker::checkExprOfKind(const ast::Expr& e) {
         case ast::ExprKind::Index: return checkIndex(e);
         case ast::ExprKind::Unary: return checkUnary(e);
         case ast::ExprKind::Binary: return checkBinary(e);
-        case ast::ExprKind::Call: return checkCall(e, false);
+        // A call's REFERENCE TO result is the variable it refers to, as a
+        // REFERENCE variable is (decision 0477): `st := F_GetRef();`.
+        case ast::ExprKind::Call: return autoDeref(checkCall(e, false));
         case ast::ExprKind::Deref: {
             if (e.kids[0]->kind == ast::ExprKind::This || e.kids[0]->kind == ast::ExprKind::Super) return checkThis(*e.kids[0], true);
             Checked p = checkExpr(*e.kids[0]);
