@@ -7,6 +7,7 @@
 #include "interpreter/exec/else_nodes.h"
 #include "interpreter/sema/case_lowering.h"
 #include "interpreter/sema/checker.h"
+#include "interpreter/sema/expr_observer.h"
 #include "interpreter/sema/fuse.h"
 #include "interpreter/sema/fuse_swap.h"
 #include "interpreter/sema/node_factory.h"
@@ -235,10 +236,17 @@ exec::Stmt* Checker::checkRefAssign(const ast::Stmt& s) {
         if (isNull) {
             v = constInt(0, target.type, s.expr->loc);
         } else {
-            Checked src = checkExpr(*s.expr);
-            if (!src.ok) return nullptr;
             // `r REF= GetTest(name)`: a function or method returning REFERENCE TO T
-            // gives the address itself (TcUnit binds its results this way).
+            // gives the address itself, NULL included (TcUnit binds its results
+            // this way), not the variable it refers to (decision 0477).
+            Checked src;
+            if (s.expr->kind == ast::ExprKind::Call) {
+                src = checkCall(*s.expr, false);
+                if (observer_) observer_->checked(*s.expr, src, pou_);
+            } else {
+                src = checkExpr(*s.expr);
+            }
+            if (!src.ok) return nullptr;
             if (src.type->kind == TK::Reference && sameType(src.type->target, target.type->target))
                 return storeTo(target.node, types().elementary(TK::LWord), src.node);
             if (!src.isPlace || !(sameType(src.type, target.type->target) || isBlockOrExtends(src.type, target.type->target))) {

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "interpreter/source/project_inputs.h"
+#include "stdlib/library_registry.h"
 
 namespace strun::source {
 
@@ -31,6 +32,15 @@ bool isIdentifier(const std::string& s) {
 bool names(const std::string& reference, const PlcProject& p) {
     return (!p.title.empty() && sameName(reference, p.title)) || (!p.name.empty() && sameName(reference, p.name)) ||
            (!p.defaultNamespace.empty() && sameName(reference, p.defaultNamespace));
+}
+
+// Whether strun provides the library `p` is a copy of (by title, name or
+// namespace): a library of its registry, or TcUnit, which strun builds in
+// (stdlib/st/tcunit.st, decision 0140).
+bool providedByStrun(const PlcProject& p) {
+    for (const std::string* n : {&p.title, &p.name, &p.defaultNamespace})
+        if (!n->empty() && (stdlib::findLibrary(*n) || sameName(*n, "TcUnit"))) return true;
+    return false;
 }
 
 // How deep `dir` is when `file` lies below it; -1 when it does not.
@@ -62,6 +72,10 @@ void assignLibraryNamespaces(const std::vector<GivenPlcProject>& projects, const
         }
         if (referenced && spaces[lib].empty() && isIdentifier(projects[lib].project.defaultNamespace))
             spaces[lib] = projects[lib].project.defaultNamespace;
+        // The project's own copy of a library strun provides (TcUnit's source
+        // beside its verifier): its code replaces strun's at the top level,
+        // as any project code does (decision 0454).
+        if (providedByStrun(projects[lib].project)) spaces[lib].clear();
     }
     for (int f : userFiles) {
         const std::string& path = sources.file(f).path;
