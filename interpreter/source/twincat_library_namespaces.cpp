@@ -34,6 +34,12 @@ bool names(const std::string& reference, const PlcProject& p) {
            (!p.defaultNamespace.empty() && sameName(reference, p.defaultNamespace));
 }
 
+std::string lowerExtensionOf(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
 // Whether strun provides the library `p` is a copy of (by title, name or
 // namespace): a library of its registry, or TcUnit, which strun builds in
 // (stdlib/st/tcunit.st, decision 0140).
@@ -53,8 +59,9 @@ int depthBelow(const fs::path& file, const fs::path& dir) {
 
 }  // namespace
 
-void assignLibraryNamespaces(const std::vector<GivenPlcProject>& projects, const std::vector<int>& userFiles, SourceSet& sources) {
+void assignLibraryNamespaces(const std::vector<GivenPlcProject>& projects, std::vector<int>& userFiles, SourceSet& sources) {
     std::vector<std::string> spaces(projects.size());  // "" for a project no one references
+    std::vector<bool> isLibrary(projects.size(), false);
     for (size_t lib = 0; lib < projects.size(); ++lib) {
         bool referenced = false;
         for (size_t user = 0; user < projects.size() && spaces[lib].empty(); ++user) {
@@ -76,18 +83,24 @@ void assignLibraryNamespaces(const std::vector<GivenPlcProject>& projects, const
         // beside its verifier): its code replaces strun's at the top level,
         // as any project code does (decision 0454).
         if (providedByStrun(projects[lib].project)) spaces[lib].clear();
+        isLibrary[lib] = referenced;
     }
-    for (int f : userFiles) {
+    std::erase_if(userFiles, [&](int f) {
         const std::string& path = sources.file(f).path;
-        if (!isTwinCatObject(path)) continue;
+        if (!isTwinCatObject(path)) return false;
         // The deepest project folder holding the file is its project.
         int best = -1, bestDepth = -1;
         for (size_t k = 0; k < projects.size(); ++k) {
             const int depth = depthBelow(path, projects[k].folder);
             if (depth > bestDepth) best = static_cast<int>(k), bestDepth = depth;
         }
-        if (best >= 0 && !spaces[static_cast<size_t>(best)].empty()) sources.setLibraryNamespace(f, spaces[static_cast<size_t>(best)]);
-    }
+        if (best < 0) return false;
+        // A library has no tasks of its own: the task objects of its project
+        // folder (the test task its developers run it with) are not the application's.
+        if (isLibrary[static_cast<size_t>(best)] && lowerExtensionOf(path) == ".tctto") return true;
+        if (!spaces[static_cast<size_t>(best)].empty()) sources.setLibraryNamespace(f, spaces[static_cast<size_t>(best)]);
+        return false;
+    });
 }
 
 }  // namespace strun::source

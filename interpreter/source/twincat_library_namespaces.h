@@ -22,7 +22,9 @@ struct GivenPlcProject {
 // Sets the library namespace of each file of `userFiles` that belongs to a
 // project of `projects` another of them references, and drops that library
 // from the referenced ones strun would report as not available. Projects no
-// one references (the application) keep their names at the top level.
-void assignLibraryNamespaces(const std::vector<GivenPlcProject>& projects, const std::vector<int>& userFiles, SourceSet& sources);
+// one references (the application) keep their names at the top level. A
+// library's task objects (.TcTTO) are dropped from `userFiles`: a library
+// has no tasks, the application's run.
+void assignLibraryNamespaces(const std::vector<GivenPlcProject>& projects, std::vector<int>& userFiles, SourceSet& sources);
 
 }  // namespace strun::source
