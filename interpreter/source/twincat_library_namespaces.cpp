@@ -5,6 +5,7 @@
 
 #include "interpreter/source/project_inputs.h"
 #include "stdlib/library_registry.h"
+#include "stdlib/number_scan.h"
 
 namespace strun::source {
 
@@ -32,12 +33,6 @@ bool isIdentifier(const std::string& s) {
 bool names(const std::string& reference, const PlcProject& p) {
     return (!p.title.empty() && sameName(reference, p.title)) || (!p.name.empty() && sameName(reference, p.name)) ||
            (!p.defaultNamespace.empty() && sameName(reference, p.defaultNamespace));
-}
-
-std::string lowerExtensionOf(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
 }
 
 // Whether strun provides the library `p` is a copy of (by title, name or
@@ -97,7 +92,7 @@ void assignLibraryNamespaces(const std::vector<GivenPlcProject>& projects, std::
         if (best < 0) return false;
         // A library has no tasks of its own: the task objects of its project
         // folder (the test task its developers run it with) are not the application's.
-        if (isLibrary[static_cast<size_t>(best)] && lowerExtensionOf(path) == ".tctto") return true;
+        if (isLibrary[static_cast<size_t>(best)] && stdlib::lowerAscii(fs::path(path).extension().string()) == ".tctto") return true;
         if (!spaces[static_cast<size_t>(best)].empty()) sources.setLibraryNamespace(f, spaces[static_cast<size_t>(best)]);
         return false;
     });
