@@ -7,15 +7,11 @@
 #include <map>
 #include <regex>
 
+#include "stdlib/number_scan.h"
+
 namespace strun::project {
 
 namespace {
-
-bool sameName(const std::string& a, const std::string& b) {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](unsigned char x, unsigned char y) {
-               return std::toupper(x) == std::toupper(y);
-           });
-}
 
 // The library a name error is about, as its help line says (Checker::suggest,
 // stdlib::libraryHint), when the project references it; "" otherwise.
@@ -26,7 +22,7 @@ std::string missingLibraryOf(const Diagnostic& d, const std::vector<std::string>
         std::smatch m;
         if (!std::regex_search(h, m, hint)) continue;
         for (const std::string& lib : referenced)
-            if (sameName(lib, m[2].str())) {
+            if (stdlib::equalsIgnoreCase(lib, m[2].str())) {
                 if (name) *name = m[1].str();
                 return lib;
             }
@@ -54,7 +50,7 @@ void groupMissingLibraryNames(CompileLog& log, const std::vector<std::string>& r
             it = groups.end() - 1;
         }
         auto& names = it->second.names;
-        if (std::none_of(names.begin(), names.end(), [&](const std::string& n) { return sameName(n, name); })) names.push_back(name);
+        if (std::none_of(names.begin(), names.end(), [&](const std::string& n) { return stdlib::equalsIgnoreCase(n, name); })) names.push_back(name);
     }
     if (groups.empty()) return;
     log.eraseIf([&](const Diagnostic& d) { return !missingLibraryOf(d, referenced, nullptr).empty(); });
@@ -77,7 +73,7 @@ void explainPinnedTypes(CompileLog& log, const std::vector<std::string>& pinned)
     log.decorate([&](Diagnostic& d) {
         if (d.code != diag::text(diag::E0102)) return;
         for (const std::string& type : pinned)
-            if (sameName(d.message, "unknown type '" + type + "'")) {
+            if (stdlib::equalsIgnoreCase(d.message, "unknown type '" + type + "'")) {
                 d.withHelp(fmt::format("'{}' is a global data type the project's .plcproj pins (<PinnedGlobalDataType>): TwinCAT "
                                        "keeps it in the solution's type system; give strun the solution folder (with the "
                                        ".tsproj) or the project's .tmc",

@@ -13,13 +13,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool sameName(const std::string& a, const std::string& b) {
-    if (a.size() != b.size()) return false;
-    for (size_t k = 0; k < a.size(); ++k)
-        if (std::toupper(static_cast<unsigned char>(a[k])) != std::toupper(static_cast<unsigned char>(b[k]))) return false;
-    return true;
-}
-
 // Code can only write a namespace that is an identifier ("LCLS_General", not "LCLS General").
 bool isIdentifier(const std::string& s) {
     if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
@@ -31,8 +24,8 @@ bool isIdentifier(const std::string& s) {
 // Whether a reference `Include="name"` names `p`: TwinCAT matches a
 // placeholder by the library's title; projects also write its name.
 bool names(const std::string& reference, const PlcProject& p) {
-    return (!p.title.empty() && sameName(reference, p.title)) || (!p.name.empty() && sameName(reference, p.name)) ||
-           (!p.defaultNamespace.empty() && sameName(reference, p.defaultNamespace));
+    return (!p.title.empty() && stdlib::equalsIgnoreCase(reference, p.title)) || (!p.name.empty() && stdlib::equalsIgnoreCase(reference, p.name)) ||
+           (!p.defaultNamespace.empty() && stdlib::equalsIgnoreCase(reference, p.defaultNamespace));
 }
 
 // Whether strun provides the library `p` is a copy of (by title, name or
@@ -40,7 +33,7 @@ bool names(const std::string& reference, const PlcProject& p) {
 // (stdlib/st/tcunit.st, decision 0140).
 bool providedByStrun(const PlcProject& p) {
     for (const std::string* n : {&p.title, &p.name, &p.defaultNamespace})
-        if (!n->empty() && (stdlib::findLibrary(*n) || sameName(*n, "TcUnit"))) return true;
+        if (!n->empty() && (stdlib::findLibrary(*n) || stdlib::equalsIgnoreCase(*n, "TcUnit"))) return true;
     return false;
 }
 
