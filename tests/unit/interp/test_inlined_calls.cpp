@@ -392,3 +392,93 @@ END_PROGRAM
     CHECK(r.var("Main", "e") == 4294967290LL);
     CHECK(r.var("Main", "f") == true);
 }
+
+TEST_CASE("an inlined body of more than two statements runs from its ended list (decision 0481)", "[inline][list]") {
+    // Max3's three statements and Early's four run from InlinedCall::list;
+    // Pair's two keep the Body. Each statement ticks once, as in a framed
+    // call: with 1 ms a statement the cycle's execution time counts them.
+    const char* source = R"(
+FUNCTION Max3 : DINT
+VAR_INPUT a : DINT; b : DINT; c : DINT; END_VAR
+Max3 := a;
+IF b > Max3 THEN Max3 := b; END_IF;
+IF c > Max3 THEN Max3 := c; END_IF;
+END_FUNCTION
+FUNCTION Early : DINT
+VAR_INPUT a : DINT; END_VAR
+Early := a;
+IF a > 0 THEN RETURN; END_IF;
+Early := 99;
+Early := Early + 1;
+END_FUNCTION
+FUNCTION Pair : DINT
+VAR_INPUT a : DINT; END_VAR
+Pair := a;
+Pair := Pair * 2;
+END_FUNCTION
+PROGRAM Main
+VAR i : DINT := 1; x, y, z, w : DINT; END_VAR
+x := Max3(i, i + 4, i + 2);
+y := Early(i);
+z := Early(i - 2);
+w := Pair(i + 2);
+END_PROGRAM
+)";
+    auto c = compileSt(source);
+    INFO(c->printed());
+    REQUIRE(c->ok());
+    for (size_t k = 0; k < 4; ++k) {
+        REQUIRE(callIn(*c, k));
+        REQUIRE(callIn(*c, k)->inlined);
+    }
+    const exec::InlinedCall& max3 = *callIn(*c, 0)->inlined;
+    REQUIRE(max3.body.block);
+    REQUIRE(max3.list.size() == 4);  // three statements and the null end
+    CHECK(max3.list[0] == max3.body.block->stmts[0]);
+    CHECK(max3.list[2] == max3.body.block->stmts[2]);
+    CHECK(max3.list[3] == nullptr);
+    CHECK(callIn(*c, 1)->inlined->list.size() == 5);
+    CHECK(callIn(*c, 3)->inlined->list.empty());  // two statements: the Body
+    CHECK_FALSE(callIn(*c, 3)->inlined->body.block);
+    // The run empties Max3's Block: the call still computes its maximum
+    // only when it runs from the list.
+    RunSettings settings;
+    settings.stmtCost = 1'000'000;
+    settings.beforeRun = [](sema::ProgramModel& model) {
+        for (auto& code : model.codes)
+            if (sema::upper(code.name) == "MAIN")
+                if (auto* assign = dynamic_cast<exec::AssignCallLocal<int32_t, false>*>(code.body->stmts[0]))
+                    if (assign->call->inlined && assign->call->inlined->body.block) assign->call->inlined->body.block->stmts.clear();
+    };
+    auto r = runSt(source, settings);
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "x") == 5);
+    CHECK(r.var("Main", "y") == 1);    // RETURN in the second statement ends the list
+    CHECK(r.var("Main", "z") == 100);
+    CHECK(r.var("Main", "w") == 6);
+    // One tick of the cycle itself (a one-statement program runs 2), Main 4,
+    // Max3 1 + 2 + 1 (b > a, c not), Early(1) 1 + 2, Early(-1) 4, Pair 2:
+    // as many as the same calls with their frames (strun before the list).
+    CHECK(r.tasks[0]["last_exec_us"] == (1 + 4 + 4 + 3 + 4 + 2) * 1000);
+}
+
+TEST_CASE("a fault in the third statement of an inlined list names the callee and its line; the depth rule holds", "[inline][list][faults]") {
+    auto r = runSt(R"(
+FUNCTION Spread : DINT
+VAR_INPUT a : DINT; b : DINT; END_VAR
+Spread := a;
+Spread := Spread + b;
+Spread := Spread / b;
+END_FUNCTION
+PROGRAM Main
+VAR q : DINT; after : BOOL; END_VAR
+q := Spread(10, 0);
+after := TRUE;
+END_PROGRAM
+)");
+    REQUIRE(r.ok());
+    REQUIRE(r.count(rt::DiagCode::DivByZero) == 1);
+    CHECK(r.diagnostics[0].pou == "Spread");
+    CHECK(r.diagnostics[0].line == 6);
+    CHECK(r.var("Main", "after") == true);
+}
