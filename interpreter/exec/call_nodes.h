@@ -248,6 +248,10 @@ struct InlinedCall {
     // The body's one statement, when it has exactly one (and no label): run
     // with its tick directly, without Body::run's tests.
     Stmt* single = nullptr;
+    // A body of more than two statements (body.block set; an inlined body has
+    // no labels): its statements ended by a null entry, run by runInlinedList
+    // without Block::exec's index, count and reloaded vector (decision 0481).
+    std::vector<Stmt*> list;
     // The arguments bound per call (the constant ones are in `image`), ended
     // by How::End. Unused by a block call, which binds its inputs (into the
     // instance) from its own list.
@@ -311,6 +315,18 @@ struct InlinedCall {
     return f;
 }
 
+// The statements of InlinedCall::list, each ticked as Block::exec ticks it,
+// until the null entry or the first one that does not continue (RETURN, an
+// abort: an inlined body has no labels, so no Jump to resolve). Only the
+// list pointer and c live across each statement's call.
+[[gnu::always_inline]] inline void runInlinedList(Ctx& c, Stmt* const* p) {
+    for (; *p; ++p) {
+        c.stmt = *p;
+        if (tickAborts(c)) return;
+        if ((*p)->exec(c) != Flow::Next) return;
+    }
+}
+
 // Runs an inlined body with the POU name (and with `OnInstance` the
 // instance, self) switched for its duration, so that a watchdog or a test
 // failure names the callee; restores them and the caller's statement.
@@ -326,6 +342,8 @@ template <bool OnInstance, bool TrySingle = true>
     if (Stmt* s = TrySingle ? in.single : nullptr) {
         c.stmt = s;
         if (!tickAborts(c)) s->exec(c);
+    } else if (in.body.block) {
+        runInlinedList(c, in.list.data());
     } else {
         in.body.runPinned(c);  // always inlined here (decision 0410)
     }

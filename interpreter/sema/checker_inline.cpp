@@ -149,6 +149,10 @@ void Checker::inlineLeafCalls() {
         auto* in = pool().make<exec::InlinedCall>();
         in->body = exec::Body(body);
         if (site.call && body->stmts.size() == 1 && body->labels.empty()) in->single = body->stmts[0];
+        if (in->body.block) {
+            in->list = body->stmts;  // no labels here: countStatements refused them
+            in->list.push_back(nullptr);
+        }
         in->base = base;
         in->onInstance = site.onInstance;
         in->size = fn->code->initSize;

@@ -151,23 +151,41 @@ END_PROGRAM
     CHECK(deep.count(rt::DiagCode::CallDepth) == 1);
 }
 
-TEST_CASE("a fault inside an inlined call names the callee and its line", "[inline][faults]") {
-    auto r = runSt(R"(
-FUNCTION Ratio : DINT
-VAR_INPUT a : DINT; b : DINT; END_VAR
-Ratio := a / b;
-END_FUNCTION
+TEST_CASE("a fault inside an inlined call names the callee and its line", "[inline][faults][list]") {
+    // Ratio's one statement runs as InlinedCall::single, Spread's three from
+    // the ended list (decision 0481): the fault names the statement either way.
+    const std::string main = R"(
 PROGRAM Main
 VAR q : DINT; after : BOOL; END_VAR
 q := Ratio(10, 0);
 after := TRUE;
 END_PROGRAM
-)");
-    REQUIRE(r.ok());
-    REQUIRE(r.count(rt::DiagCode::DivByZero) == 1);
-    CHECK(r.diagnostics[0].pou == "Ratio");
-    CHECK(r.diagnostics[0].line == 4);
-    CHECK(r.var("Main", "after") == true);
+)";
+    const std::string one = R"(
+FUNCTION Ratio : DINT
+VAR_INPUT a : DINT; b : DINT; END_VAR
+Ratio := a / b;
+END_FUNCTION)";
+    const std::string three = R"(
+FUNCTION Ratio : DINT
+VAR_INPUT a : DINT; b : DINT; END_VAR
+Ratio := a;
+Ratio := Ratio + b;
+Ratio := Ratio / b;
+END_FUNCTION)";
+    for (const auto& [callee, line] : {std::pair{one, 4}, std::pair{three, 6}}) {
+        auto c = compileSt(callee + main);
+        REQUIRE(c->ok());
+        REQUIRE(callIn(*c, 0));
+        REQUIRE(callIn(*c, 0)->inlined);
+        CHECK(callIn(*c, 0)->inlined->list.empty() == (line == 4));
+        auto r = runSt(callee + main);
+        REQUIRE(r.ok());
+        REQUIRE(r.count(rt::DiagCode::DivByZero) == 1);
+        CHECK(r.diagnostics[0].pou == "Ratio");
+        CHECK(r.diagnostics[0].line == line);
+        CHECK(r.var("Main", "after") == true);
+    }
 }
 
 TEST_CASE("a small METHOD is inlined only where the call's class is known", "[inline][oop]") {
@@ -391,4 +409,73 @@ END_PROGRAM
     CHECK(r.var("Main", "d") == -12);
     CHECK(r.var("Main", "e") == 4294967290LL);
     CHECK(r.var("Main", "f") == true);
+}
+
+TEST_CASE("an inlined body of more than two statements runs from its ended list (decision 0481)", "[inline][list]") {
+    // Max3's three statements and Early's four run from InlinedCall::list;
+    // Pair's two keep the Body. Each statement ticks once, as in a framed
+    // call: with 1 ms a statement the cycle's execution time counts them.
+    const char* source = R"(
+FUNCTION Max3 : DINT
+VAR_INPUT a : DINT; b : DINT; c : DINT; END_VAR
+Max3 := a;
+IF b > Max3 THEN Max3 := b; END_IF;
+IF c > Max3 THEN Max3 := c; END_IF;
+END_FUNCTION
+FUNCTION Early : DINT
+VAR_INPUT a : DINT; END_VAR
+Early := a;
+IF a > 0 THEN RETURN; END_IF;
+Early := 99;
+Early := Early + 1;
+END_FUNCTION
+FUNCTION Pair : DINT
+VAR_INPUT a : DINT; END_VAR
+Pair := a;
+Pair := Pair * 2;
+END_FUNCTION
+PROGRAM Main
+VAR i : DINT := 1; x, y, z, w : DINT; END_VAR
+x := Max3(i, i + 4, i + 2);
+y := Early(i);
+z := Early(i - 2);
+w := Pair(i + 2);
+END_PROGRAM
+)";
+    auto c = compileSt(source);
+    INFO(c->printed());
+    REQUIRE(c->ok());
+    for (size_t k = 0; k < 4; ++k) {
+        REQUIRE(callIn(*c, k));
+        REQUIRE(callIn(*c, k)->inlined);
+    }
+    const exec::InlinedCall& max3 = *callIn(*c, 0)->inlined;
+    REQUIRE(max3.body.block);
+    REQUIRE(max3.list.size() == 4);  // three statements and the null end
+    CHECK(max3.list[0] == max3.body.block->stmts[0]);
+    CHECK(max3.list[2] == max3.body.block->stmts[2]);
+    CHECK(max3.list[3] == nullptr);
+    CHECK(callIn(*c, 1)->inlined->list.size() == 5);
+    CHECK(callIn(*c, 3)->inlined->list.empty());  // two statements: the Body
+    CHECK_FALSE(callIn(*c, 3)->inlined->body.block);
+    // The run empties Max3's Block: the call still computes its maximum
+    // only when it runs from the list.
+    RunSettings settings;
+    settings.stmtCost = 1'000'000;
+    settings.beforeRun = [](sema::ProgramModel& model) {
+        for (auto& code : model.codes)
+            if (sema::upper(code.name) == "MAIN")
+                if (auto* assign = dynamic_cast<exec::AssignCallLocal<int32_t, false>*>(code.body->stmts[0]))
+                    if (assign->call->inlined && assign->call->inlined->body.block) assign->call->inlined->body.block->stmts.clear();
+    };
+    auto r = runSt(source, settings);
+    REQUIRE(r.ok());
+    CHECK(r.var("Main", "x") == 5);
+    CHECK(r.var("Main", "y") == 1);    // RETURN in the second statement ends the list
+    CHECK(r.var("Main", "z") == 100);
+    CHECK(r.var("Main", "w") == 6);
+    // One tick of the cycle itself (a one-statement program runs 2), Main 4,
+    // Max3 1 + 2 + 1 (b > a, c not), Early(1) 1 + 2, Early(-1) 4, Pair 2:
+    // as many as the same calls with their frames (strun before the list).
+    CHECK(r.tasks[0]["last_exec_us"] == (1 + 4 + 4 + 3 + 4 + 2) * 1000);
 }
