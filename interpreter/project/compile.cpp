@@ -193,6 +193,7 @@ std::unique_ptr<sema::ProgramModel> compileOnLargeStack(SourceSet& sources, cons
     effective.twincatDurations = effective.twincatDurations || effective.twincatRealText;
     checker.setCompileOptions(effective);
     if (const rt::PlcProfile* profile = rt::findProfile(options.target)) checker.setProfile(*profile);
+    stdlib::registerParameterAliases(checker);
     model->tests = std::make_shared<testing::TestRegistry>();
     // The built-in functions, registered when the checker first looks one up
     // (decision 0478); the registrar owns what it needs, since a kept checker
