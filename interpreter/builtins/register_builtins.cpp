@@ -7,8 +7,6 @@
 
 namespace strun::stdlib {
 
-void registerParameterAliases(sema::Checker& checker);
-
 void registerBuiltins(sema::Checker& checker) {
     bind::registerNumeric(checker);
     bind::registerSelect(checker);
@@ -18,7 +16,6 @@ void registerBuiltins(sema::Checker& checker) {
     bind::registerClock(checker);
     bind::registerTaskCycle(checker);
     bind::registerMemory(checker);
-    registerParameterAliases(checker);
 }
 
 // The bistables and counters answer to both the IEC 61131-3 input names

@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <exception>
 #include <set>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "interpreter/ast/large_stack.h"
 #include "interpreter/ast/parse.h"
@@ -57,9 +60,36 @@ std::unique_ptr<ParsedLibrary> parseLibrary(CompileLog& log) {
     return library;
 }
 
+namespace {
+std::unique_ptr<sema::ProgramModel> compileOnLargeStack(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
+                                                        const sema::CompileOptions& options, ParsedLibrary* library,
+                                                        std::vector<ast::CompilationUnit>* keepUnits, CompileExtras* extras);
+}  // namespace
+
+// The whole compile runs on one thread with a large stack: the parser's and
+// the checker's runWithLargeStack then run where they are, instead of
+// starting a thread of 256 MB each (one per parsed file and one for the
+// checker; issue 28's start-up).
 std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
                                                    const sema::CompileOptions& options, ParsedLibrary* library,
                                                    std::vector<ast::CompilationUnit>* keepUnits, CompileExtras* extras) {
+    std::unique_ptr<sema::ProgramModel> model;
+    std::exception_ptr failure;
+    ast::runWithLargeStack([&] {
+        try {
+            model = compileOnLargeStack(sources, userFiles, log, options, library, keepUnits, extras);
+        } catch (...) {
+            failure = std::current_exception();
+        }
+    });
+    if (failure) std::rethrow_exception(failure);
+    return model;
+}
+
+namespace {
+std::unique_ptr<sema::ProgramModel> compileOnLargeStack(SourceSet& sources, const std::vector<int>& userFiles, CompileLog& log,
+                                                        const sema::CompileOptions& options, ParsedLibrary* library,
+                                                        std::vector<ast::CompilationUnit>* keepUnits, CompileExtras* extras) {
     std::vector<ast::CompilationUnit> units;
     std::set<int> libraryFiles;
     // Only the library files the project mentions (decision 0150), also when
@@ -163,24 +193,23 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     effective.twincatDurations = effective.twincatDurations || effective.twincatRealText;
     checker.setCompileOptions(effective);
     if (const rt::PlcProfile* profile = rt::findProfile(options.target)) checker.setProfile(*profile);
-    stdlib::registerBuiltins(checker);
-    // Native functions of the vendor libraries the project names (decision 0220).
-    stdlib::registerLibraryBuiltins(checker, selection.nativeLibraries);
+    stdlib::registerParameterAliases(checker);
     model->tests = std::make_shared<testing::TestRegistry>();
-    testing::registerTcUnit(checker, *model->tests);
-    testing::registerAxUnit(checker, *model->tests);  // SIMATIC AX (decision 0364)
-    // The checker recurses once per nested declaration and expression level;
-    // both are capped (docs/limits.md), and the large stack gives the caps a
-    // wide margin, also under sanitizers.
-    std::exception_ptr failure;
-    ast::runWithLargeStack([&] {
-        try {
-            checker.run(units);
-        } catch (...) {
-            failure = std::current_exception();
-        }
+    // The built-in functions, registered when the checker first looks one up
+    // (decision 0478); the registrar owns what it needs, since a kept checker
+    // (extras->keepChecker) may look one up after this function returns.
+    checker.setBuiltinRegistrar([libraries = std::vector<std::string>(selection.nativeLibraries.begin(), selection.nativeLibraries.end()),
+                                 tests = model->tests](sema::Checker& ck) {
+        stdlib::registerBuiltins(ck);
+        // Native functions of the vendor libraries the project names (decision 0220).
+        stdlib::registerLibraryBuiltins(ck, std::vector<std::string_view>(libraries.begin(), libraries.end()));
+        testing::registerTcUnit(ck, *tests);
+        testing::registerAxUnit(ck, *tests);  // SIMATIC AX (decision 0364)
     });
-    if (failure) std::rethrow_exception(failure);
+    // The checker recurses once per nested declaration and expression level;
+    // both are capped (docs/limits.md), and compileProject's large stack
+    // gives the caps a wide margin, also under sanitizers.
+    checker.run(units);
     if (!damage.lines.empty()) dropSyntaxCascades(log, damage);
     groupMissingLibraryNames(log, sources.referencedLibraries());  // a .plcproj's libraries strun lacks
     explainPinnedTypes(log, sources.pinnedTypes());                 // a .plcproj's pinned types strun could not read
@@ -199,5 +228,6 @@ std::unique_ptr<sema::ProgramModel> compileProject(SourceSet& sources, const std
     // The AST is referenced by nothing at run time: all names are resolved.
     return model;
 }
+}  // namespace
 
 }  // namespace strun::project

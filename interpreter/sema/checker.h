@@ -140,7 +140,11 @@ public:
     static constexpr const char* kDateSubOperator = "operator -";
     // Registry of built-in functions (name upper-case).
     void addBuiltin(const std::string& upperName, BuiltinFn fn) { builtins_[upperName] = std::move(fn); }
-    bool hasBuiltin(const std::string& upperName) const { return builtins_.count(upperName) != 0; }
+    bool hasBuiltin(const std::string& upperName) const { return builtinTable().count(upperName) != 0; }
+    // What fills the registry (addBuiltin for every built-in), run on the
+    // first look-up of a built-in name rather than before checking: a
+    // program that names none does not build the ~600 entries (decision 0478).
+    void setBuiltinRegistrar(std::function<void(Checker&)> registrar) { builtinRegistrar_ = std::move(registrar); }
     // Another name for a parameter of a library POU (IEC `SR.S1` vs CODESYS `SR.SET1`).
     void addParameterAlias(const std::string& upperPou, const std::string& upperAlias, const std::string& upperParam) {
         parameterAliases_[upperPou][upperAlias] = upperParam;
@@ -480,7 +484,12 @@ private:
     std::vector<ast::GlobalList*> globalLists_;
     std::vector<ast::Configuration*> configurations_;
     std::map<std::string, VarSym*> globals_;
+    // The registry, filled by builtinRegistrar_ on the first call of
+    // builtinTable() (logically const: the entries are the same whenever
+    // they are built).
+    const std::map<std::string, BuiltinFn>& builtinTable() const;
     std::map<std::string, BuiltinFn> builtins_;
+    mutable std::function<void(Checker&)> builtinRegistrar_;
     std::map<std::string, std::map<std::string, std::string>> parameterAliases_;
     std::set<std::string> namespaces_;  // upper-case NAMESPACE paths and their prefixes ("A", "A.B")
     bool isNamespace(const ast::Expr& e) const;

@@ -240,6 +240,16 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
     return r;
 }
 
+const std::map<std::string, BuiltinFn>& Checker::builtinTable() const {
+    if (builtinRegistrar_) {
+        // Taken out first: the registrar's addBuiltin calls must not run it again.
+        std::function<void(Checker&)> registrar = std::move(builtinRegistrar_);
+        builtinRegistrar_ = nullptr;
+        registrar(const_cast<Checker&>(*this));
+    }
+    return builtins_;
+}
+
 // THIS^.AssertEquals(...) in a TcUnit suite: TcUnit's assertions and test
 // control are methods of FB_TestSuite, strun's are built-in functions
 // (decision 0145), so a call through THIS^/SUPER^ of a name the suite has no
@@ -485,8 +495,8 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         bool handled = false;
         Checked conv = checkConversionCall(key, e, handled);
         if (handled) return conv;
-        auto b = builtins_.find(key);
-        if (b != builtins_.end()) {
+        auto b = builtinTable().find(key);
+        if (b != builtinTable().end()) {
             CallArgs args;
             args.call = &e;
             args.name = key;

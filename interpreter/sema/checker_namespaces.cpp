@@ -66,7 +66,11 @@ void Checker::noteContestedNames(std::vector<ast::CompilationUnit>& units) {
             contested_[simple].insert(upper(*d.nameSpace));
             *d.name = *d.nameSpace + "." + *d.name;
         }
-        const bool builtin = hasBuiltin(simple) || types().byName(simple);
+        // Being named like a builtin counts only for a namespaced declaration
+        // (below); asked only then, so that a program without namespaces does
+        // not build the builtin registry (decision 0478).
+        const bool anyNamespaced = std::any_of(decls.begin(), decls.end(), [](const Declared& d) { return !d.nameSpace->empty(); });
+        const bool builtin = anyNamespaced && (hasBuiltin(simple) || types().byName(simple));
         if (decls.size() < 2 && !builtin) continue;
         for (const bool library : {false, true}) {
             std::set<std::string> spaces;

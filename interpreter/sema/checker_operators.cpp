@@ -269,8 +269,8 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
             }
             if (isDateLike(ka) || isDateLike(kb)) {
                 // One rule for `dt - T#345ms` and SUB_DT_TIME (decision 0093).
-                auto fn = builtins_.find(op == ast::Op::Add ? kDateAddOperator : kDateSubOperator);
-                if (fn != builtins_.end()) {
+                auto fn = builtinTable().find(op == ast::Op::Add ? kDateAddOperator : kDateSubOperator);
+                if (fn != builtinTable().end()) {
                     CallArgs call;
                     call.name = opText(op);
                     call.args = {a, b};

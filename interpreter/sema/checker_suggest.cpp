@@ -81,7 +81,7 @@ std::vector<std::string> Checker::functionNames() const {
     std::vector<std::string> out;
     for (const auto& [key, p] : pous_)
         if (p->kind == ast::PouKind::Function) out.push_back(p->name);
-    for (const auto& [key, fn] : builtins_) out.push_back(key);
+    for (const auto& [key, fn] : builtinTable()) out.push_back(key);
     for (const stdlib::LibraryName& n : stdlib::libraryNames())
         if (n.kind == 'F' || n.kind == 'X') out.emplace_back(n.written);
     return out;
