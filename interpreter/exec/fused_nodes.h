@@ -283,6 +283,26 @@ struct IfBool final : Stmt {
     }
 };
 
+// IF a AND b / IF a OR b / IF a XOR b on BOOL operands (stored as bytes):
+// both operands evaluated, left first, and combined as AndI/OrI/XorI<uint8_t>
+// combine them, without the operator node's call and frame between the IF
+// and its operands (decision 0485).
+template <BinOp OP>
+struct IfLogic final : Stmt {
+    static_assert(OP == BinOp::And || OP == BinOp::Or || OP == BinOp::Xor);
+    Expr* l;
+    Expr* r;
+    Body then;
+    Stmt* otherwise;  // may be null; see If1Stmt
+    IfLogic(Expr* a, Expr* b, Block* t, Stmt* e) : l(a), r(b), then(t), otherwise(e) {}
+    Flow exec(Ctx& c) override {
+        const uint8_t a = static_cast<uint8_t>(l->i(c));
+        const uint8_t b = static_cast<uint8_t>(r->i(c));
+        if (applyBin<uint8_t, OP>(a, b)) return then.runOutOfLine(c);  // as IfCompare (decision 0410)
+        return otherwise ? otherwise->exec(c) : Flow::Next;
+    }
+};
+
 // ---- statements
 
 // x := x + k (k may be negative: x - k) on a variable of the instance or

@@ -22,9 +22,15 @@ inline int64_t wrapI(T v) { return static_cast<int64_t>(v); }
 template <class T>
 using W = std::common_type_t<U<T>, unsigned>;
 
+// The general integer operators (the two-operand ones below, their
+// constant-operand forms, DivI, ModI): a fused node with a constant reads
+// one of them through OpNode as it reads a fused operator (decision 0486),
+// so that `(a + b) MOD k` and the store of it need no node between them.
+struct IntOperator : Expr {};
+
 #define STRUN_INT_BINOP(NAME, EXPR)                                                           \
     template <class T>                                                                        \
-    struct NAME final : Expr {                                                                \
+    struct NAME final : IntOperator {                                                         \
         Expr *l, *r;                                                                          \
         NAME(Expr* a, Expr* b) : l(a), r(b) {}                                                \
         int64_t i(Ctx& c) override {                                                          \
@@ -47,7 +53,7 @@ STRUN_INT_BINOP(XorI, a ^ b)
 // checker already did.
 #define STRUN_INT_BINOP_CONST(NAME, EXPR)                                                     \
     template <class T>                                                                        \
-    struct NAME final : Expr {                                                                \
+    struct NAME final : IntOperator {                                                         \
         Expr* l;                                                                              \
         T b;                                                                                  \
         NAME(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}                              \
@@ -95,7 +101,7 @@ void reportDivByZero(Ctx& c, const Site& site);
 // Integer / and MOD: divisor 0 is replaced by 1 after reporting DIV_BY_ZERO;
 // MIN / -1 wraps instead of trapping.
 template <class T>
-struct DivI final : Expr {
+struct DivI final : IntOperator {
     Expr *l, *r;
     Site site;
     DivI(Expr* a, Expr* b, Site s) : l(a), r(b), site(s) {}
@@ -111,7 +117,7 @@ struct DivI final : Expr {
 };
 
 template <class T>
-struct ModI final : Expr {
+struct ModI final : IntOperator {
     Expr *l, *r;
     Site site;
     ModI(Expr* a, Expr* b, Site s) : l(a), r(b), site(s) {}

@@ -271,6 +271,10 @@ exec::Stmt* fuseIf(exec::NodePool& pool, exec::Expr* cond, exec::Block* then, ex
         return fusion::withVar(v, [&](auto var) -> exec::Stmt* { return pool.make<exec::IfBool<decltype(var)>>(var, then, otherwise); });
     if (exec::OpElem<uint8_t> e; fusion::elemOf<uint8_t>(cond, e))
         return pool.make<exec::IfBool<exec::OpElem<uint8_t>>>(e, then, otherwise);
+    // IF a OR b (a AND b, a XOR b): the IF evaluates both operands itself.
+    if (auto* n = dynamic_cast<exec::OrI<uint8_t>*>(cond)) return pool.make<exec::IfLogic<BinOp::Or>>(n->l, n->r, then, otherwise);
+    if (auto* n = dynamic_cast<exec::AndI<uint8_t>*>(cond)) return pool.make<exec::IfLogic<BinOp::And>>(n->l, n->r, then, otherwise);
+    if (auto* n = dynamic_cast<exec::XorI<uint8_t>*>(cond)) return pool.make<exec::IfLogic<BinOp::Xor>>(n->l, n->r, then, otherwise);
     return nullptr;
 }
 

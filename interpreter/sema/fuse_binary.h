@@ -29,8 +29,14 @@ exec::Expr* make(exec::NodePool& pool, L l, R r) {
 // A computed operand worth reading through one virtual call inside a fused
 // node with a constant (3 * x + 1, x MOD 2 = 0, a[i] > 0): a fused operator
 // or an array element. Plain variables of other widths keep the general
-// nodes (AddIK, CmpIK), which the statement builders recognise.
-inline bool computedOperand(exec::Expr* e) {
+// nodes (AddIK, CmpIK), which the statement builders recognise. An integer
+// computation also takes the general integer operators (`(a + b) MOD k`,
+// decision 0486): the fused node is then the one the store or the IF can
+// absorb.
+template <class T>
+bool computedOperand(exec::Expr* e) {
+    if constexpr (!std::is_floating_point_v<T>)
+        if (dynamic_cast<exec::IntOperator*>(e)) return true;
     return dynamic_cast<exec::FusedArith*>(e) || dynamic_cast<exec::Index1Target*>(e);
 }
 
@@ -62,7 +68,7 @@ exec::Expr* fuseTyped(exec::NodePool& pool, exec::Expr* a, exec::Expr* b, T k) {
     constexpr bool commutes = OP == BinOp::Add || OP == BinOp::Mul || OP == BinOp::And || OP == BinOp::Or || OP == BinOp::Xor ||
                               OP == BinOp::Eq || OP == BinOp::Ne;
     if constexpr (commutes) {
-        if (b && (rb.isVar() || computedOperand(b)))
+        if (b && (rb.isVar() || computedOperand<T>(b)))
             if (std::optional<T> ka = constOf<T>(a)) {
                 if (rb.isVar()) return withVar(rb, [&](auto rv) { return make<T, OP>(pool, rv, exec::OpConst<T>{*ka}); });
                 return make<T, OP>(pool, exec::OpNode<T>{b}, exec::OpConst<T>{*ka});
@@ -74,7 +80,7 @@ exec::Expr* fuseTyped(exec::NodePool& pool, exec::Expr* a, exec::Expr* b, T k) {
     constexpr bool ordered = OP == BinOp::Lt || OP == BinOp::Gt || OP == BinOp::Le || OP == BinOp::Ge;
     if constexpr (ordered) {
         constexpr BinOp mirrored = OP == BinOp::Lt ? BinOp::Gt : OP == BinOp::Gt ? BinOp::Lt : OP == BinOp::Le ? BinOp::Ge : BinOp::Le;
-        if (b && (rb.isVar() || computedOperand(b)))
+        if (b && (rb.isVar() || computedOperand<T>(b)))
             if (std::optional<T> ka = constOf<T>(a)) {
                 if (rb.isVar()) return withVar(rb, [&](auto rv) { return make<T, mirrored>(pool, rv, exec::OpConst<T>{*ka}); });
                 return make<T, mirrored>(pool, exec::OpNode<T>{b}, exec::OpConst<T>{*ka});
@@ -86,7 +92,7 @@ exec::Expr* fuseTyped(exec::NodePool& pool, exec::Expr* a, exec::Expr* b, T k) {
     }
     exec::OpNode<T> l{a};
     if (rb.isVar()) return withVar(rb, [&](auto rv) { return make<T, OP>(pool, l, rv); });
-    if (rb.kind == LeafKind::Const && computedOperand(a)) return make<T, OP>(pool, l, exec::OpConst<T>{rb.k});
+    if (rb.kind == LeafKind::Const && computedOperand<T>(a)) return make<T, OP>(pool, l, exec::OpConst<T>{rb.k});
     return nullptr;
 }
 

@@ -250,3 +250,62 @@ END_PROGRAM
     CHECK(is<exec::SwapElems<double>>(body[1]));
     for (size_t k = 2; k < 9; ++k) CHECK_FALSE(is<exec::SwapElems<int32_t>>(body[k]));
 }
+
+TEST_CASE("IF a OR b, a AND b, a XOR b on BOOL operands evaluate both operands in the IF node", "[fused]") {
+    auto c = compileSt(R"(
+PROGRAM Main
+VAR x : DINT; f : BOOL; g : BOOL; z : DINT; w : WORD; END_VAR
+IF x > 5 OR x = 1 THEN z := 1; END_IF;
+IF f AND g THEN z := 2; ELSE z := 3; END_IF;
+IF f XOR x < 0 THEN z := 4; END_IF;
+IF x = 2 THEN z := 5; ELSIF f OR g THEN z := 6; END_IF;
+IF (w OR 16#10) = 16#10 THEN z := 7; END_IF;
+END_PROGRAM
+)");
+    REQUIRE(c->ok());
+    auto body = bodyOf(*c, "Main");
+    REQUIRE(body.size() == 5);
+    auto* either = dynamic_cast<exec::IfLogic<exec::BinOp::Or>*>(body[0]);
+    REQUIRE(either);
+    CHECK(dynamic_cast<exec::FusedCompare*>(either->l));
+    CHECK(dynamic_cast<exec::FusedCompare*>(either->r));
+    CHECK_FALSE(either->otherwise);
+    auto* both = dynamic_cast<exec::IfLogic<exec::BinOp::And>*>(body[1]);
+    REQUIRE(both);
+    CHECK(is<exec::ElseStmts>(both->otherwise));
+    CHECK(is<exec::IfLogic<exec::BinOp::Xor>>(body[2]));
+    auto* link = dynamic_cast<exec::IfCompare<int32_t, exec::BinOp::Eq, exec::OpVar<int32_t, exec::BaseKind::Self>, exec::OpConst<int32_t>>*>(body[3]);
+    REQUIRE(link);
+    CHECK(is<exec::IfLogic<exec::BinOp::Or>>(link->otherwise));
+    // A bit-string OR inside a comparison is no BOOL condition: not an IfLogic.
+    CHECK_FALSE(is<exec::IfLogic<exec::BinOp::Or>>(body[4]));
+}
+
+TEST_CASE("general integer operators are operands of fused nodes, so that the store and the IF absorb the last one", "[fused]") {
+    auto c = compileSt(R"(
+PROGRAM Main
+VAR x : DINT; y : DINT; d : DINT; l : LINT; m : LINT; s : INT; z : DINT; END_VAR
+y := (y * 31 + (x MOD 97) * 3 + 1) MOD 1000003;
+IF (x / d + 1) MOD 3 = 0 THEN z := 1; END_IF;
+l := (l / m + 1) MOD 7;
+s := s + 1;
+END_PROGRAM
+)");
+    REQUIRE(c->ok());
+    auto body = bodyOf(*c, "Main");
+    REQUIRE(body.size() == 4);
+    using N32 = exec::OpNode<int32_t>;
+    using K32 = exec::OpConst<int32_t>;
+    auto* store = dynamic_cast<exec::AssignBinLocal<int32_t, exec::BinOp::Mod, N32, K32, false>*>(body[0]);
+    REQUIRE(store);
+    // y * 31 + ... + 1: the + 1 over the general AddI is a fused node too.
+    auto* plusOne = dynamic_cast<exec::FusedBin<int32_t, exec::BinOp::Add, N32, K32>*>(store->l.e);
+    REQUIRE(plusOne);
+    CHECK(dynamic_cast<exec::AddI<int32_t>*>(plusOne->l.e));
+    auto* test = dynamic_cast<exec::IfCompare<int32_t, exec::BinOp::Eq, N32, K32>*>(body[1]);
+    REQUIRE(test);
+    CHECK(dynamic_cast<exec::FusedBin<int32_t, exec::BinOp::Mod, N32, K32>*>(test->l.e));
+    CHECK(is<exec::AssignBinLocal<int64_t, exec::BinOp::Mod, exec::OpNode<int64_t>, exec::OpConst<int64_t>, false>>(body[2]));
+    // An INT variable in DINT arithmetic is no operator: x := x + 1 keeps its own node.
+    CHECK(is<exec::AddConstLocal<int16_t, exec::BaseKind::Self>>(body[3]));
+}
