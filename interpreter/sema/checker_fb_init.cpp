@@ -156,16 +156,19 @@ std::vector<const VarSym*> Checker::membersDeclaredInLiterals(PouInfo* fb, const
         const std::string name = upper(item.name);
         const VarSym* member = nullptr;
         for (PouInfo* p = fb; p && !member; p = p->parent)
-            for (const auto& v : p->ownedVars)
-                if (v->storage == Storage::Self && !v->byRef && upper(v->name) == name) {
-                    member = v.get();
-                    break;
-                }
+            if (auto it = p->vars.find(name); it != p->vars.end() && it->second->storage == Storage::Self && !it->second->byRef)
+                member = it->second;
         if (member && member->type && member->type->size > 0) members.push_back(member);
     }
     return members;
 }
 
+// The elements of an array, with the FB_init arguments written after its
+// element type (decision 0330): `ARRAY[1..2] OF FB_X(a := 1)` gives every
+// element the same arguments, `ARRAY[1..2] OF FB_X[(a := 1), (a := 2)]` one
+// list per element in storage order (row-major for several dimensions).
+// Like those of a single instance, they are checked and run in the scope of
+// the block or program that declares the array.
 void Checker::collectArrayFbInits(const Type* t, uint8_t* addr, const ast::TypeSpec* declSpec, int depth, PouInfo* enclosing,
                                   uint8_t* enclosingAddr) {
     const ast::TypeSpec* elemSpec = declSpec && declSpec->kind == ast::TypeSpecKind::Array ? declSpec->elem.get() : nullptr;
