@@ -82,7 +82,7 @@ struct EnumNameNode final : exec::Expr {
     }
 };
 
-void addToString(Checker& ck, const std::string& name, const Type* from, bool wide) {
+void addToString(Checker& ck, std::string_view name, const Type* from, bool wide) {
     struct ToStringData { const Type* from; bool wide; };
     ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
         const auto [from, wide] = self.data<ToStringData>();
@@ -132,7 +132,7 @@ void addToString(Checker& ck, const std::string& name, const Type* from, bool wi
 
 // STRING_TO_X / WSTRING_TO_X; with `either`, the overloaded TO_X of a STRING or
 // a WSTRING (TO_LREAL(sValue)), whose numeric sources checkConversionCall takes.
-void addFromString(Checker& ck, const std::string& name, bool wide, const Type* to, bool either = false) {
+void addFromString(Checker& ck, std::string_view name, bool wide, const Type* to, bool either = false) {
     struct FromStringData { bool wide; const Type* to; bool either; };
     ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
         const auto [wide, to, either] = self.data<FromStringData>();
@@ -158,7 +158,7 @@ const Type* bitTypeForLiteral(Checker& ck, const Checked& a) {
 }
 
 // BIT_BCD_TO_INT (from given) or BCD_TO_INT (from = null: any bit string).
-void addBcdToInt(Checker& ck, const std::string& name, const Type* from, const Type* to) {
+void addBcdToInt(Checker& ck, std::string_view name, const Type* from, const Type* to) {
     struct BcdToIntData { const Type* from; const Type* to; };
     ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
         const auto [from, to] = self.data<BcdToIntData>();
@@ -175,7 +175,7 @@ void addBcdToInt(Checker& ck, const std::string& name, const Type* from, const T
 }
 
 // INT_TO_BCD_BIT (from given) or TO_BCD_BIT (from = null: any integer).
-void addIntToBcd(Checker& ck, const std::string& name, const Type* from, const Type* to) {
+void addIntToBcd(Checker& ck, std::string_view name, const Type* from, const Type* to) {
     struct IntToBcdData { const Type* from; const Type* to; };
     ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
         const auto [from, to] = self.data<IntToBcdData>();
@@ -197,7 +197,7 @@ void addIntToBcd(Checker& ck, const std::string& name, const Type* from, const T
 // BCD_TO_BYTE/WORD/DWORD (same width in and out; all ones outside the range,
 // decision 0036). With --strict, INT_TO_BCD is IEC 61131-3's conversion with
 // an ANY_BIT result, taken as WORD (Annex F's WEIGH returns it as a WORD).
-void addUtilBcd(Checker& ck, const std::string& name, TK fromKind, TK toKind, bool toBcd, const char* formal) {
+void addUtilBcd(Checker& ck, std::string_view name, TK fromKind, TK toKind, bool toBcd, const char* formal) {
     struct UtilBcdData { TK fromKind; TK toKind; bool toBcd; const char* formal; };
     ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
         const auto [fromKind, toKind, toBcd, formal] = self.data<UtilBcdData>();
@@ -253,15 +253,21 @@ Checked checkIsValidBcd(Checker& ck, CallArgs& call) {
 
 void registerConvert(Checker& ck) {
     auto& types = ck.types();
+    // The generated names are built in one buffer: the registry copies them.
+    std::string buffer;
+    buffer.reserve(64);
+    auto name = [&buffer](std::string_view a, std::string_view b, std::string_view c = {}) -> std::string_view {
+        buffer.assign(a).append(b).append(c);
+        return buffer;
+    };
     for (const char* n : kTypeNames) {
         const Type* t = types.byName(n);
         if (!t) continue;
-        std::string name = n;
-        addToString(ck, name + "_TO_STRING", t, false);
-        addToString(ck, name + "_TO_WSTRING", t, true);
-        addFromString(ck, "STRING_TO_" + name, false, t);
-        addFromString(ck, "WSTRING_TO_" + name, true, t);
-        addFromString(ck, "TO_" + name, false, t, true);
+        addToString(ck, name(n, "_TO_STRING"), t, false);
+        addToString(ck, name(n, "_TO_WSTRING"), t, true);
+        addFromString(ck, name("STRING_TO_", n), false, t);
+        addFromString(ck, name("WSTRING_TO_", n), true, t);
+        addFromString(ck, name("TO_", n), false, t, true);
     }
     addToString(ck, "STRING_TO_WSTRING", types.elementary(TK::String), true);
     addToString(ck, "WSTRING_TO_STRING", types.elementary(TK::WString), false);
@@ -272,14 +278,14 @@ void registerConvert(Checker& ck) {
     const TK ints[] = {TK::SInt, TK::Int, TK::DInt, TK::LInt, TK::USInt, TK::UInt, TK::UDInt, TK::ULInt};
     for (TK b : bits) {
         const Type* bt = types.elementary(b);
-        addIntToBcd(ck, "TO_BCD_" + bt->name, nullptr, bt);
+        addIntToBcd(ck, name("TO_BCD_", bt->name), nullptr, bt);
         for (TK i : ints) {
             const Type* it = types.elementary(i);
-            addBcdToInt(ck, bt->name + "_BCD_TO_" + it->name, bt, it);
-            addIntToBcd(ck, it->name + "_TO_BCD_" + bt->name, it, bt);
+            addBcdToInt(ck, name(bt->name, "_BCD_TO_", it->name), bt, it);
+            addIntToBcd(ck, name(it->name, "_TO_BCD_", bt->name), it, bt);
         }
     }
-    for (TK i : ints) addBcdToInt(ck, "BCD_TO_" + types.elementary(i)->name, nullptr, types.elementary(i));
+    for (TK i : ints) addBcdToInt(ck, name("BCD_TO_", types.elementary(i)->name), nullptr, types.elementary(i));
     addUtilBcd(ck, "INT_TO_BCD", TK::Int, TK::Byte, true, "I");
     addUtilBcd(ck, "BYTE_TO_BCD", TK::Byte, TK::Byte, true, "B");
     addUtilBcd(ck, "WORD_TO_BCD", TK::Word, TK::Word, true, "W");

@@ -333,11 +333,16 @@ void registerAssertions(Checker& ck, TestRegistry& reg) {
         n->actual = {v.node, v.type};
         return result(ck, n, TK::Void, call);
     }, AssertEqualsData{&reg}));
+    // The names are built in one buffer: the registry copies them.
+    static constexpr const char* kArrayPrefixes[] = {"ASSERTARRAYEQUALS_", "ASSERTARRAY2DEQUALS_", "ASSERTARRAY3DEQUALS_"};
+    std::string name;
+    name.reserve(64);
     for (const auto& [typeName, kind] : assertTypes()) {
         const TK k = kind;
         const bool real = k == TK::Real || k == TK::LReal;
         struct AssertTypedData { TestRegistry* regp; TK k; bool real; };
-        ck.addBuiltin(std::string("ASSERTEQUALS_") + typeName, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        name.assign("ASSERTEQUALS_").append(typeName);
+        ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
             const auto [regp, k, real] = self.data<AssertTypedData>();
             TestRegistry& reg = *regp;
             std::vector<Checked> a;
@@ -352,9 +357,9 @@ void registerAssertions(Checker& ck, TestRegistry& reg) {
             return result(ck, n, TK::Void, call);
         }, AssertTypedData{&reg, k, real}));
         for (size_t dims = 1; dims <= 3; ++dims) {
-            std::string name = dims == 1 ? "ASSERTARRAYEQUALS_" : fmt::format("ASSERTARRAY{}DEQUALS_", dims);
             struct AssertArrayData { TestRegistry* regp; TK k; bool real; size_t dims; };
-            ck.addBuiltin(name + typeName, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+            name.assign(kArrayPrefixes[dims - 1]).append(typeName);
+            ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
                 const auto [regp, k, real, dims] = self.data<AssertArrayData>();
                 TestRegistry& reg = *regp;
                 std::vector<Checked> a;
