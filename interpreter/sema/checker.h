@@ -484,9 +484,9 @@ private:
     std::vector<ast::GlobalList*> globalLists_;
     std::vector<ast::Configuration*> configurations_;
     std::map<std::string, VarSym*> globals_;
-    // The registry, filled by builtinRegistrar_ on the first call of
-    // builtinTable() (logically const: the entries are the same whenever
-    // they are built).
+    // The registry (names to BuiltinFn values, decision 0487), filled by
+    // builtinRegistrar_ on the first call of builtinTable() (logically
+    // const: the entries are the same whenever they are built).
     const BuiltinRegistry& builtinTable() const;
     BuiltinRegistry builtins_;
     mutable std::function<void(Checker&)> builtinRegistrar_;
