@@ -162,8 +162,9 @@ void addConcat(Checker& ck, const char* name, CalendarFn fn, TK result, std::spa
 }
 
 // SPLIT_*(IN, outputs...): outputs connected with '=>' by name, or given by position after IN.
-void addSplit(Checker& ck, const char* name, SplitFn fn, TK input, std::span<const char* const> outputs) {
-    struct SplitData { SplitFn fn; TK input; std::span<const char* const> outputs; };
+// The outputs are the formals of the matching CONCAT_* (one name each).
+void addSplit(Checker& ck, const char* name, SplitFn fn, TK input, std::span<const Formal> outputs) {
+    struct SplitData { SplitFn fn; TK input; std::span<const Formal> outputs; };
     ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
         const auto [fn, input, outputs] = self.data<SplitData>();
         Checked in;
@@ -192,7 +193,7 @@ void addSplit(Checker& ck, const char* name, SplitFn fn, TK input, std::span<con
             }
             size_t idx = outputs.size();
             for (size_t j = 0; j < outputs.size(); ++j)
-                if (nm == outputs[j]) idx = j;
+                if (nm == outputs[j].names) idx = j;
             if (idx == outputs.size()) {
                 ck.error(diag::E0302, arg.loc, fmt::format("'{}' has no parameter '{}'", call.name, arg.name));
                 return ck.bad(call.loc);
@@ -222,11 +223,11 @@ void addSplit(Checker& ck, const char* name, SplitFn fn, TK input, std::span<con
             if (!given[j]) continue;
             const Checked& t = targets[j];
             if (!t.isPlace || t.readOnly) {
-                ck.error(diag::E0206, t.loc, fmt::format("output '{}' of '{}' needs a variable that can be written", outputs[j], call.name));
+                ck.error(diag::E0206, t.loc, fmt::format("output '{}' of '{}' needs a variable that can be written", outputs[j].names, call.name));
                 return ck.bad(call.loc);
             }
             if (!sema::isInteger(t.type->kind) && !sema::isBitString(t.type->kind)) {
-                ck.error(diag::E0201, t.loc, fmt::format("output '{}' of '{}' must be an integer variable, not {}", outputs[j], call.name, sema::typeName(t.type)));
+                ck.error(diag::E0201, t.loc, fmt::format("output '{}' of '{}' must be an integer variable, not {}", outputs[j].names, call.name, sema::typeName(t.type)));
                 return ck.bad(call.loc);
             }
             exec::Expr* field = sema::makeByRep<exec::FrameVar>(ck.pool(), Rep::I64, n->off + static_cast<uint32_t>(8 * slot));
@@ -302,15 +303,12 @@ void registerTime(Checker& ck) {
     addConcat(ck, "CONCAT_DT", CalendarFn::Dt, TK::Dt, kDtFormals);
     addConcat(ck, "CONCAT_LDT", CalendarFn::Dt, TK::LDt, kDtFormals);
 
-    static constexpr const char* dateFields[] = {"YEAR", "MONTH", "DAY"};
-    static constexpr const char* todFields[] = {"HOUR", "MINUTE", "SECOND", "MILLISECOND"};
-    static constexpr const char* dtFields[] = {"YEAR", "MONTH", "DAY", "HOUR", "MINUTE", "SECOND", "MILLISECOND"};
-    addSplit(ck, "SPLIT_DATE", SplitFn::Date, TK::Date, dateFields);
-    addSplit(ck, "SPLIT_LDATE", SplitFn::Date, TK::LDate, dateFields);
-    addSplit(ck, "SPLIT_TOD", SplitFn::Tod, TK::Tod, todFields);
-    addSplit(ck, "SPLIT_LTOD", SplitFn::Tod, TK::LTod, todFields);
-    addSplit(ck, "SPLIT_DT", SplitFn::Dt, TK::Dt, dtFields);
-    addSplit(ck, "SPLIT_LDT", SplitFn::Dt, TK::LDt, dtFields);
+    addSplit(ck, "SPLIT_DATE", SplitFn::Date, TK::Date, kDateFormals);
+    addSplit(ck, "SPLIT_LDATE", SplitFn::Date, TK::LDate, kDateFormals);
+    addSplit(ck, "SPLIT_TOD", SplitFn::Tod, TK::Tod, kTodFormals);
+    addSplit(ck, "SPLIT_LTOD", SplitFn::Tod, TK::LTod, kTodFormals);
+    addSplit(ck, "SPLIT_DT", SplitFn::Dt, TK::Dt, kDtFormals);
+    addSplit(ck, "SPLIT_LDT", SplitFn::Dt, TK::LDt, kDtFormals);
     ck.addBuiltin("DAY_OF_WEEK", checkDayOfWeek);
 }
 
