@@ -1,6 +1,6 @@
 // The checker's table of built-in functions by upper-case name: an open-
 // addressing hash of names kept in one character buffer, each with its
-// BuiltinFn (a function pointer and a few values). Filling it with the ~600
+// BuiltinFn (a function pointer and a few values). Filling it with the ~490
 // standard, library and test built-ins costs a handful of allocations, not
 // one map node, one string and one std::function each (decision 0487).
 #pragma once
