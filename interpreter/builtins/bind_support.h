@@ -19,6 +19,7 @@ using sema::Checker;
 using sema::Rep;
 using sema::TK;
 using sema::Type;
+using sema::BuiltinFn;
 
 // One formal input: its IEC name and the CODESYS alias ("IN|STR"), '|'-separated.
 struct Formal {

@@ -82,8 +82,10 @@ struct EnumNameNode final : exec::Expr {
     }
 };
 
-void addToString(Checker& ck, const std::string& name, const Type* from, bool wide) {
-    ck.addBuiltin(name, [from, wide](Checker& ck, CallArgs& call) -> Checked {
+void addToString(Checker& ck, std::string_view name, const Type* from, bool wide) {
+    struct ToStringData { const Type* from; bool wide; };
+    ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [from, wide] = self.data<ToStringData>();
         std::vector<Checked> a;
         if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
         Checked x = a[0];
@@ -125,13 +127,15 @@ void addToString(Checker& ck, const std::string& name, const Type* from, bool wi
             n = s;
         }
         return makeResult(ck, n, t, call, a);
-    });
+    }, ToStringData{from, wide}));
 }
 
 // STRING_TO_X / WSTRING_TO_X; with `either`, the overloaded TO_X of a STRING or
 // a WSTRING (TO_LREAL(sValue)), whose numeric sources checkConversionCall takes.
-void addFromString(Checker& ck, const std::string& name, bool wide, const Type* to, bool either = false) {
-    ck.addBuiltin(name, [wide, to, either](Checker& ck, CallArgs& call) -> Checked {
+void addFromString(Checker& ck, std::string_view name, bool wide, const Type* to, bool either = false) {
+    struct FromStringData { bool wide; const Type* to; bool either; };
+    ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [wide, to, either] = self.data<FromStringData>();
         std::vector<Checked> a;
         if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
         const bool wideSource = either ? isStringArg(a[0], true) : wide;
@@ -142,7 +146,7 @@ void addFromString(Checker& ck, const std::string& name, bool wide, const Type* 
         TK view = sema::integerView(to->kind);
         auto* n = ck.pool().make<FromStringNode>(a[0].node, wideSource, vc, sema::bitWidth(view), sema::isSignedInt(view));
         return makeResult(ck, n, to, call, a);
-    });
+    }, FromStringData{wide, to, either}));
 }
 
 int bytesOf(TK k) { return sema::bitWidth(k) / 8; }
@@ -154,8 +158,10 @@ const Type* bitTypeForLiteral(Checker& ck, const Checked& a) {
 }
 
 // BIT_BCD_TO_INT (from given) or BCD_TO_INT (from = null: any bit string).
-void addBcdToInt(Checker& ck, const std::string& name, const Type* from, const Type* to) {
-    ck.addBuiltin(name, [from, to](Checker& ck, CallArgs& call) -> Checked {
+void addBcdToInt(Checker& ck, std::string_view name, const Type* from, const Type* to) {
+    struct BcdToIntData { const Type* from; const Type* to; };
+    ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [from, to] = self.data<BcdToIntData>();
         std::vector<Checked> a;
         if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
         const Type* src = from ? from : bitTypeForLiteral(ck, a[0]);
@@ -165,12 +171,14 @@ void addBcdToInt(Checker& ck, const std::string& name, const Type* from, const T
         TK view = sema::integerView(to->kind);
         auto* n = ck.pool().make<BcdToIntNode>(x.node, bytesOf(src->kind), sema::bitWidth(view), sema::isSignedInt(view));
         return makeResult(ck, n, to, call, a);
-    });
+    }, BcdToIntData{from, to}));
 }
 
 // INT_TO_BCD_BIT (from given) or TO_BCD_BIT (from = null: any integer).
-void addIntToBcd(Checker& ck, const std::string& name, const Type* from, const Type* to) {
-    ck.addBuiltin(name, [from, to](Checker& ck, CallArgs& call) -> Checked {
+void addIntToBcd(Checker& ck, std::string_view name, const Type* from, const Type* to) {
+    struct IntToBcdData { const Type* from; const Type* to; };
+    ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [from, to] = self.data<IntToBcdData>();
         std::vector<Checked> a;
         if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
         Checked x = a[0];
@@ -180,7 +188,7 @@ void addIntToBcd(Checker& ck, const std::string& name, const Type* from, const T
         if (!x.ok) return x;
         auto* n = ck.pool().make<IntToBcdNode>(x.node, bytesOf(to->kind));
         return makeResult(ck, n, to, call, a);
-    });
+    }, IntToBcdData{from, to}));
 }
 
 // CODESYS Util's BCD functions (decision 0386): INT_TO_BCD(I : INT) : BYTE
@@ -189,8 +197,10 @@ void addIntToBcd(Checker& ck, const std::string& name, const Type* from, const T
 // BCD_TO_BYTE/WORD/DWORD (same width in and out; all ones outside the range,
 // decision 0036). With --strict, INT_TO_BCD is IEC 61131-3's conversion with
 // an ANY_BIT result, taken as WORD (Annex F's WEIGH returns it as a WORD).
-void addUtilBcd(Checker& ck, const std::string& name, TK fromKind, TK toKind, bool toBcd, const char* formal) {
-    ck.addBuiltin(name, [fromKind, toKind, toBcd, formal](Checker& ck, CallArgs& call) -> Checked {
+void addUtilBcd(Checker& ck, std::string_view name, TK fromKind, TK toKind, bool toBcd, const char* formal) {
+    struct UtilBcdData { TK fromKind; TK toKind; bool toBcd; const char* formal; };
+    ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [fromKind, toKind, toBcd, formal] = self.data<UtilBcdData>();
         std::vector<Checked> a;
         std::string names = std::string(formal) + "|IN";
         if (!bindFixed(ck, call, {{names.c_str()}}, a)) return ck.bad(call.loc);
@@ -204,11 +214,13 @@ void addUtilBcd(Checker& ck, const std::string& name, TK fromKind, TK toKind, bo
         TK view = sema::integerView(target);
         auto* n = ck.pool().make<BcdToIntNode>(x.node, bytesOf(fromKind), sema::bitWidth(view), sema::isSignedInt(view));
         return makeResult(ck, n, to, call, a);
-    });
+    }, UtilBcdData{fromKind, toKind, toBcd, formal}));
 }
 
 void addByteOrder(Checker& ck, const char* name, ByteOrderFn fn) {
-    ck.addBuiltin(name, [fn](Checker& ck, CallArgs& call) -> Checked {
+    struct ByteOrderData { ByteOrderFn fn; };
+    ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [fn] = self.data<ByteOrderData>();
         std::vector<Checked> a;
         if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
         if (!isIntegerArg(a[0]) && !isBitArg(a[0])) return argError(ck, a[0], call.name, "the input must be an integer or a bit string");
@@ -216,7 +228,7 @@ void addByteOrder(Checker& ck, const char* name, ByteOrderFn fn) {
         TK view = sema::integerView(x.type->kind);
         auto* n = ck.pool().make<ByteOrderNode>(x.node, fn, bytesOf(x.type->kind), sema::isSignedInt(view));
         return makeResult(ck, n, x.type, call, a);
-    });
+    }, ByteOrderData{fn}));
 }
 
 Checked checkIsValid(Checker& ck, CallArgs& call) {
@@ -241,15 +253,21 @@ Checked checkIsValidBcd(Checker& ck, CallArgs& call) {
 
 void registerConvert(Checker& ck) {
     auto& types = ck.types();
+    // The generated names are built in one buffer: the registry copies them.
+    std::string buffer;
+    buffer.reserve(64);
+    auto name = [&buffer](std::string_view a, std::string_view b, std::string_view c = {}) -> std::string_view {
+        buffer.assign(a).append(b).append(c);
+        return buffer;
+    };
     for (const char* n : kTypeNames) {
         const Type* t = types.byName(n);
         if (!t) continue;
-        std::string name = n;
-        addToString(ck, name + "_TO_STRING", t, false);
-        addToString(ck, name + "_TO_WSTRING", t, true);
-        addFromString(ck, "STRING_TO_" + name, false, t);
-        addFromString(ck, "WSTRING_TO_" + name, true, t);
-        addFromString(ck, "TO_" + name, false, t, true);
+        addToString(ck, name(n, "_TO_STRING"), t, false);
+        addToString(ck, name(n, "_TO_WSTRING"), t, true);
+        addFromString(ck, name("STRING_TO_", n), false, t);
+        addFromString(ck, name("WSTRING_TO_", n), true, t);
+        addFromString(ck, name("TO_", n), false, t, true);
     }
     addToString(ck, "STRING_TO_WSTRING", types.elementary(TK::String), true);
     addToString(ck, "WSTRING_TO_STRING", types.elementary(TK::WString), false);
@@ -260,14 +278,14 @@ void registerConvert(Checker& ck) {
     const TK ints[] = {TK::SInt, TK::Int, TK::DInt, TK::LInt, TK::USInt, TK::UInt, TK::UDInt, TK::ULInt};
     for (TK b : bits) {
         const Type* bt = types.elementary(b);
-        addIntToBcd(ck, "TO_BCD_" + bt->name, nullptr, bt);
+        addIntToBcd(ck, name("TO_BCD_", bt->name), nullptr, bt);
         for (TK i : ints) {
             const Type* it = types.elementary(i);
-            addBcdToInt(ck, bt->name + "_BCD_TO_" + it->name, bt, it);
-            addIntToBcd(ck, it->name + "_TO_BCD_" + bt->name, it, bt);
+            addBcdToInt(ck, name(bt->name, "_BCD_TO_", it->name), bt, it);
+            addIntToBcd(ck, name(it->name, "_TO_BCD_", bt->name), it, bt);
         }
     }
-    for (TK i : ints) addBcdToInt(ck, "BCD_TO_" + types.elementary(i)->name, nullptr, types.elementary(i));
+    for (TK i : ints) addBcdToInt(ck, name("BCD_TO_", types.elementary(i)->name), nullptr, types.elementary(i));
     addUtilBcd(ck, "INT_TO_BCD", TK::Int, TK::Byte, true, "I");
     addUtilBcd(ck, "BYTE_TO_BCD", TK::Byte, TK::Byte, true, "B");
     addUtilBcd(ck, "WORD_TO_BCD", TK::Word, TK::Word, true, "W");

@@ -78,7 +78,9 @@ Checked addressArg(Checker& ck, const Checked& a, const std::string& fn, const c
 
 void addMem(Checker& ck, MemOp op) {
     const bool set = op == MemOp::Set, cmp = op == MemOp::Compare;
-    ck.addBuiltin(opName(op), [op, set, cmp](Checker& ck, CallArgs& call) -> Checked {
+    struct MemData { MemOp op; bool set; bool cmp; };
+    ck.addBuiltin(opName(op), BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [op, set, cmp] = self.data<MemData>();
         std::vector<Checked> a;
         bool bound = cmp ? bindFixed(ck, call, {{"PBUF1"}, {"PBUF2"}, {"N"}}, a)
                    : set ? bindFixed(ck, call, {{"DESTADDR"}, {"FILLBYTE"}, {"N"}}, a)
@@ -99,7 +101,7 @@ void addMem(Checker& ck, MemOp op) {
         if (!n.ok) return n;
         auto* node = ck.pool().make<MemNode>(first.node, second.node, n.node, op, ck.site(call.loc));
         return makeResult(ck, node, ck.types().elementary(cmp ? TK::DInt : TK::UDInt), call, a, false);
-    });
+    }, MemData{op, set, cmp}));
 }
 
 }  // namespace

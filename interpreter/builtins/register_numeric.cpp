@@ -51,7 +51,9 @@ exec::Expr* makeShift(exec::NodePool& pool, Rep rep, ShiftFn fn, exec::Expr* in,
 }
 
 void addMath(Checker& ck, const char* name, MathFn fn) {
-    ck.addBuiltin(name, [fn](Checker& ck, CallArgs& call) -> Checked {
+    struct MathData { MathFn fn; };
+    ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [fn] = self.data<MathData>();
         std::vector<Checked> a;
         if (!bindFixed(ck, call, {{"IN"}}, a)) return ck.bad(call.loc);
         if (!isNumArg(a[0])) return argError(ck, a[0], call.name, "the input must be a number (ANY_NUM)");
@@ -59,7 +61,7 @@ void addMath(Checker& ck, const char* name, MathFn fn) {
         Checked x = ck.convert(a[0], t, a[0].loc);
         if (!x.ok) return x;
         return makeResult(ck, makeMath(ck.pool(), sema::repOf(t), fn, x.node), t, call, a);
-    });
+    }, MathData{fn}));
 }
 
 Checked checkAbs(Checker& ck, CallArgs& call) {
@@ -183,7 +185,9 @@ const Type* shiftType(Checker& ck, const Checked& in) {
 }
 
 void addShift(Checker& ck, const char* name, ShiftFn fn) {
-    ck.addBuiltin(name, [fn](Checker& ck, CallArgs& call) -> Checked {
+    struct ShiftData { ShiftFn fn; };
+    ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [fn] = self.data<ShiftData>();
         std::vector<Checked> a;
         if (!bindFixed(ck, call, {{"IN"}, {"N"}}, a)) return ck.bad(call.loc);
         if (!(isBitArg(a[0]) || isIntegerArg(a[0])))
@@ -195,7 +199,7 @@ void addShift(Checker& ck, const char* name, ShiftFn fn) {
         if (!in.ok) return in;
         std::vector<Checked> args = {in, n};
         return makeResult(ck, makeShift(ck.pool(), sema::repOf(t), fn, in.node, n.node), t, call, args);
-    });
+    }, ShiftData{fn}));
 }
 
 enum class Logic { And, Or, Xor };

@@ -1,6 +1,8 @@
 // Time and date functions: ADD_TIME ... DIV_LTIME, CONCAT_DATE_TOD ...
 // CONCAT_LDT, SPLIT_DATE ... SPLIT_LDT, DAY_OF_WEEK; the time arithmetic of
 // the generic ADD/SUB/MUL/DIV; the PLC-clock functions of the timer blocks.
+#include <span>
+
 #include <fmt/format.h>
 
 #include "interpreter/builtins/bind_support.h"
@@ -105,7 +107,9 @@ namespace {
 
 // ADD_TIME(IN1, IN2) and friends: both inputs converted to their declared types first.
 void addNamedArith(Checker& ck, const char* name, TimeOp op, TK in1, TK in2) {
-    ck.addBuiltin(name, [op, in1, in2](Checker& ck, CallArgs& call) -> Checked {
+    struct NamedArithData { TimeOp op; TK in1; TK in2; };
+    ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [op, in1, in2] = self.data<NamedArithData>();
         std::vector<Checked> a;
         if (!bindFixed(ck, call, {{"IN1"}, {"IN2"}}, a)) return ck.bad(call.loc);
         Checked x = ck.coerce(a[0], ck.types().elementary(in1), a[0].loc, call.name.c_str());
@@ -118,12 +122,13 @@ void addNamedArith(Checker& ck, const char* name, TimeOp op, TK in1, TK in2) {
             return argError(ck, y, call.name, "IN2 must be a number");
         }
         return timeArithmetic(ck, call, op, x, y);
-    });
+    }, NamedArithData{op, in1, in2}));
 }
 
-void addConcat(Checker& ck, const char* name, CalendarFn fn, TK result, std::initializer_list<Formal> formals) {
-    std::vector<Formal> fs(formals);
-    ck.addBuiltin(name, [fn, result, fs](Checker& ck, CallArgs& call) -> Checked {
+void addConcat(Checker& ck, const char* name, CalendarFn fn, TK result, std::span<const Formal> fs) {
+    struct ConcatData { CalendarFn fn; TK result; std::span<const Formal> fs; };
+    ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [fn, result, fs] = self.data<ConcatData>();
         std::vector<Checked> a;
         bool ok = false;
         switch (fs.size()) {
@@ -153,12 +158,15 @@ void addConcat(Checker& ck, const char* name, CalendarFn fn, TK result, std::ini
             }
         }
         return makeResult(ck, n, ck.types().elementary(result), call, a);
-    });
+    }, ConcatData{fn, result, fs}));
 }
 
 // SPLIT_*(IN, outputs...): outputs connected with '=>' by name, or given by position after IN.
-void addSplit(Checker& ck, const char* name, SplitFn fn, TK input, std::vector<const char*> outputs) {
-    ck.addBuiltin(name, [fn, input, outputs](Checker& ck, CallArgs& call) -> Checked {
+// The outputs are the formals of the matching CONCAT_* (one name each).
+void addSplit(Checker& ck, const char* name, SplitFn fn, TK input, std::span<const Formal> outputs) {
+    struct SplitData { SplitFn fn; TK input; std::span<const Formal> outputs; };
+    ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [fn, input, outputs] = self.data<SplitData>();
         Checked in;
         bool haveIn = false;
         std::vector<Checked> targets(outputs.size());
@@ -185,7 +193,7 @@ void addSplit(Checker& ck, const char* name, SplitFn fn, TK input, std::vector<c
             }
             size_t idx = outputs.size();
             for (size_t j = 0; j < outputs.size(); ++j)
-                if (nm == outputs[j]) idx = j;
+                if (nm == outputs[j].names) idx = j;
             if (idx == outputs.size()) {
                 ck.error(diag::E0302, arg.loc, fmt::format("'{}' has no parameter '{}'", call.name, arg.name));
                 return ck.bad(call.loc);
@@ -215,11 +223,11 @@ void addSplit(Checker& ck, const char* name, SplitFn fn, TK input, std::vector<c
             if (!given[j]) continue;
             const Checked& t = targets[j];
             if (!t.isPlace || t.readOnly) {
-                ck.error(diag::E0206, t.loc, fmt::format("output '{}' of '{}' needs a variable that can be written", outputs[j], call.name));
+                ck.error(diag::E0206, t.loc, fmt::format("output '{}' of '{}' needs a variable that can be written", outputs[j].names, call.name));
                 return ck.bad(call.loc);
             }
             if (!sema::isInteger(t.type->kind) && !sema::isBitString(t.type->kind)) {
-                ck.error(diag::E0201, t.loc, fmt::format("output '{}' of '{}' must be an integer variable, not {}", outputs[j], call.name, sema::typeName(t.type)));
+                ck.error(diag::E0201, t.loc, fmt::format("output '{}' of '{}' must be an integer variable, not {}", outputs[j].names, call.name, sema::typeName(t.type)));
                 return ck.bad(call.loc);
             }
             exec::Expr* field = sema::makeByRep<exec::FrameVar>(ck.pool(), Rep::I64, n->off + static_cast<uint32_t>(8 * slot));
@@ -234,7 +242,7 @@ void addSplit(Checker& ck, const char* name, SplitFn fn, TK input, std::vector<c
         r.node = n;
         r.hasCall = true;
         return r;
-    });
+    }, SplitData{fn, input, outputs}));
 }
 
 Checked checkDayOfWeek(Checker& ck, CallArgs& call) {
@@ -252,10 +260,12 @@ void registerTime(Checker& ck) {
     // The operators `+` and `-` on dates and times of day use the very rule of
     // ADD_DT_TIME / SUB_DT_TIME (issue 8, defect 9). The names contain a space,
     // so no ST program can call them.
+    struct DateOperatorData { TimeOp op; };
     for (TimeOp op : {TimeOp::Add, TimeOp::Sub})
-        ck.addBuiltin(op == TimeOp::Add ? Checker::kDateAddOperator : Checker::kDateSubOperator, [op](Checker& ck, CallArgs& call) -> Checked {
+        ck.addBuiltin(op == TimeOp::Add ? Checker::kDateAddOperator : Checker::kDateSubOperator, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+            const auto [op] = self.data<DateOperatorData>();
             return timeArithmetic(ck, call, op, call.args[0], call.args[1]);
-        });
+        }, DateOperatorData{op}));
     addNamedArith(ck, "ADD_TIME", TimeOp::Add, TK::Time, TK::Time);
     addNamedArith(ck, "ADD_LTIME", TimeOp::Add, TK::LTime, TK::LTime);
     addNamedArith(ck, "ADD_TOD_TIME", TimeOp::Add, TK::Tod, TK::Time);
@@ -279,26 +289,26 @@ void registerTime(Checker& ck) {
     addNamedArith(ck, "DIV_TIME", TimeOp::Div, TK::Time, TK::Void);
     addNamedArith(ck, "DIV_LTIME", TimeOp::Div, TK::LTime, TK::Void);
 
-    addConcat(ck, "CONCAT_DATE_TOD", CalendarFn::DateTod, TK::Dt, {{"IN1|DATE"}, {"IN2|TOD"}});
-    addConcat(ck, "CONCAT_LDATE_LTOD", CalendarFn::DateTod, TK::LDt, {{"IN1|DATE"}, {"IN2|TOD"}});
-    addConcat(ck, "CONCAT_DATE", CalendarFn::Date, TK::Date, {{"YEAR"}, {"MONTH"}, {"DAY"}});
-    addConcat(ck, "CONCAT_LDATE", CalendarFn::Date, TK::LDate, {{"YEAR"}, {"MONTH"}, {"DAY"}});
-    addConcat(ck, "CONCAT_TOD", CalendarFn::Tod, TK::Tod, {{"HOUR"}, {"MINUTE"}, {"SECOND"}, {"MILLISECOND"}});
-    addConcat(ck, "CONCAT_LTOD", CalendarFn::Tod, TK::LTod, {{"HOUR"}, {"MINUTE"}, {"SECOND"}, {"MILLISECOND"}});
-    addConcat(ck, "CONCAT_DT", CalendarFn::Dt, TK::Dt,
-              {{"YEAR"}, {"MONTH"}, {"DAY"}, {"HOUR"}, {"MINUTE"}, {"SECOND"}, {"MILLISECOND"}});
-    addConcat(ck, "CONCAT_LDT", CalendarFn::Dt, TK::LDt,
-              {{"YEAR"}, {"MONTH"}, {"DAY"}, {"HOUR"}, {"MINUTE"}, {"SECOND"}, {"MILLISECOND"}});
+    // The formals and outputs are static: the built-ins keep pointing at them.
+    static constexpr Formal kDateTodFormals[] = {{"IN1|DATE"}, {"IN2|TOD"}};
+    static constexpr Formal kDateFormals[] = {{"YEAR"}, {"MONTH"}, {"DAY"}};
+    static constexpr Formal kTodFormals[] = {{"HOUR"}, {"MINUTE"}, {"SECOND"}, {"MILLISECOND"}};
+    static constexpr Formal kDtFormals[] = {{"YEAR"}, {"MONTH"}, {"DAY"}, {"HOUR"}, {"MINUTE"}, {"SECOND"}, {"MILLISECOND"}};
+    addConcat(ck, "CONCAT_DATE_TOD", CalendarFn::DateTod, TK::Dt, kDateTodFormals);
+    addConcat(ck, "CONCAT_LDATE_LTOD", CalendarFn::DateTod, TK::LDt, kDateTodFormals);
+    addConcat(ck, "CONCAT_DATE", CalendarFn::Date, TK::Date, kDateFormals);
+    addConcat(ck, "CONCAT_LDATE", CalendarFn::Date, TK::LDate, kDateFormals);
+    addConcat(ck, "CONCAT_TOD", CalendarFn::Tod, TK::Tod, kTodFormals);
+    addConcat(ck, "CONCAT_LTOD", CalendarFn::Tod, TK::LTod, kTodFormals);
+    addConcat(ck, "CONCAT_DT", CalendarFn::Dt, TK::Dt, kDtFormals);
+    addConcat(ck, "CONCAT_LDT", CalendarFn::Dt, TK::LDt, kDtFormals);
 
-    const std::vector<const char*> dateFields = {"YEAR", "MONTH", "DAY"};
-    const std::vector<const char*> todFields = {"HOUR", "MINUTE", "SECOND", "MILLISECOND"};
-    const std::vector<const char*> dtFields = {"YEAR", "MONTH", "DAY", "HOUR", "MINUTE", "SECOND", "MILLISECOND"};
-    addSplit(ck, "SPLIT_DATE", SplitFn::Date, TK::Date, dateFields);
-    addSplit(ck, "SPLIT_LDATE", SplitFn::Date, TK::LDate, dateFields);
-    addSplit(ck, "SPLIT_TOD", SplitFn::Tod, TK::Tod, todFields);
-    addSplit(ck, "SPLIT_LTOD", SplitFn::Tod, TK::LTod, todFields);
-    addSplit(ck, "SPLIT_DT", SplitFn::Dt, TK::Dt, dtFields);
-    addSplit(ck, "SPLIT_LDT", SplitFn::Dt, TK::LDt, dtFields);
+    addSplit(ck, "SPLIT_DATE", SplitFn::Date, TK::Date, kDateFormals);
+    addSplit(ck, "SPLIT_LDATE", SplitFn::Date, TK::LDate, kDateFormals);
+    addSplit(ck, "SPLIT_TOD", SplitFn::Tod, TK::Tod, kTodFormals);
+    addSplit(ck, "SPLIT_LTOD", SplitFn::Tod, TK::LTod, kTodFormals);
+    addSplit(ck, "SPLIT_DT", SplitFn::Dt, TK::Dt, kDtFormals);
+    addSplit(ck, "SPLIT_LDT", SplitFn::Dt, TK::LDt, kDtFormals);
     ck.addBuiltin("DAY_OF_WEEK", checkDayOfWeek);
 }
 

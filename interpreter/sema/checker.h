@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "interpreter/ast/ast.h"
+#include "interpreter/sema/builtin_registry.h"
 #include "interpreter/sema/compile_options.h"
 #include "interpreter/sema/program_model.h"
 #include "interpreter/sema/symbols.h"
@@ -37,7 +38,6 @@ struct CallArgs {
     ast::Loc loc;
     std::vector<Checked> replaced;   // earlier values of an input named twice that call something (decision 0426)
 };
-using BuiltinFn = std::function<Checked(Checker&, CallArgs&)>;
 
 class Checker {
 public:
@@ -139,8 +139,8 @@ public:
     static constexpr const char* kDateAddOperator = "operator +";
     static constexpr const char* kDateSubOperator = "operator -";
     // Registry of built-in functions (name upper-case).
-    void addBuiltin(const std::string& upperName, BuiltinFn fn) { builtins_[upperName] = std::move(fn); }
-    bool hasBuiltin(const std::string& upperName) const { return builtinTable().count(upperName) != 0; }
+    void addBuiltin(std::string_view upperName, const BuiltinFn& fn) { builtins_.add(upperName, fn); }
+    bool hasBuiltin(std::string_view upperName) const { return builtinTable().find(upperName) != nullptr; }
     // What fills the registry (addBuiltin for every built-in), run on the
     // first look-up of a built-in name rather than before checking: a
     // program that names none does not build the ~600 entries (decision 0478).
@@ -484,11 +484,11 @@ private:
     std::vector<ast::GlobalList*> globalLists_;
     std::vector<ast::Configuration*> configurations_;
     std::map<std::string, VarSym*> globals_;
-    // The registry, filled by builtinRegistrar_ on the first call of
-    // builtinTable() (logically const: the entries are the same whenever
-    // they are built).
-    const std::map<std::string, BuiltinFn>& builtinTable() const;
-    std::map<std::string, BuiltinFn> builtins_;
+    // The registry (names to BuiltinFn values, decision 0487), filled by
+    // builtinRegistrar_ on the first call of builtinTable() (logically
+    // const: the entries are the same whenever they are built).
+    const BuiltinRegistry& builtinTable() const;
+    BuiltinRegistry builtins_;
     mutable std::function<void(Checker&)> builtinRegistrar_;
     std::map<std::string, std::map<std::string, std::string>> parameterAliases_;
     std::set<std::string> namespaces_;  // upper-case NAMESPACE paths and their prefixes ("A", "A.B")

@@ -240,7 +240,7 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
     return r;
 }
 
-const std::map<std::string, BuiltinFn>& Checker::builtinTable() const {
+const BuiltinRegistry& Checker::builtinTable() const {
     if (builtinRegistrar_) {
         // Taken out first: the registrar's addBuiltin calls must not run it again.
         std::function<void(Checker&)> registrar = std::move(builtinRegistrar_);
@@ -495,8 +495,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
         bool handled = false;
         Checked conv = checkConversionCall(key, e, handled);
         if (handled) return conv;
-        auto b = builtinTable().find(key);
-        if (b != builtinTable().end()) {
+        if (const BuiltinFn* b = builtinTable().find(key)) {
             CallArgs args;
             args.call = &e;
             args.name = key;
@@ -511,7 +510,7 @@ Checked Checker::checkCall(const ast::Expr& e, bool statement) {
                 args.args.push_back(c);
                 args.names.push_back(upper(a.name));
             }
-            Checked r = b->second(*this, args);
+            Checked r = (*b)(*this, args);
             if (r.ok) {
                 for (const auto& a : args.args) r.hasCall = r.hasCall || a.hasCall;
                 sequenceReplaced(*this, args, r);

@@ -269,14 +269,13 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
             }
             if (isDateLike(ka) || isDateLike(kb)) {
                 // One rule for `dt - T#345ms` and SUB_DT_TIME (decision 0093).
-                auto fn = builtinTable().find(op == ast::Op::Add ? kDateAddOperator : kDateSubOperator);
-                if (fn != builtinTable().end()) {
+                if (const BuiltinFn* fn = builtinTable().find(op == ast::Op::Add ? kDateAddOperator : kDateSubOperator)) {
                     CallArgs call;
                     call.name = opText(op);
                     call.args = {a, b};
                     call.names = {"", ""};
                     call.loc = loc;
-                    return fn->second(*this, call);
+                    return (*fn)(*this, call);
                 }
             }
             // Bring both operands to nanoseconds-or-unit of the result.

@@ -1,6 +1,8 @@
 // "Did you mean ...?" for the checker's name errors: the closest declared
 // name (one edit-distance implementation: interpreter/source/closest_name),
 // compared without case as ST does, returned in its declared spelling.
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "interpreter/sema/checker.h"
@@ -81,7 +83,11 @@ std::vector<std::string> Checker::functionNames() const {
     std::vector<std::string> out;
     for (const auto& [key, p] : pous_)
         if (p->kind == ast::PouKind::Function) out.push_back(p->name);
-    for (const auto& [key, fn] : builtinTable()) out.push_back(key);
+    // In name order, as the map they were kept in gave them (the suggestion
+    // prefers the first of equally close names).
+    std::vector<std::string> builtins = builtinTable().names();
+    std::sort(builtins.begin(), builtins.end());
+    for (std::string& key : builtins) out.push_back(std::move(key));
     for (const stdlib::LibraryName& n : stdlib::libraryNames())
         if (n.kind == 'F' || n.kind == 'X') out.emplace_back(n.written);
     return out;

@@ -9,6 +9,7 @@
 
 namespace strun::testing {
 
+using sema::BuiltinFn;
 using sema::CallArgs;
 using sema::Checked;
 using sema::Checker;
@@ -37,7 +38,10 @@ void registerAxUnit(Checker& ck, TestRegistry& reg) {
         if (!native_call::bindArgs(ck, call, {}, a)) return ck.bad(call.loc);
         return native_call::result(ck, ck.pool().make<exec::ConstInt>(0), TK::Void, call);
     });
-    ck.addBuiltin("AXUNIT_FAIL", [&reg](Checker& ck, CallArgs& call) -> Checked {
+    struct FailData { TestRegistry* regp; };
+    ck.addBuiltin("AXUNIT_FAIL", BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [regp] = self.data<FailData>();
+        TestRegistry& reg = *regp;
         std::vector<Checked> a;
         if (!native_call::bindArgs(ck, call, {{"message", true}, {"file", true}, {"line", true}}, a)) return ck.bad(call.loc);
         if (!a[0].type || !sema::isStringType(a[0].type->kind)) {
@@ -50,7 +54,7 @@ void registerAxUnit(Checker& ck, TestRegistry& reg) {
         n->messageType = a[0].type;
         if (!placeOf(ck, a[1], a[2], "axunit_Fail", n->place)) return ck.bad(call.loc);
         return native_call::result(ck, n, TK::Void, call);
-    });
+    }, FailData{&reg}));
     static const std::pair<const char*, AxCompareNode::Kind> comparisons[] = {
         {"__AXUNIT_EQUAL", AxCompareNode::Kind::Equal},
         {"__AXUNIT_NOT_EQUAL", AxCompareNode::Kind::NotEqual},
@@ -60,7 +64,10 @@ void registerAxUnit(Checker& ck, TestRegistry& reg) {
     for (const auto& [name, kind] : comparisons) {
         const AxCompareNode::Kind k = kind;
         const char* shown = name;
-        ck.addBuiltin(name, [&reg, k, shown](Checker& ck, CallArgs& call) -> Checked {
+        struct CompareData { TestRegistry* regp; AxCompareNode::Kind k; const char* shown; };
+        ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+            const auto [regp, k, shown] = self.data<CompareData>();
+            TestRegistry& reg = *regp;
             std::vector<Checked> a;
             if (!native_call::bindArgs(ck, call, {{"a", true}, {"b", true}, {"file", true}, {"line", true}}, a)) return ck.bad(call.loc);
             // The ST assertions pass two values of one elementary type (their overload's).
@@ -78,7 +85,7 @@ void registerAxUnit(Checker& ck, TestRegistry& reg) {
             n->b = {y.node, y.type};
             if (!placeOf(ck, a[2], a[3], shown, n->place)) return ck.bad(call.loc);
             return native_call::result(ck, n, TK::Void, call);
-        });
+        }, CompareData{&reg, k, shown}));
     }
 }
 

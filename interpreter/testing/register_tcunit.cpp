@@ -11,6 +11,7 @@
 
 namespace strun::testing {
 
+using sema::BuiltinFn;
 using sema::CallArgs;
 using sema::Checked;
 using sema::Checker;
@@ -124,7 +125,10 @@ bool arrayOperand(Checker& ck, const Checked& a, TK kind, size_t dims, const Cal
 
 void registerTestControl(Checker& ck, TestRegistry& reg) {
     for (bool ordered : {false, true}) {
-        ck.addBuiltin(ordered ? "TEST_ORDERED" : "TEST", [&reg, ordered](Checker& ck, CallArgs& call) -> Checked {
+        struct TestData { TestRegistry* regp; bool ordered; };
+        ck.addBuiltin(ordered ? "TEST_ORDERED" : "TEST", BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+            const auto [regp, ordered] = self.data<TestData>();
+            TestRegistry& reg = *regp;
             std::vector<Checked> a;
             if (!bindArgs(ck, call, {{"TestName", true}}, a)) return ck.bad(call.loc);
             auto* n = ck.pool().make<BeginTestNode>();
@@ -138,17 +142,23 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
                                                        strnlen(reinterpret_cast<const char*>(lit->bytes.data()), lit->bytes.size())),
                                            call.loc.file, call.loc.line});
             return result(ck, n, ordered ? TK::Bool : TK::Void, call);
-        });
+        }, TestData{&reg, ordered}));
     }
-    ck.addBuiltin("TEST_FINISHED", [&reg](Checker& ck, CallArgs& call) -> Checked {
+    struct RegistryData { TestRegistry* regp; };
+    ck.addBuiltin("TEST_FINISHED", BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [regp] = self.data<RegistryData>();
+        TestRegistry& reg = *regp;
         std::vector<Checked> a;
         if (!bindArgs(ck, call, {}, a)) return ck.bad(call.loc);
         auto* n = ck.pool().make<FinishTestNode>();
         n->reg = &reg;
         return result(ck, n, TK::Bool, call);
-    });
+    }, RegistryData{&reg}));
     for (bool query : {false, true}) {
-        ck.addBuiltin(query ? "IS_TEST_FINISHED" : "TEST_FINISHED_NAMED", [&reg, query](Checker& ck, CallArgs& call) -> Checked {
+        struct FinishedData { TestRegistry* regp; bool query; };
+        ck.addBuiltin(query ? "IS_TEST_FINISHED" : "TEST_FINISHED_NAMED", BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+            const auto [regp, query] = self.data<FinishedData>();
+            TestRegistry& reg = *regp;
             std::vector<Checked> a;
             if (!bindArgs(ck, call, {{"TestName", true}}, a)) return ck.bad(call.loc);
             Expr* name = nullptr;
@@ -166,10 +176,13 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
             n->name = name;
             n->nameType = type;
             return result(ck, n, TK::Bool, call);
-        });
+        }, FinishedData{&reg, query}));
     }
     for (bool inSequence : {false, true}) {
-        ck.addBuiltin(inSequence ? "RUN_IN_SEQUENCE" : "RUN", [&reg, inSequence](Checker& ck, CallArgs& call) -> Checked {
+        struct RunData { TestRegistry* regp; bool inSequence; };
+        ck.addBuiltin(inSequence ? "RUN_IN_SEQUENCE" : "RUN", BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+            const auto [regp, inSequence] = self.data<RunData>();
+            TestRegistry& reg = *regp;
             std::vector<Checked> a;
             // RUN_IN_SEQUENCE(TimeBetweenTestSuitesExecution) in TcUnit 1.1 and CfUnit.
             bool ok = inSequence ? bindArgs(ck, call, {{"TimeBetweenTestSuitesExecution", false}}, a) : bindArgs(ck, call, {}, a);
@@ -189,11 +202,14 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
                 n->scale = d.type->kind == TK::Time ? 1000000 : 1;
             }
             return result(ck, n, TK::Void, call);
-        });
+        }, RunData{&reg, inSequence}));
     }
     // AWAIT_ASSERTIONS(AwaitTime) / TIMEOUT_FOR_EACH_TEST(Timeout): a duration.
     for (bool await : {true, false}) {
-        ck.addBuiltin(await ? "AWAIT_ASSERTIONS" : "TIMEOUT_FOR_EACH_TEST", [&reg, await](Checker& ck, CallArgs& call) -> Checked {
+        struct TimeoutData { TestRegistry* regp; bool await; };
+        ck.addBuiltin(await ? "AWAIT_ASSERTIONS" : "TIMEOUT_FOR_EACH_TEST", BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+            const auto [regp, await] = self.data<TimeoutData>();
+            TestRegistry& reg = *regp;
             std::vector<Checked> a;
             if (!bindArgs(ck, call, {{await ? "AwaitTime" : "Timeout", true}}, a)) return ck.bad(call.loc);
             Checked d = ck.settle(a[0]);
@@ -215,7 +231,7 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
             n->duration = d.node;
             n->scale = scale;
             return result(ck, n, TK::Void, call);
-        });
+        }, TimeoutData{&reg, await}));
     }
     // The natives behind FB_TestSuite's query methods (stdlib/st/tcunit.st).
     static const std::pair<const char*, SuiteQueryNode::What> queries[] = {
@@ -228,7 +244,10 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
     };
     for (const auto& [name, what] : queries) {
         const SuiteQueryNode::What w = what;
-        ck.addBuiltin(name, [&reg, w](Checker& ck, CallArgs& call) -> Checked {
+        struct QueryData { TestRegistry* regp; SuiteQueryNode::What w; };
+        ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+            const auto [regp, w] = self.data<QueryData>();
+            TestRegistry& reg = *regp;
             std::vector<Checked> a;
             const bool named = w == SuiteQueryNode::What::TestFinished;
             bool ok = named ? bindArgs(ck, call, {{"Suite", true}, {"TestName", true}}, a) : bindArgs(ck, call, {{"Suite", true}}, a);
@@ -244,9 +263,12 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
             if (named && !stringInput(ck, a[1], call, "TestName", n->name, n->nameType)) return ck.bad(call.loc);
             const bool boolean = w == SuiteQueryNode::What::AllFinished || named;
             return result(ck, n, boolean ? TK::Bool : TK::UInt, call);
-        });
+        }, QueryData{&reg, w}));
     }
-    ck.addBuiltin("TCUNIT_ADSLOGSTR", [&reg](Checker& ck, CallArgs& call) -> Checked {
+    struct LogData { TestRegistry* regp; };
+    ck.addBuiltin("TCUNIT_ADSLOGSTR", BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [regp] = self.data<LogData>();
+        TestRegistry& reg = *regp;
         std::vector<Checked> a;
         if (!bindArgs(ck, call, {{"msgCtrlMask", false}, {"msgFmtStr", true}, {"strArg", false}}, a)) return ck.bad(call.loc);
         auto* n = ck.pool().make<AdsLogNode>();
@@ -260,12 +282,15 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
             !stringInput(ck, a[2], call, "strArg", n->arg, n->argType))
             return ck.bad(call.loc);
         return result(ck, n, TK::DInt, call);
-    });
+    }, LogData{&reg}));
 }
 
 void registerAssertions(Checker& ck, TestRegistry& reg) {
     for (bool expected : {true, false}) {
-        ck.addBuiltin(expected ? "ASSERTTRUE" : "ASSERTFALSE", [&reg, expected](Checker& ck, CallArgs& call) -> Checked {
+        struct AssertBoolData { TestRegistry* regp; bool expected; };
+        ck.addBuiltin(expected ? "ASSERTTRUE" : "ASSERTFALSE", BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+            const auto [regp, expected] = self.data<AssertBoolData>();
+            TestRegistry& reg = *regp;
             std::vector<Checked> a;
             if (!bindArgs(ck, call, {{"Condition", true}, {"Message", false}}, a)) return ck.bad(call.loc);
             auto* n = ck.pool().make<AssertConditionNode>();
@@ -275,10 +300,13 @@ void registerAssertions(Checker& ck, TestRegistry& reg) {
             n->condition = cond.node;
             n->expected = expected;
             return result(ck, n, TK::Void, call);
-        });
+        }, AssertBoolData{&reg, expected}));
     }
     // AssertEquals(Expected, Actual, Message): any type; compared by type class, size and bytes.
-    ck.addBuiltin("ASSERTEQUALS", [&reg](Checker& ck, CallArgs& call) -> Checked {
+    struct AssertEqualsData { TestRegistry* regp; };
+    ck.addBuiltin("ASSERTEQUALS", BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [regp] = self.data<AssertEqualsData>();
+        TestRegistry& reg = *regp;
         std::vector<Checked> a;
         if (!bindArgs(ck, call, {{"Expected", true}, {"Actual", true}, {"Message", false}}, a)) return ck.bad(call.loc);
         auto* n = ck.pool().make<AssertEqualsNode>();
@@ -304,11 +332,19 @@ void registerAssertions(Checker& ck, TestRegistry& reg) {
         n->expected = {e.node, e.type};
         n->actual = {v.node, v.type};
         return result(ck, n, TK::Void, call);
-    });
+    }, AssertEqualsData{&reg}));
+    // The names are built in one buffer: the registry copies them.
+    static constexpr const char* kArrayPrefixes[] = {"ASSERTARRAYEQUALS_", "ASSERTARRAY2DEQUALS_", "ASSERTARRAY3DEQUALS_"};
+    std::string name;
+    name.reserve(64);
     for (const auto& [typeName, kind] : assertTypes()) {
         const TK k = kind;
         const bool real = k == TK::Real || k == TK::LReal;
-        ck.addBuiltin(std::string("ASSERTEQUALS_") + typeName, [&reg, k, real](Checker& ck, CallArgs& call) -> Checked {
+        struct AssertTypedData { TestRegistry* regp; TK k; bool real; };
+        name.assign("ASSERTEQUALS_").append(typeName);
+        ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+            const auto [regp, k, real] = self.data<AssertTypedData>();
+            TestRegistry& reg = *regp;
             std::vector<Checked> a;
             bool ok = real ? bindArgs(ck, call, {{"Expected", true}, {"Actual", true}, {"Delta", false}, {"Message", false}}, a)
                            : bindArgs(ck, call, {{"Expected", true}, {"Actual", true}, {"Message", false}}, a);
@@ -319,10 +355,13 @@ void registerAssertions(Checker& ck, TestRegistry& reg) {
             if (real && !deltaInput(ck, a[2], ck.types().elementary(k), call, n->delta)) return ck.bad(call.loc);
             // Without a Delta TcUnit compares within 0: equal values pass.
             return result(ck, n, TK::Void, call);
-        });
+        }, AssertTypedData{&reg, k, real}));
         for (size_t dims = 1; dims <= 3; ++dims) {
-            std::string name = dims == 1 ? "ASSERTARRAYEQUALS_" : fmt::format("ASSERTARRAY{}DEQUALS_", dims);
-            ck.addBuiltin(name + typeName, [&reg, k, real, dims](Checker& ck, CallArgs& call) -> Checked {
+            struct AssertArrayData { TestRegistry* regp; TK k; bool real; size_t dims; };
+            name.assign(kArrayPrefixes[dims - 1]).append(typeName);
+            ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+                const auto [regp, k, real, dims] = self.data<AssertArrayData>();
+                TestRegistry& reg = *regp;
                 std::vector<Checked> a;
                 bool ok = real ? bindArgs(ck, call, {{"Expecteds", true}, {"Actuals", true}, {"Delta", false}, {"Message", false}}, a)
                                : bindArgs(ck, call, {{"Expecteds", true}, {"Actuals", true}, {"Message", false}}, a);
@@ -335,7 +374,7 @@ void registerAssertions(Checker& ck, TestRegistry& reg) {
                     return ck.bad(call.loc);
                 if (real && !deltaInput(ck, a[2], ck.types().elementary(k), call, n->delta)) return ck.bad(call.loc);
                 return result(ck, n, TK::Void, call);
-            });
+            }, AssertArrayData{&reg, k, real, dims}));
         }
     }
 }

@@ -158,9 +158,20 @@ Checked argOf(Checker& ck, const Checked& a, Arg kind, const std::string& fn) {
     return a;
 }
 
+// A file operation's argument kinds (at most three), held by value in its BuiltinFn.
+struct ArgKinds {
+    Arg kind[3];
+    size_t count;
+    size_t size() const { return count; }
+    Arg operator[](size_t k) const { return kind[k]; }
+};
+
 void addFileOp(Checker& ck, const char* name, FileOp op, std::initializer_list<Arg> kinds) {
-    std::vector<Arg> args(kinds);
-    ck.addBuiltin(name, [op, args](Checker& ck, CallArgs& call) -> Checked {
+    ArgKinds args{};
+    for (Arg k : kinds) args.kind[args.count++] = k;
+    struct FileOpData { FileOp op; ArgKinds args; };
+    ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [op, args] = self.data<FileOpData>();
         std::vector<Checked> a;
         bool bound = args.size() == 1   ? bindFixed(ck, call, {{"A"}}, a)
                      : args.size() == 2 ? bindFixed(ck, call, {{"A"}, {"B"}}, a)
@@ -177,7 +188,7 @@ void addFileOp(Checker& ck, const char* name, FileOp op, std::initializer_list<A
                         : op == FileOp::DirEntrySize || op == FileOp::DirEntryTime ? TK::LInt
                                                                                    : TK::DInt;
         return makeResult(ck, n, ck.types().elementary(kind), call, a, false);
-    });
+    }, FileOpData{op, args}));
 }
 
 }  // namespace

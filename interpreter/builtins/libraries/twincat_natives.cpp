@@ -77,7 +77,9 @@ struct AdsLogNode final : exec::Expr {
 };
 
 void addAdsLog(Checker& ck, const char* name, LogArg kind) {
-    ck.addBuiltin(name, [kind](Checker& ck, CallArgs& call) -> Checked {
+    struct AdsLogData { LogArg kind; };
+    ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [kind] = self.data<AdsLogData>();
         std::vector<Checked> a;
         if (!bindFixed(ck, call, {{"MSGCTRLMASK"}, {"MSGFMTSTR"}, {kind == LogArg::String ? "STRARG" : kind == LogArg::Dint ? "DINTARG" : "LREALARG"}}, a))
             return ck.bad(call.loc);
@@ -93,7 +95,7 @@ void addAdsLog(Checker& ck, const char* name, LogArg kind) {
         }
         auto* n = ck.pool().make<AdsLogNode>(mask.node, format.node, arg.node, kind, ck.site(call.loc));
         return makeResult(ck, n, ck.types().elementary(TK::DInt), call, a, false);
-    });
+    }, AdsLogData{kind}));
 }
 
 // The DC clock counts ns since 2000-01-01-00:00:00; FILETIME (F_GetTaskTime)
@@ -171,11 +173,13 @@ struct StringToDcTimeNode final : exec::Expr {
 };
 
 void addClock(Checker& ck, const char* name, Clock which) {
-    ck.addBuiltin(name, [which](Checker& ck, CallArgs& call) -> Checked {
+    struct ClockData { Clock which; };
+    ck.addBuiltin(name, BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
+        const auto [which] = self.data<ClockData>();
         std::vector<Checked> a;
         if (!bindFixed(ck, call, {}, a)) return ck.bad(call.loc);
         return makeResult(ck, ck.pool().make<TwinCatClockNode>(which), ck.types().elementary(TK::ULInt), call, a, false);
-    });
+    }, ClockData{which}));
 }
 
 struct TaskIndexNode final : exec::Expr {
