@@ -9,6 +9,7 @@
 
 #include <typeinfo>
 
+#include "interpreter/exec/const_divisor.h"
 #include "interpreter/exec/stmt_nodes.h"
 
 namespace strun::exec {
@@ -47,6 +48,12 @@ template <class T>
 struct OpConst {
     T k;
     T get(Ctx&) const { return k; }
+};
+// The constant right operand of an integer / or MOD (neither 0 nor -1):
+// evalBin divides by multiplying (decision 0490).
+template <class T>
+struct OpDivisor {
+    ConstDivisor<T> divisor;
 };
 // a[i + k]: an element of storage type T of a one-dimensional array variable
 // of the instance or frame, the subscript a DINT variable of the instance or
@@ -121,8 +128,13 @@ inline auto applyBin(T a, T b) {
 template <class T, BinOp OP, class L, class R>
 inline auto evalBin(Ctx& c, const L& l, const R& r) {
     T a = l.get(c);
-    T b = r.get(c);
-    return applyBin<T, OP>(a, b);
+    if constexpr (std::is_same_v<R, OpDivisor<T>>) {
+        static_assert(OP == BinOp::Div || OP == BinOp::Mod);
+        return wrapI(OP == BinOp::Div ? r.divisor.quotient(a) : r.divisor.remainder(a));
+    } else {
+        T b = r.get(c);
+        return applyBin<T, OP>(a, b);
+    }
 }
 
 // REAL/LREAL -> integer of `bits` bits (signed or not), rounded half to even

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "interpreter/exec/const_divisor.h"
 #include "interpreter/exec/value_nodes.h"
 
 namespace strun::exec {
@@ -49,8 +50,7 @@ STRUN_INT_BINOP(XorI, a ^ b)
 #undef STRUN_INT_BINOP
 
 // The same operators with a constant right operand (x + 1, i MOD 7, n * 2):
-// one virtual call less, and / and MOD skip the zero and -1 checks the
-// checker already did.
+// one virtual call less.
 #define STRUN_INT_BINOP_CONST(NAME, EXPR)                                                     \
     template <class T>                                                                        \
     struct NAME final : IntOperator {                                                         \
@@ -65,12 +65,26 @@ STRUN_INT_BINOP(XorI, a ^ b)
 STRUN_INT_BINOP_CONST(AddIK, static_cast<U<T>>(static_cast<U<T>>(a) + static_cast<U<T>>(b)))
 STRUN_INT_BINOP_CONST(SubIK, static_cast<U<T>>(static_cast<U<T>>(a) - static_cast<U<T>>(b)))
 STRUN_INT_BINOP_CONST(MulIK, static_cast<U<T>>(static_cast<W<T>>(a) * static_cast<W<T>>(b)))
-STRUN_INT_BINOP_CONST(DivIK, a / b)  // b is neither 0 nor -1
-STRUN_INT_BINOP_CONST(ModIK, a % b)  // b is neither 0 nor -1
 STRUN_INT_BINOP_CONST(AndIK, a & b)
 STRUN_INT_BINOP_CONST(OrIK, a | b)
 STRUN_INT_BINOP_CONST(XorIK, a ^ b)
 #undef STRUN_INT_BINOP_CONST
+
+// / and MOD by a constant that is neither 0 nor -1: by multiplying (decision 0490).
+template <class T>
+struct DivIK final : IntOperator {
+    Expr* l;
+    ConstDivisor<T> b;
+    DivIK(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}
+    int64_t i(Ctx& c) override { return wrapI(b.quotient(static_cast<T>(l->i(c)))); }
+};
+template <class T>
+struct ModIK final : IntOperator {
+    Expr* l;
+    ConstDivisor<T> b;
+    ModIK(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}
+    int64_t i(Ctx& c) override { return wrapI(b.remainder(static_cast<T>(l->i(c)))); }
+};
 
 // Changes the unit of a time/date value: * mul, or / div (toward zero) then * mul.
 struct ScaleUnits final : Expr {

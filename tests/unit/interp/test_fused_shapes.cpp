@@ -296,7 +296,8 @@ END_PROGRAM
     REQUIRE(body.size() == 4);
     using N32 = exec::OpNode<int32_t>;
     using K32 = exec::OpConst<int32_t>;
-    auto* store = dynamic_cast<exec::AssignBinLocal<int32_t, exec::BinOp::Mod, N32, K32, false>*>(body[0]);
+    using D32 = exec::OpDivisor<int32_t>;  // a constant divisor (decision 0490)
+    auto* store = dynamic_cast<exec::AssignBinLocal<int32_t, exec::BinOp::Mod, N32, D32, false>*>(body[0]);
     REQUIRE(store);
     // y * 31 + ... + 1: the + 1 over the general AddI is a fused node too.
     auto* plusOne = dynamic_cast<exec::FusedBin<int32_t, exec::BinOp::Add, N32, K32>*>(store->l.e);
@@ -304,8 +305,8 @@ END_PROGRAM
     CHECK(dynamic_cast<exec::AddI<int32_t>*>(plusOne->l.e));
     auto* test = dynamic_cast<exec::IfCompare<int32_t, exec::BinOp::Eq, N32, K32>*>(body[1]);
     REQUIRE(test);
-    CHECK(dynamic_cast<exec::FusedBin<int32_t, exec::BinOp::Mod, N32, K32>*>(test->l.e));
-    CHECK(is<exec::AssignBinLocal<int64_t, exec::BinOp::Mod, exec::OpNode<int64_t>, exec::OpConst<int64_t>, false>>(body[2]));
+    CHECK(dynamic_cast<exec::FusedBin<int32_t, exec::BinOp::Mod, N32, D32>*>(test->l.e));
+    CHECK(is<exec::AssignBinLocal<int64_t, exec::BinOp::Mod, exec::OpNode<int64_t>, exec::OpDivisor<int64_t>, false>>(body[2]));
     // An INT variable in DINT arithmetic is no operator: x := x + 1 keeps its own node.
     CHECK(is<exec::AddConstLocal<int16_t, exec::BaseKind::Self>>(body[3]));
 }
