@@ -9,7 +9,7 @@
 
 #include <typeinfo>
 
-#include "interpreter/exec/const_divisor.h"
+#include "interpreter/exec/power_of_two_divisor.h"
 #include "interpreter/exec/stmt_nodes.h"
 
 namespace strun::exec {
@@ -49,13 +49,12 @@ struct OpConst {
     T k;
     T get(Ctx&) const { return k; }
 };
-// The constant right operand of an integer / or MOD (neither 0 nor -1):
-// evalBin divides by multiplying (decision 0490).
+// The constant right operand +-2^k (k >= 1) of an integer / or MOD: evalBin
+// divides by shifts (decision 0490).
 template <class T>
-struct OpDivisor {
-    ConstDivisor<T> divisor;
-};
-// a[i + k]: an element of storage type T of a one-dimensional array variable
+struct OpPow2Divisor {
+    PowerOfTwoDivisor<T> divisor;
+};// a[i + k]: an element of storage type T of a one-dimensional array variable
 // of the instance or frame, the subscript a DINT variable of the instance or
 // frame plus a constant, computed in DINT with wrap-around and bounds-checked
 // exactly as Index1Var does (value_nodes.h): out of range reports
@@ -128,7 +127,7 @@ inline auto applyBin(T a, T b) {
 template <class T, BinOp OP, class L, class R>
 inline auto evalBin(Ctx& c, const L& l, const R& r) {
     T a = l.get(c);
-    if constexpr (std::is_same_v<R, OpDivisor<T>>) {
+    if constexpr (std::is_same_v<R, OpPow2Divisor<T>>) {
         static_assert(OP == BinOp::Div || OP == BinOp::Mod);
         return wrapI(OP == BinOp::Div ? r.divisor.quotient(a) : r.divisor.remainder(a));
     } else {

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <type_traits>
 
-#include "interpreter/exec/const_divisor.h"
+#include "interpreter/exec/power_of_two_divisor.h"
 #include "interpreter/exec/value_nodes.h"
 
 namespace strun::exec {
@@ -24,7 +24,7 @@ template <class T>
 using W = std::common_type_t<U<T>, unsigned>;
 
 // The general integer operators (the two-operand ones below, their
-// constant-operand forms, DivI, ModI): a fused node with a constant reads
+// constant-operand forms, DivPow2K, ModPow2K, DivI, ModI): a fused node with a constant reads
 // one of them through OpNode as it reads a fused operator (decision 0486),
 // so that `(a + b) MOD k` and the store of it need no node between them.
 struct IntOperator : Expr {};
@@ -50,7 +50,8 @@ STRUN_INT_BINOP(XorI, a ^ b)
 #undef STRUN_INT_BINOP
 
 // The same operators with a constant right operand (x + 1, i MOD 7, n * 2):
-// one virtual call less.
+// one virtual call less, and / and MOD skip the zero and -1 checks the
+// checker already did.
 #define STRUN_INT_BINOP_CONST(NAME, EXPR)                                                     \
     template <class T>                                                                        \
     struct NAME final : IntOperator {                                                         \
@@ -65,24 +66,26 @@ STRUN_INT_BINOP(XorI, a ^ b)
 STRUN_INT_BINOP_CONST(AddIK, static_cast<U<T>>(static_cast<U<T>>(a) + static_cast<U<T>>(b)))
 STRUN_INT_BINOP_CONST(SubIK, static_cast<U<T>>(static_cast<U<T>>(a) - static_cast<U<T>>(b)))
 STRUN_INT_BINOP_CONST(MulIK, static_cast<U<T>>(static_cast<W<T>>(a) * static_cast<W<T>>(b)))
+STRUN_INT_BINOP_CONST(DivIK, a / b)  // b is neither 0 nor -1
+STRUN_INT_BINOP_CONST(ModIK, a % b)  // b is neither 0 nor -1
 STRUN_INT_BINOP_CONST(AndIK, a & b)
 STRUN_INT_BINOP_CONST(OrIK, a | b)
 STRUN_INT_BINOP_CONST(XorIK, a ^ b)
 #undef STRUN_INT_BINOP_CONST
 
-// / and MOD by a constant that is neither 0 nor -1: by multiplying (decision 0490).
+// / and MOD by a constant +-2^k (k >= 1): by shifts (decision 0490).
 template <class T>
-struct DivIK final : IntOperator {
+struct DivPow2K final : IntOperator {
     Expr* l;
-    ConstDivisor<T> b;
-    DivIK(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}
+    PowerOfTwoDivisor<T> b;
+    DivPow2K(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}
     int64_t i(Ctx& c) override { return wrapI(b.quotient(static_cast<T>(l->i(c)))); }
 };
 template <class T>
-struct ModIK final : IntOperator {
+struct ModPow2K final : IntOperator {
     Expr* l;
-    ConstDivisor<T> b;
-    ModIK(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}
+    PowerOfTwoDivisor<T> b;
+    ModPow2K(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}
     int64_t i(Ctx& c) override { return wrapI(b.remainder(static_cast<T>(l->i(c)))); }
 };
 
