@@ -9,6 +9,7 @@
 
 #include <typeinfo>
 
+#include "interpreter/exec/power_of_two_divisor.h"
 #include "interpreter/exec/stmt_nodes.h"
 
 namespace strun::exec {
@@ -48,7 +49,12 @@ struct OpConst {
     T k;
     T get(Ctx&) const { return k; }
 };
-// a[i + k]: an element of storage type T of a one-dimensional array variable
+// The constant right operand +-2^k (k >= 1) of an integer / or MOD: evalBin
+// divides by shifts (decision 0490).
+template <class T>
+struct OpPow2Divisor {
+    PowerOfTwoDivisor<T> divisor;
+};// a[i + k]: an element of storage type T of a one-dimensional array variable
 // of the instance or frame, the subscript a DINT variable of the instance or
 // frame plus a constant, computed in DINT with wrap-around and bounds-checked
 // exactly as Index1Var does (value_nodes.h): out of range reports
@@ -121,8 +127,13 @@ inline auto applyBin(T a, T b) {
 template <class T, BinOp OP, class L, class R>
 inline auto evalBin(Ctx& c, const L& l, const R& r) {
     T a = l.get(c);
-    T b = r.get(c);
-    return applyBin<T, OP>(a, b);
+    if constexpr (std::is_same_v<R, OpPow2Divisor<T>>) {
+        static_assert(OP == BinOp::Div || OP == BinOp::Mod);
+        return wrapI(OP == BinOp::Div ? r.divisor.quotient(a) : r.divisor.remainder(a));
+    } else {
+        T b = r.get(c);
+        return applyBin<T, OP>(a, b);
+    }
 }
 
 // REAL/LREAL -> integer of `bits` bits (signed or not), rounded half to even

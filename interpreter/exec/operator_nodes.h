@@ -7,6 +7,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "interpreter/exec/power_of_two_divisor.h"
 #include "interpreter/exec/value_nodes.h"
 
 namespace strun::exec {
@@ -23,7 +24,7 @@ template <class T>
 using W = std::common_type_t<U<T>, unsigned>;
 
 // The general integer operators (the two-operand ones below, their
-// constant-operand forms, DivI, ModI): a fused node with a constant reads
+// constant-operand forms, DivPow2K, ModPow2K, DivI, ModI): a fused node with a constant reads
 // one of them through OpNode as it reads a fused operator (decision 0486),
 // so that `(a + b) MOD k` and the store of it need no node between them.
 struct IntOperator : Expr {};
@@ -71,6 +72,22 @@ STRUN_INT_BINOP_CONST(AndIK, a & b)
 STRUN_INT_BINOP_CONST(OrIK, a | b)
 STRUN_INT_BINOP_CONST(XorIK, a ^ b)
 #undef STRUN_INT_BINOP_CONST
+
+// / and MOD by a constant +-2^k (k >= 1): by shifts (decision 0490).
+template <class T>
+struct DivPow2K final : IntOperator {
+    Expr* l;
+    PowerOfTwoDivisor<T> b;
+    DivPow2K(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}
+    int64_t i(Ctx& c) override { return wrapI(b.quotient(static_cast<T>(l->i(c)))); }
+};
+template <class T>
+struct ModPow2K final : IntOperator {
+    Expr* l;
+    PowerOfTwoDivisor<T> b;
+    ModPow2K(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}
+    int64_t i(Ctx& c) override { return wrapI(b.remainder(static_cast<T>(l->i(c)))); }
+};
 
 // Changes the unit of a time/date value: * mul, or / div (toward zero) then * mul.
 struct ScaleUnits final : Expr {

@@ -362,6 +362,10 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
     if (!real && y.isConst && !x.isConst) {
         int64_t k = y.constInt;
         bool safeDivisor = k != 0 && !(k == -1 && isSignedInt(integerView(t->kind)));
+        // +-2^k divides by shifts (decision 0490); the magnitude as the
+        // computation type sees the constant.
+        const uint64_t magnitude = k < 0 && isSignedInt(integerView(t->kind)) ? 0 - static_cast<uint64_t>(k) : static_cast<uint64_t>(k);
+        const bool powerOfTwo = magnitude >= 2 && (magnitude & (magnitude - 1)) == 0;
         exec::Expr* n = nullptr;
         switch (op) {
             case ast::Op::Add: n = fuseBinary(pool(), exec::BinOp::Add, rep, x.node, nullptr, k); break;
@@ -375,8 +379,12 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
             case ast::Op::Add: n = makeIntByRep<exec::AddIK>(pool(), rep, x.node, k); break;
             case ast::Op::Sub: n = makeIntByRep<exec::SubIK>(pool(), rep, x.node, k); break;
             case ast::Op::Mul: n = makeIntByRep<exec::MulIK>(pool(), rep, x.node, k); break;
-            case ast::Op::Div: if (safeDivisor) n = makeIntByRep<exec::DivIK>(pool(), rep, x.node, k); break;
-            case ast::Op::Mod: if (safeDivisor) n = makeIntByRep<exec::ModIK>(pool(), rep, x.node, k); break;
+            case ast::Op::Div:
+                if (safeDivisor) n = powerOfTwo ? makeIntByRep<exec::DivPow2K>(pool(), rep, x.node, k) : makeIntByRep<exec::DivIK>(pool(), rep, x.node, k);
+                break;
+            case ast::Op::Mod:
+                if (safeDivisor) n = powerOfTwo ? makeIntByRep<exec::ModPow2K>(pool(), rep, x.node, k) : makeIntByRep<exec::ModIK>(pool(), rep, x.node, k);
+                break;
             default: break;
         }
         if (n) {

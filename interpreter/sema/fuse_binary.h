@@ -52,6 +52,15 @@ std::optional<T> constOf(exec::Expr* e) {
 // The operand shapes (decision 0262): a variable with a variable, a
 // constant or any node; any node with a variable; a computed node with a
 // constant; for comparisons, two array elements (a[j] > a[j + 1]).
+// A fused node with a constant right operand; a divisor +-2^k divides by
+// shifts (decision 0490).
+template <class T, BinOp OP, class L>
+exec::Expr* makeWithConst(exec::NodePool& pool, L l, T k) {
+    if constexpr ((OP == BinOp::Div || OP == BinOp::Mod) && !std::is_floating_point_v<T>)
+        if (exec::PowerOfTwoDivisor<T>::fits(k)) return make<T, OP>(pool, l, exec::OpPow2Divisor<T>{exec::PowerOfTwoDivisor<T>(k)});
+    return make<T, OP>(pool, l, exec::OpConst<T>{k});
+}
+
 template <class T, BinOp OP>
 exec::Expr* fuseTyped(exec::NodePool& pool, exec::Expr* a, exec::Expr* b, T k) {
     Leaf<T> la = leafOf<T>(a);
@@ -61,7 +70,7 @@ exec::Expr* fuseTyped(exec::NodePool& pool, exec::Expr* a, exec::Expr* b, T k) {
     if (la.isVar())
         return withVar(la, [&](auto lv) -> exec::Expr* {
             if (rb.isVar()) return withVar(rb, [&](auto rv) { return make<T, OP>(pool, lv, rv); });
-            if (rb.kind == LeafKind::Const) return make<T, OP>(pool, lv, exec::OpConst<T>{rb.k});
+            if (rb.kind == LeafKind::Const) return makeWithConst<T, OP>(pool, lv, rb.k);
             return make<T, OP>(pool, lv, exec::OpNode<T>{b});
         });
     // k OP x with a commutative OP (3 * x, 0 = x): x OP k, the constant inline.
@@ -92,7 +101,7 @@ exec::Expr* fuseTyped(exec::NodePool& pool, exec::Expr* a, exec::Expr* b, T k) {
     }
     exec::OpNode<T> l{a};
     if (rb.isVar()) return withVar(rb, [&](auto rv) { return make<T, OP>(pool, l, rv); });
-    if (rb.kind == LeafKind::Const && computedOperand<T>(a)) return make<T, OP>(pool, l, exec::OpConst<T>{rb.k});
+    if (rb.kind == LeafKind::Const && computedOperand<T>(a)) return makeWithConst<T, OP>(pool, l, rb.k);
     return nullptr;
 }
 

@@ -309,3 +309,32 @@ END_PROGRAM
     // An INT variable in DINT arithmetic is no operator: x := x + 1 keeps its own node.
     CHECK(is<exec::AddConstLocal<int16_t, exec::BaseKind::Self>>(body[3]));
 }
+
+// Decision 0490: a constant divisor +-2^k is a shift operand of the fused
+// node and a DivPow2K/ModPow2K of the general ones; any other constant keeps
+// OpConst and DivIK/ModIK.
+TEST_CASE("a power-of-two constant divisor divides by shifts", "[fused]") {
+    auto c = compileSt(R"(
+PROGRAM Main
+VAR x : DINT := 7; y : DINT; l : LINT := 9; s : INT := 5; u : UDINT := 9; END_VAR
+y := x MOD 2;
+y := x / 7;
+l := l / -4;
+s := s MOD 8;
+u := u / 3;
+END_PROGRAM
+)");
+    REQUIRE(c->ok());
+    auto body = bodyOf(*c, "Main");
+    REQUIRE(body.size() == 5);
+    using VX = exec::OpVar<int32_t, exec::BaseKind::Self>;
+    CHECK(is<exec::AssignBinLocal<int32_t, exec::BinOp::Mod, VX, exec::OpPow2Divisor<int32_t>, false>>(body[0]));
+    CHECK(is<exec::AssignBinLocal<int32_t, exec::BinOp::Div, VX, exec::OpConst<int32_t>, false>>(body[1]));
+    CHECK(is<exec::AssignBinLocal<int64_t, exec::BinOp::Div, exec::OpVar<int64_t, exec::BaseKind::Self>, exec::OpPow2Divisor<int64_t>, false>>(body[2]));
+    auto* narrow = dynamic_cast<exec::AssignLocal<int16_t, false>*>(body[3]);
+    REQUIRE(narrow);
+    CHECK(dynamic_cast<exec::ModPow2K<int32_t>*>(narrow->value));
+    auto* wide = dynamic_cast<exec::AssignLocal<uint32_t, false>*>(body[4]);
+    REQUIRE(wide);
+    CHECK(dynamic_cast<exec::DivIK<uint32_t>*>(wide->value));
+}
