@@ -74,20 +74,20 @@ STRUN_INT_BINOP_CONST(XorIK, a ^ b)
 #undef STRUN_INT_BINOP_CONST
 
 // / and MOD by a constant +-2^k (k >= 1): by shifts (decision 0490).
-template <class T>
-struct DivPow2K final : IntOperator {
+template <class T, bool MOD>
+struct Pow2DivideK final : IntOperator {
     Expr* l;
     PowerOfTwoDivisor<T> b;
-    DivPow2K(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}
-    int64_t i(Ctx& c) override { return wrapI(b.quotient(static_cast<T>(l->i(c)))); }
+    Pow2DivideK(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}
+    int64_t i(Ctx& c) override {
+        T a = static_cast<T>(l->i(c));
+        return wrapI(MOD ? b.remainder(a) : b.quotient(a));
+    }
 };
 template <class T>
-struct ModPow2K final : IntOperator {
-    Expr* l;
-    PowerOfTwoDivisor<T> b;
-    ModPow2K(Expr* a, int64_t k) : l(a), b(static_cast<T>(k)) {}
-    int64_t i(Ctx& c) override { return wrapI(b.remainder(static_cast<T>(l->i(c)))); }
-};
+using DivPow2K = Pow2DivideK<T, false>;
+template <class T>
+using ModPow2K = Pow2DivideK<T, true>;
 
 // Changes the unit of a time/date value: * mul, or / div (toward zero) then * mul.
 struct ScaleUnits final : Expr {
