@@ -54,7 +54,8 @@ struct OpConst {
 template <class T>
 struct OpPow2Divisor {
     PowerOfTwoDivisor<T> divisor;
-};// a[i + k]: an element of storage type T of a one-dimensional array variable
+};
+// a[i + k]: an element of storage type T of a one-dimensional array variable
 // of the instance or frame, the subscript a DINT variable of the instance or
 // frame plus a constant, computed in DINT with wrap-around and bounds-checked
 // exactly as Index1Var does (value_nodes.h): out of range reports

@@ -24,8 +24,8 @@ template <class T>
 using W = std::common_type_t<U<T>, unsigned>;
 
 // The general integer operators (the two-operand ones below, their
-// constant-operand forms, DivPow2K, ModPow2K, DivI, ModI): a fused node with a constant reads
-// one of them through OpNode as it reads a fused operator (decision 0486),
+// constant-operand forms, DivPow2K, ModPow2K, DivI, ModI): a fused node with
+// a constant reads one of them through OpNode as it reads a fused operator (decision 0486),
 // so that `(a + b) MOD k` and the store of it need no node between them.
 struct IntOperator : Expr {};
 

@@ -15,6 +15,9 @@
 
 namespace strun::exec {
 
+// Whether a divisor of magnitude `m` is 2^k with k >= 1 (not 0 or 1).
+constexpr bool isPowerOfTwoDivisor(uint64_t m) { return m >= 2 && (m & (m - 1)) == 0; }
+
 template <class T>
 struct PowerOfTwoDivisor {
     static_assert(std::is_integral_v<T> && sizeof(T) <= 8);
@@ -23,10 +26,7 @@ struct PowerOfTwoDivisor {
     uint64_t negate = 0;   // all ones when the divisor is negative
 
     // Whether `k` is +-2^k with k >= 1 (not 1, 0 or, signed, -1).
-    static bool fits(T k) {
-        const uint64_t m = magnitude(k);
-        return m >= 2 && (m & (m - 1)) == 0;
-    }
+    static bool fits(T k) { return isPowerOfTwoDivisor(magnitude(k)); }
     PowerOfTwoDivisor() = default;
     explicit PowerOfTwoDivisor(T k)
         : shift(static_cast<uint8_t>(__builtin_ctzll(magnitude(k)))), low(magnitude(k) - 1),

@@ -365,7 +365,7 @@ Checked Checker::makeArith(ast::Op op, Checked a, Checked b, const ast::Loc& loc
         // +-2^k divides by shifts (decision 0490); the magnitude as the
         // computation type sees the constant.
         const uint64_t magnitude = k < 0 && isSignedInt(integerView(t->kind)) ? 0 - static_cast<uint64_t>(k) : static_cast<uint64_t>(k);
-        const bool powerOfTwo = magnitude >= 2 && (magnitude & (magnitude - 1)) == 0;
+        const bool powerOfTwo = exec::isPowerOfTwoDivisor(magnitude);
         exec::Expr* n = nullptr;
         switch (op) {
             case ast::Op::Add: n = fuseBinary(pool(), exec::BinOp::Add, rep, x.node, nullptr, k); break;

@@ -49,9 +49,6 @@ std::optional<T> constOf(exec::Expr* e) {
     return std::nullopt;
 }
 
-// The operand shapes (decision 0262): a variable with a variable, a
-// constant or any node; any node with a variable; a computed node with a
-// constant; for comparisons, two array elements (a[j] > a[j + 1]).
 // A fused node with a constant right operand; a divisor +-2^k divides by
 // shifts (decision 0490).
 template <class T, BinOp OP, class L>
@@ -61,6 +58,9 @@ exec::Expr* makeWithConst(exec::NodePool& pool, L l, T k) {
     return make<T, OP>(pool, l, exec::OpConst<T>{k});
 }
 
+// The operand shapes (decision 0262): a variable with a variable, a
+// constant or any node; any node with a variable; a computed node with a
+// constant; for comparisons, two array elements (a[j] > a[j + 1]).
 template <class T, BinOp OP>
 exec::Expr* fuseTyped(exec::NodePool& pool, exec::Expr* a, exec::Expr* b, T k) {
     Leaf<T> la = leafOf<T>(a);

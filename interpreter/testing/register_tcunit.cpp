@@ -123,6 +123,11 @@ bool arrayOperand(Checker& ck, const Checked& a, TK kind, size_t dims, const Cal
     return true;
 }
 
+// What a built-in that needs only the project's test registry holds.
+struct RegistryData {
+    TestRegistry* regp;
+};
+
 void registerTestControl(Checker& ck, TestRegistry& reg) {
     for (bool ordered : {false, true}) {
         struct TestData { TestRegistry* regp; bool ordered; };
@@ -144,7 +149,6 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
             return result(ck, n, ordered ? TK::Bool : TK::Void, call);
         }, TestData{&reg, ordered}));
     }
-    struct RegistryData { TestRegistry* regp; };
     ck.addBuiltin("TEST_FINISHED", BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
         const auto [regp] = self.data<RegistryData>();
         TestRegistry& reg = *regp;
@@ -265,9 +269,8 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
             return result(ck, n, boolean ? TK::Bool : TK::UInt, call);
         }, QueryData{&reg, w}));
     }
-    struct LogData { TestRegistry* regp; };
     ck.addBuiltin("TCUNIT_ADSLOGSTR", BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
-        const auto [regp] = self.data<LogData>();
+        const auto [regp] = self.data<RegistryData>();
         TestRegistry& reg = *regp;
         std::vector<Checked> a;
         if (!bindArgs(ck, call, {{"msgCtrlMask", false}, {"msgFmtStr", true}, {"strArg", false}}, a)) return ck.bad(call.loc);
@@ -282,7 +285,7 @@ void registerTestControl(Checker& ck, TestRegistry& reg) {
             !stringInput(ck, a[2], call, "strArg", n->arg, n->argType))
             return ck.bad(call.loc);
         return result(ck, n, TK::DInt, call);
-    }, LogData{&reg}));
+    }, RegistryData{&reg}));
 }
 
 void registerAssertions(Checker& ck, TestRegistry& reg) {
@@ -303,9 +306,8 @@ void registerAssertions(Checker& ck, TestRegistry& reg) {
         }, AssertBoolData{&reg, expected}));
     }
     // AssertEquals(Expected, Actual, Message): any type; compared by type class, size and bytes.
-    struct AssertEqualsData { TestRegistry* regp; };
     ck.addBuiltin("ASSERTEQUALS", BuiltinFn([](Checker& ck, CallArgs& call, const BuiltinFn& self) -> Checked {
-        const auto [regp] = self.data<AssertEqualsData>();
+        const auto [regp] = self.data<RegistryData>();
         TestRegistry& reg = *regp;
         std::vector<Checked> a;
         if (!bindArgs(ck, call, {{"Expected", true}, {"Actual", true}, {"Message", false}}, a)) return ck.bad(call.loc);
@@ -332,7 +334,7 @@ void registerAssertions(Checker& ck, TestRegistry& reg) {
         n->expected = {e.node, e.type};
         n->actual = {v.node, v.type};
         return result(ck, n, TK::Void, call);
-    }, AssertEqualsData{&reg}));
+    }, RegistryData{&reg}));
     // The names are built in one buffer: the registry copies them.
     static constexpr const char* kArrayPrefixes[] = {"ASSERTARRAYEQUALS_", "ASSERTARRAY2DEQUALS_", "ASSERTARRAY3DEQUALS_"};
     std::string name;
