@@ -16,6 +16,9 @@ set(STRUN_UNITY_BATCH 8 CACHE STRING "files per unity batch")
 if(STRUN_UNITY)
   set_target_properties(strun_stdlib strun_ast strun_runtime strun_interp strun_live strun_cli strun_commands
     PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${STRUN_UNITY_BATCH})
+  if(EXP_CLI_ONE)
+    set_target_properties(strun_cli PROPERTIES UNITY_BUILD_BATCH_SIZE 0)
+  endif()
   # Template-heavy files that share little with their neighbours: alone, so
   # that the two cores share them and no batch is much longer than the others.
   # And the evaluator's own files (interpreter/exec) and the checker's files
