@@ -12,13 +12,19 @@
 # (-DSTRUN_UNITY=OFF); file-local helpers have names of their own so that
 # they do not clash inside a batch.
 option(STRUN_UNITY "compile the files of each strun library in batches (unity builds)" ON)
-set(STRUN_UNITY_BATCH 8 CACHE STRING "files per unity batch")
+set(STRUN_UNITY_BATCH 16 CACHE STRING "files per unity batch of the strun libraries")
+set(STRUN_TEST_UNITY_BATCH 8 CACHE STRING "files per unity batch of the unit tests")
 if(STRUN_UNITY)
-  set_target_properties(strun_stdlib strun_ast strun_runtime strun_interp strun_live strun_cli strun_commands
+  # 16 rather than 8 (decision 0491): fewer copies of the same inline and
+  # template code; the largest batch stays under 700 MB of compiler memory.
+  set_target_properties(strun_stdlib strun_ast strun_source_readers strun_runtime strun_interp strun_live
     PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${STRUN_UNITY_BATCH})
-  if(EXP_CLI_ONE)
-    set_target_properties(strun_cli PROPERTIES UNITY_BUILD_BATCH_SIZE 0)
-  endif()
+  # All of CLI11's users in one batch: CLI11 2.1 (Debian's) is header-only,
+  # and each batch that includes it compiles its parser, validators and
+  # formatters again (about 8 s at -O2). The editor protocols and the other
+  # commands in batches of 8: in one batch of 16 the compiler needed 900 MB.
+  set_target_properties(strun_cli PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 0)
+  set_target_properties(strun_commands PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
   # Template-heavy files that share little with their neighbours: alone, so
   # that the two cores share them and no batch is much longer than the others.
   # And the evaluator's own files (interpreter/exec) and the checker's files
@@ -38,35 +44,39 @@ if(STRUN_UNITY)
     PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
 endif()
 
-# ---- cold code at -O2 instead of the Release build type's -O3: the command
+# ---- cold code at -O1 instead of the Release build type's -O3: the command
 # line and the editor protocols (LSP, DAP), which run once per command or
-# per request, and the network side of the live layer (HTTP, Modbus), which
-# runs on threads of its own. Never the evaluator (interpreter/exec), the
-# checker, the runtime scheduler, the control plane (its hooks run at every
-# activation of a live run) or anything else a scan or `check` runs. Not
-# -O1: inline code of the lower layers built in these files (the process
-# image's constructor, the program model's destructor) runs at their level
-# too, and at -O1 GCC keeps empty loops over 64 KiB areas: 1.5 M
-# instructions more at every start.
-set(STRUN_COLD_OPT "-O2" CACHE STRING "optimisation of the command line, editor and network code (empty: as the build type)")
+# per request, the network side of the live layer (HTTP, Modbus), which
+# runs on threads of its own, and the readers of project formats
+# (interpreter/source: PLCopen XML, TwinCAT, Beremiz, SFC, IL), which run
+# once per compile of such a project. Never the evaluator
+# (interpreter/exec), the checker, the runtime scheduler, the control plane
+# (its hooks run at every activation of a live run), the ST scanner and AST
+# builder (`check` of 30 000 lines: +2.8 % instructions with them at -O1)
+# or anything else a scan or `check` runs. -O1 compiles these files in
+# about half the time of -O2 (decision 0491). What made -O1 cost at every
+# start before (decision 0348), the process image's per-byte construct and
+# destroy loops inlined here at -O1, is now compiled out of line in the
+# runtime (runtime/zeroed_pages.cpp).
+set(STRUN_COLD_OPT "-O1" CACHE STRING "optimisation of the command line, editor, network and project-reader code (empty: as the build type)")
 if(STRUN_COLD_OPT AND CMAKE_BUILD_TYPE STREQUAL "Release")
   target_compile_options(strun_cli PRIVATE ${STRUN_COLD_OPT})
   target_compile_options(strun_commands PRIVATE ${STRUN_COLD_OPT})
+  target_compile_options(strun_source_readers PRIVATE ${STRUN_COLD_OPT})
   # A file with options of its own is compiled alone, outside the unity batches.
   file(GLOB LIVE_NETWORK_SOURCES ${CMAKE_SOURCE_DIR}/live/http_*.cpp ${CMAKE_SOURCE_DIR}/live/modbus_*.cpp)
   set_source_files_properties(${LIVE_NETWORK_SOURCES} PROPERTIES COMPILE_OPTIONS ${STRUN_COLD_OPT})
 endif()
 
-# ---- -O2 instead of -O3 for strun_ast (decision 0470): the source readers
-# (ST, PLCopen XML, TwinCAT, SFC) and the AST builder, which run once per
-# compile and hold no evaluator code. -O3's extra inlining and loop
-# transformations cost a fifth more compile time there (the source readers'
-# batch: 25.3 s at -O3, 20.1 s at -O2). Not the other libraries: the
-# evaluator's node templates are instantiated wherever the checker, the
-# built-ins and the library bindings build nodes, and at -O2 in those files
-# GCC stopped inlining the statement loop into CASE arms (state_machine
-# +1.3 % instructions), SwapElems (bubble_sort +1.8 %) and the string edit
-# nodes (string_build +0.5 %).
+# ---- -O2 instead of -O3 for strun_ast (decision 0470): the ST scanner and
+# the AST builder, which run once per compile and hold no evaluator code.
+# -O3's extra inlining and loop transformations cost a fifth more compile
+# time there (the source readers' batch: 25.3 s at -O3, 20.1 s at -O2). Not
+# the other libraries: the evaluator's node templates are instantiated
+# wherever the checker, the built-ins and the library bindings build nodes,
+# and at -O2 in those files GCC stopped inlining the statement loop into
+# CASE arms (state_machine +1.3 % instructions), SwapElems (bubble_sort
+# +1.8 %) and the string edit nodes (string_build +0.5 %).
 set(STRUN_AST_OPT "-O2" CACHE STRING "optimisation of strun_ast (empty: as the build type)")
 if(STRUN_AST_OPT AND CMAKE_BUILD_TYPE STREQUAL "Release")
   target_compile_options(strun_ast PRIVATE ${STRUN_AST_OPT})
@@ -92,7 +102,7 @@ function(strun_test_build_cost target)
     target_compile_options(${target} PRIVATE ${STRUN_TEST_OPT})
   endif()
   if(STRUN_UNITY)
-    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${STRUN_UNITY_BATCH})
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${STRUN_TEST_UNITY_BATCH})
   endif()
 endfunction()
 
@@ -105,5 +115,5 @@ endfunction()
 # sources (strun_grammar: the parser's headers; strun_stdlib, strun_live:
 # embedded files), so strun_ast, strun_runtime, strun_interp and strun_live
 # start together once the parser is generated (decision 0469).
-set_target_properties(strun_stdlib strun_ast strun_runtime strun_interp strun_live
+set_target_properties(strun_stdlib strun_ast strun_source_readers strun_runtime strun_interp strun_live
   PROPERTIES OPTIMIZE_DEPENDENCIES ON)
