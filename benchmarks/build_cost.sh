@@ -33,7 +33,7 @@ exec /usr/bin/time -a -o "$log" -f "%U %S %M %e $what" "$@"
 LAUNCH
 chmod +x "$launcher"
 export CCACHE_DISABLE=1
-cmake -S "$src" -B "$dir/build" -DCMAKE_BUILD_TYPE=Release $EXTRA_CMAKE \
+cmake -S "$src" -B "$dir/build" -DCMAKE_BUILD_TYPE=Release \
   "-DCMAKE_CXX_COMPILER_LAUNCHER=$launcher;$log" "-DCMAKE_C_COMPILER_LAUNCHER=$launcher;$log" \
   "-DCMAKE_CXX_LINKER_LAUNCHER=$launcher;$log" >/dev/null
 start=$(date +%s.%N)
