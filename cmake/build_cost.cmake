@@ -17,7 +17,7 @@ set(STRUN_TEST_UNITY_BATCH 8 CACHE STRING "files per unity batch of the unit tes
 if(STRUN_UNITY)
   # 16 rather than 8 (decision 0491): fewer copies of the same inline and
   # template code; the largest batch stays under 700 MB of compiler memory.
-  set_target_properties(strun_stdlib strun_ast strun_source_readers strun_runtime strun_interp strun_live
+  set_target_properties(strun_stdlib strun_ast strun_source_readers strun_runtime strun_interp strun_live strun_live_network
     PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${STRUN_UNITY_BATCH})
   # All of CLI11's users in one batch: CLI11 2.1 (Debian's) is header-only,
   # and each batch that includes it compiles its parser, validators and
@@ -63,9 +63,9 @@ if(STRUN_COLD_OPT AND CMAKE_BUILD_TYPE STREQUAL "Release")
   target_compile_options(strun_cli PRIVATE ${STRUN_COLD_OPT})
   target_compile_options(strun_commands PRIVATE ${STRUN_COLD_OPT})
   target_compile_options(strun_source_readers PRIVATE ${STRUN_COLD_OPT})
-  # A file with options of its own is compiled alone, outside the unity batches.
-  file(GLOB LIVE_NETWORK_SOURCES ${CMAKE_SOURCE_DIR}/live/http_*.cpp ${CMAKE_SOURCE_DIR}/live/modbus_*.cpp)
-  set_source_files_properties(${LIVE_NETWORK_SOURCES} PROPERTIES COMPILE_OPTIONS ${STRUN_COLD_OPT})
+  target_compile_options(strun_live_network PRIVATE ${STRUN_COLD_OPT})
+  # The build-time tool that embeds the standard library's ST sources.
+  target_compile_options(strun_embed_library PRIVATE ${STRUN_COLD_OPT})
 endif()
 
 # ---- -O2 instead of -O3 for strun_ast (decision 0470): the ST scanner and
@@ -115,5 +115,5 @@ endfunction()
 # sources (strun_grammar: the parser's headers; strun_stdlib, strun_live:
 # embedded files), so strun_ast, strun_runtime, strun_interp and strun_live
 # start together once the parser is generated (decision 0469).
-set_target_properties(strun_stdlib strun_ast strun_source_readers strun_runtime strun_interp strun_live
+set_target_properties(strun_stdlib strun_ast strun_source_readers strun_runtime strun_interp strun_live strun_live_network
   PROPERTIES OPTIMIZE_DEPENDENCIES ON)
