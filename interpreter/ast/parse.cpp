@@ -211,8 +211,6 @@ private:
         }
     }
 
-    // A cheap test that lets through every pragma kMessage below can match:
-    // '{', blanks, then "warning" or "error" in any case.
     // {warning 'text'} / {error 'text'}: the keyword in any case, blanks
     // around the keyword and the quoted text, none inside the quotes' text
     // counted (what the regular expression ^\{\s*(warning|error)\s+'([^']*)'\s*\}$
