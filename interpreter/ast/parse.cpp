@@ -212,10 +212,11 @@ private:
     }
 
     // {warning 'text'} / {error 'text'}: the keyword in any case, blanks
-    // around the keyword and the quoted text, none inside the quotes' text
-    // counted (what the regular expression ^\{\s*(warning|error)\s+'([^']*)'\s*\}$
-    // matched before; decision 0491: a scanner by hand instead of <regex>,
-    // whose instantiation took seconds of every fresh build).
+    // around the keyword and around the quoted text, no quote inside the
+    // text. That is what the regular expression
+    // ^\{\s*(warning|error)\s+'([^']*)'\s*\}$ matched before; decision 0491
+    // scans by hand instead of with <regex>, whose instantiation took seconds
+    // of every fresh build.
     static bool parseMessagePragma(std::string_view text, bool& isError, std::string_view& message) {
         auto blank = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
         if (text.size() < 2 || text.front() != '{' || text.back() != '}') return false;
