@@ -1,7 +1,5 @@
 #include "interpreter/ast/nesting_guard.h"
 
-#include <algorithm>
-
 #include <fmt/format.h>
 
 #include "grammar/STLexer.h"
@@ -43,13 +41,14 @@ bool endsTypeSpec(size_t type) {
 
 }  // namespace
 
-std::optional<NestingViolation> findExcessiveNesting(const std::vector<antlr4::Token*>& tokens) {
+std::optional<NestingViolation> findExcessiveNesting(const std::vector<ScannedToken>& tokens) {
     int brackets = 0;     // ( and [
     int blocks = 0;       // IF .. END_IF and friends
     int prefixRun = 0;    // consecutive NOT / - / +
     int typeRun = 0;      // ARRAY / POINTER TO / REFERENCE TO within one type
-    for (const antlr4::Token* token : tokens) {
-        const size_t type = token->getType();
+    for (size_t index = 0; index < tokens.size(); ++index) {
+        if (tokens[index].channel != antlr4::Token::DEFAULT_CHANNEL) continue;
+        const size_t type = tokens[index].type;
         if (type == L::LPAREN || type == L::LBRACK) ++brackets;
         else if ((type == L::RPAREN || type == L::RBRACK) && brackets > 0) --brackets;
         else if (opensBlock(type)) ++blocks;
@@ -59,10 +58,9 @@ std::optional<NestingViolation> findExcessiveNesting(const std::vector<antlr4::T
         if (isTypeConstructor(type)) ++typeRun;
         else if (endsTypeSpec(type)) typeRun = 0;
 
-        const int depth = std::max({brackets + blocks, prefixRun, typeRun});
-        if (depth > kMaxNestingDepth)
+        if (brackets + blocks > kMaxNestingDepth || prefixRun > kMaxNestingDepth || typeRun > kMaxNestingDepth)
             return NestingViolation{
-                token, fmt::format("nesting too deep: more than {} nested levels (parentheses, brackets, "
+                index, fmt::format("nesting too deep: more than {} nested levels (parentheses, brackets, "
                                    "statements, operators or types)",
                                    kMaxNestingDepth)};
     }

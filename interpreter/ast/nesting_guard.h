@@ -10,9 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace antlr4 {
-class Token;
-}
+#include "interpreter/ast/st_scanner.h"
 
 namespace strun::ast {
 
@@ -20,11 +18,12 @@ namespace strun::ast {
 inline constexpr int kMaxNestingDepth = 500;
 
 struct NestingViolation {
-    const antlr4::Token* token = nullptr;  // where the limit was exceeded
+    std::size_t token = 0;  // the index in `tokens` where the limit was exceeded
     std::string message;
 };
 
-// `tokens`: the default-channel tokens of one file, in order.
-std::optional<NestingViolation> findExcessiveNesting(const std::vector<antlr4::Token*>& tokens);
+// `tokens`: the scanner's tokens of one file, in order; only those of the
+// default channel count (comments, pragmas and error tokens do not).
+std::optional<NestingViolation> findExcessiveNesting(const std::vector<ScannedToken>& tokens);
 
 }  // namespace strun::ast

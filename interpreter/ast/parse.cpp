@@ -16,6 +16,7 @@
 #include <atomic>
 #include <cctype>
 #include <exception>
+#include <optional>
 #include <string_view>
 
 #include <antlr4-runtime.h>
@@ -85,16 +86,10 @@ public:
           text_(sanitizeUtf8(sources.file(fileIndex).text, &firstInvalidByte_, &invalidBytes_)),
           scan_(scanWithActionKeyword(text_)),
           source_(text_, scan_.tokens),
-          tokens_(&source_),
-          parser_(&tokens_),
+          tokens_(&source_, ScannedTokenStream::ViewsOnly),
           reporter_(log, fileIndex),
           log_(log),
-          fileIndex_(fileIndex) {
-        parser_.removeErrorListeners();
-        // The AST builder reads the contexts' labels only (decision 0159):
-        // no terminal node per token, no child lists.
-        parser_.setBuildParseTree(false);
-    }
+          fileIndex_(fileIndex) {}
 
     CompilationUnit run() {
         warnAboutInvalidUtf8();
@@ -105,6 +100,14 @@ public:
         if (!reportLexerErrors()) return emptyUnit();
         if (scan_.tokens.size() >= halvesFrom_)
             if (auto halves = parseInHalves(text_, scan_.tokens, fileIndex_)) return std::move(*halves);
+        // Parsed whole: only now the stream's lookahead tables and the
+        // parser (a file parsed in halves never needs them).
+        tokens_.prepareForParsing();
+        parser_.emplace(&tokens_);
+        parser_->removeErrorListeners();
+        // The AST builder reads the contexts' labels only (decision 0159):
+        // no terminal node per token, no child lists.
+        parser_->setBuildParseTree(false);
         CompilationUnit unit = emptyUnit();
         runWithLargeStack([&] {
             strun_grammar::RuleContextArena::Scope arena(contextArena_);  // the contexts of this parse
@@ -156,7 +159,6 @@ private:
                        "the file has more than " + std::to_string(kMaxTokensPerFile) + " tokens (the limit per source file)");
             return false;
         }
-        tokens_.fill();
         return true;
     }
 
@@ -173,18 +175,19 @@ private:
     // `||`, `++`, `+=`, `!`): one message with the ST spelling, before the
     // parser's less helpful one on the same line (one error per line).
     void reportForeignOperators() {
-        std::vector<antlr4::Token*> seen;
+        // ScannedTokenView, the final class: no virtual call per token.
+        std::vector<ScannedTokenView*> seen;
         seen.reserve(tokens_.views().size());
-        for (antlr4::Token& t : tokens_.views())
+        for (ScannedTokenView& t : tokens_.views())
             if (t.getChannel() == antlr4::Token::DEFAULT_CHANNEL || t.getChannel() == L::ERRORS) seen.push_back(&t);
-        auto is = [](antlr4::Token* t, size_t type, const char* text = nullptr) {
+        auto is = [](ScannedTokenView* t, size_t type, const char* text = nullptr) {
             return t->getType() == type && (text == nullptr || t->getText() == text);
         };
         for (size_t i = 0; i < seen.size(); ++i) {
-            antlr4::Token* a = seen[i];
-            antlr4::Token* b = i + 1 < seen.size() ? seen[i + 1] : nullptr;
+            ScannedTokenView* a = seen[i];
+            ScannedTokenView* b = i + 1 < seen.size() ? seen[i + 1] : nullptr;
             const bool pair = b != nullptr && b->getStartIndex() == a->getStopIndex() + 1;
-            antlr4::Token* before = i > 0 ? seen[i - 1] : nullptr;
+            ScannedTokenView* before = i > 0 ? seen[i - 1] : nullptr;
             auto target = [&] { return before != nullptr && P::isNameToken(before->getType()) ? before->getText() : "x"; };
             std::string op, help;
             if (pair && is(a, L::EQ) && is(b, L::EQ)) {
@@ -252,8 +255,8 @@ private:
     // {warning 'text'} and {error 'text'} (CODESYS message pragmas): the text
     // as a warning (W0010) or an error (E0010) at the pragma.
     void reportMessagePragmas() {
-        for (antlr4::Token& token : tokens_.views()) {
-            antlr4::Token* t = &token;
+        for (ScannedTokenView& token : tokens_.views()) {
+            ScannedTokenView* t = &token;
             if (t->getChannel() != L::PRAGMAS) continue;
             const std::string text = t->getText();
             if (text.size() >= 4 && text[1] == '{' && text[text.size() - 2] == '}') {  // matiec/Beremiz inline C code (0351)
@@ -274,10 +277,8 @@ private:
     // Reports error tokens and runs the nesting guard; false if parsing must
     // not go ahead.
     bool reportLexerErrors() {
-        std::vector<antlr4::Token*> onChannel;
-        onChannel.reserve(tokens_.views().size());
-        for (antlr4::Token& each : tokens_.views()) {
-            antlr4::Token* token = &each;
+        for (ScannedTokenView& each : tokens_.views()) {  // the final class: no virtual calls
+            ScannedTokenView* token = &each;
             if (token->getChannel() == L::ERRORS) {
                 reporter_.report(isUnterminated(*token) ? diag::E0005 : diag::E0006, token->getLine(),
                                  token->getCharPositionInLine(), lexerErrorMessage(*token),
@@ -290,13 +291,11 @@ private:
                 if (token->getType() == L::UNTERMINATED_BLOCK_COMMENT || token->getType() == L::UNTERMINATED_C_COMMENT ||
                     token->getType() == L::UNTERMINATED_PRAGMA)
                     reporter_.silence();
-            } else if (token->getChannel() == antlr4::Token::DEFAULT_CHANNEL) {
-                onChannel.push_back(token);
             }
         }
-        if (auto violation = findExcessiveNesting(onChannel)) {
-            log_.error(diag::E0007, Loc{fileIndex_, static_cast<int>(violation->token->getLine()),
-                           static_cast<int>(violation->token->getCharPositionInLine()) + 1},
+        if (auto violation = findExcessiveNesting(scan_.tokens)) {
+            const ScannedToken& at = scan_.tokens[violation->token];
+            log_.error(diag::E0007, Loc{fileIndex_, static_cast<int>(at.line), static_cast<int>(at.column) + 1},
                        "syntax error: " + violation->message);
             return false;
         }
@@ -304,22 +303,22 @@ private:
     }
 
     P::CompilationUnitContext* parse() {
-        auto* simulator = parser_.getInterpreter<antlr4::atn::ParserATNSimulator>();
+        auto* simulator = parser_->getInterpreter<antlr4::atn::ParserATNSimulator>();
         simulator->setPredictionMode(antlr4::atn::PredictionMode::SLL);
-        parser_.setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
+        parser_->setErrorHandler(std::make_shared<antlr4::BailErrorStrategy>());
         try {
-            return parser_.compilationUnit();
+            return parser_->compilationUnit();
         } catch (const antlr4::ParseCancellationException&) {
             // Not SLL-parseable as is: a syntax error, or (rarely) a construct
             // that needs full-context prediction. Parse again properly.
         }
         tokens_.seek(0);
-        parser_.reset();
-        parser_.setBuildParseTree(false);
+        parser_->reset();
+        parser_->setBuildParseTree(false);
         simulator->setPredictionMode(antlr4::atn::PredictionMode::LL);
-        parser_.setErrorHandler(std::make_shared<FriendlyErrorStrategy>(&reporter_));
-        parser_.addErrorListener(&reporter_);
-        return parser_.compilationUnit();
+        parser_->setErrorHandler(std::make_shared<FriendlyErrorStrategy>(&reporter_));
+        parser_->addErrorListener(&reporter_);
+        return parser_->compilationUnit();
     }
 
     size_t halvesFrom_;
@@ -330,7 +329,7 @@ private:
     ScannedTokenSource source_;
     ScannedTokenStream tokens_;
     strun_grammar::RuleContextArena contextArena_;  // outlives parser_, which deletes the contexts
-    P parser_;
+    std::optional<P> parser_;                      // made when the file is parsed whole
     SyntaxErrorReporter reporter_;
     CompileLog& log_;
     int fileIndex_;

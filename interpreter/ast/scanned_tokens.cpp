@@ -57,10 +57,19 @@ size_t ScannedTokenSource::getCharPositionInLine() {
     return next_ < scanned_.size() ? scanned_[next_].column : scanned_.back().column;
 }
 
-ScannedTokenStream::ScannedTokenStream(ScannedTokenSource* source) : antlr4::CommonTokenStream(source) {
+ScannedTokenStream::ScannedTokenStream(ScannedTokenSource* source) : ScannedTokenStream(source, ViewsOnly) {
+    prepareForParsing();
+}
+
+ScannedTokenStream::ScannedTokenStream(ScannedTokenSource* source, ViewsOnlyTag) : antlr4::CommonTokenStream(source) {
     const std::vector<ScannedToken>& scanned = source->scanned();
     views_.reserve(scanned.size());  // never reallocated: _tokens points into it
     for (size_t i = 0; i < scanned.size(); ++i) views_.emplace_back(scanned[i], i, source);
+}
+
+void ScannedTokenStream::prepareForParsing() {
+    if (prepared_) return;
+    prepared_ = true;
     fill();
     const size_t n = views_.size();
     auto stopsHere = [&](size_t i) {

@@ -105,9 +105,19 @@ private:
 // and previous default-channel token of each position instead of a walk
 // over the hidden tokens with a bounds check per step: the parser asks
 // for the next token several times per token (decision 0159).
+//
+// Made with `ViewsOnly`, it holds the views and nothing else until
+// prepareForParsing(): what parseFile needs to report scanner errors for a
+// file that is then parsed in halves (ast/parse_in_halves.h), each half with
+// a stream of its own.
 class ScannedTokenStream : public antlr4::CommonTokenStream {
 public:
+    enum ViewsOnlyTag { ViewsOnly };
     explicit ScannedTokenStream(ScannedTokenSource* source);
+    ScannedTokenStream(ScannedTokenSource* source, ViewsOnlyTag);
+    // Fetches every token and builds the lookahead tables; once, before a
+    // parser reads a stream made with ViewsOnly (a no-op on any other).
+    void prepareForParsing();
     ~ScannedTokenStream() override;
     ScannedTokenStream(const ScannedTokenStream&) = delete;
     ScannedTokenStream& operator=(const ScannedTokenStream&) = delete;
@@ -130,6 +140,7 @@ private:
     std::vector<ScannedTokenView> views_;
     std::vector<uint32_t> nextOnChannel_;      // BufferedTokenStream::nextTokenOnChannel(i, 0)
     std::vector<int32_t> previousOnChannel_;   // BufferedTokenStream::previousTokenOnChannel(i, 0), -1 for none
+    bool prepared_ = false;
 };
 
 }  // namespace strun::ast

@@ -11,6 +11,7 @@ namespace strun::sema {
 
 // True when one of `pragmas` is `attribute 'name'` (case-insensitive, any spacing).
 inline bool hasAttribute(const std::vector<ast::Pragma>& pragmas, const std::string& name) {
+    if (pragmas.empty()) return false;  // most declarations: no folded name built (checked at every variable)
     auto squeeze = [](const std::string& s) {
         std::string out;
         for (char c : s)

@@ -15,6 +15,7 @@
 #include "interpreter/source/st_textual_il.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <map>
 #include <set>
@@ -23,6 +24,7 @@
 #include "interpreter/source/plcopen_graphical.h"
 #include "interpreter/source/st_splice.h"
 #include "interpreter/source/st_tokens.h"
+#include "stdlib/library_mentions.h"
 #include "stdlib/number_scan.h"
 
 namespace strun::source {
@@ -167,25 +169,38 @@ std::string ilWordAt(const std::string& s, size_t i) {
     return stdlib::upperAscii(std::string_view(s).substr(i, e - i));
 }
 
-// Case-insensitive: does `s` hold `word` (upper case) at i?
+// Case-insensitive: does `s` hold `word` (upper case) at i? ASCII case
+// folding inline: this runs at most letters of every ST file read.
 bool ilHasWord(const std::string& s, size_t i, const char* word) {
     size_t k = 0;
     for (; word[k]; ++k)
-        if (i + k >= s.size() || std::toupper(static_cast<unsigned char>(s[i + k])) != word[k]) return false;
+        if (i + k >= s.size() || stdlib::mentions::upper(s[i + k]) != word[k]) return false;
     return true;
 }
 
 }  // namespace
 
 bool mayHoldTextualIl(const std::string& s) {
-    for (size_t i = 0; i < s.size(); ++i) {
-        const char c = s[i];
-        if (c != 'E' && c != 'e' && c != 'A' && c != 'a') continue;
+    // Every 'e' and 'a' of the text starts a test; the second letter
+    // decides most of them at once. The first test is a table lookup: the
+    // scan runs over every byte of every ST file read, before the parse.
+    static constexpr auto kStarts = [] {
+        std::array<bool, 256> table{};
+        table['E'] = table['e'] = table['A'] = table['a'] = true;
+        return table;
+    }();
+    const auto* bytes = reinterpret_cast<const unsigned char*>(s.data());
+    const size_t n = s.size();
+    for (size_t i = 0; i + 1 < n; ++i) {
+        if (!kStarts[bytes[i]]) continue;
+        const char c = stdlib::mentions::upper(s[i]);
+        const char second = stdlib::mentions::upper(s[i + 1]);
+        if (!((c == 'E' && second == 'N') || (c == 'A' && second == 'C'))) continue;
         size_t after = 0;
-        if (ilHasWord(s, i, "END_VAR")) after = i + 7;
-        else if (ilHasWord(s, i, "END_METHOD")) after = i + 10;
-        else if (ilHasWord(s, i, "END_ACTION")) after = i + 10;
-        else if (ilHasWord(s, i, "ACTION") && (i == 0 || !std::isalnum(static_cast<unsigned char>(s[i - 1])))) {
+        if (c == 'E' && ilHasWord(s, i, "END_VAR")) after = i + 7;
+        else if (c == 'E' && ilHasWord(s, i, "END_METHOD")) after = i + 10;
+        else if (c == 'E' && ilHasWord(s, i, "END_ACTION")) after = i + 10;
+        else if (c == 'A' && ilHasWord(s, i, "ACTION") && (i == 0 || !std::isalnum(static_cast<unsigned char>(s[i - 1])))) {
             after = skipBlankIl(s, i + 6);
             after += ilWordAt(s, after).size();  // the action's name
             after = skipBlankIl(s, after);
