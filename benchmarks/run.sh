@@ -9,7 +9,10 @@
 # usage: benchmarks/run.sh [path-to-strun] [workload...]
 #   path-to-strun  default build/strun
 #   workload       names from benchmarks/workloads (default: all, in the order below)
-# environment: BENCH_REPEATS (default 3) runs per side, best one counts;
+# The sides of a workload run in turn, one run of each per round, so that
+# the machine's drift over seconds (tens of percent on a shared VM) moves
+# all of them alike instead of the side that happened to run last.
+# environment: BENCH_REPEATS (default 3) rounds, each side's best run counts;
 #              LUA (default lua5.4) the Lua interpreter;
 #              LUAJIT (default luajit; empty: no LuaJIT column), CC (default
 #              gcc; empty: no C column);
@@ -57,26 +60,29 @@ done
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
-# best_time OUT ERR CMD...: runs CMD $repeats times, stdout to OUT and stderr
-# to ERR (of the last run); sets best_ns to the fastest run in ns, run_rc to
-# the first non-zero exit status (0 if every run succeeded).
-best_time() {
-    local out=$1 err=$2
-    shift 2
-    best_ns=""
-    run_rc=0
-    local r start end ns rc
+# Per workload, each side is a function run_<side> that runs it once with
+# its output in $scratch/<side>.out and its errors in $scratch/<side>.err.
+# in_turn SIDE...: runs the sides one after the other, $repeats rounds;
+# sets best[SIDE] to each side's fastest run in ns and rc[SIDE] to its first
+# non-zero exit status (0 if every run succeeded; a failed side runs no more).
+declare -A best rc
+in_turn() {
+    local side r start end ns status
+    for side in "$@"; do best[$side]=""; rc[$side]=0; done
     for (( r = 0; r < repeats; r++ )); do
-        start=$(date +%s%N)
-        "$@" >"$out" 2>"$err"
-        rc=$?
-        end=$(date +%s%N)
-        if (( rc != 0 )); then
-            run_rc=$rc
-            return
-        fi
-        ns=$(( end - start ))
-        if [[ -z "$best_ns" ]] || (( ns < best_ns )); then best_ns=$ns; fi
+        for side in "$@"; do
+            (( rc[$side] != 0 )) && continue
+            start=$(date +%s%N)
+            "run_$side"
+            status=$?
+            end=$(date +%s%N)
+            if (( status != 0 )); then
+                rc[$side]=$status
+                continue
+            fi
+            ns=$(( end - start ))
+            if [[ -z "${best[$side]}" ]] || (( ns < best[$side] )); then best[$side]=$ns; fi
+        done
     done
 }
 
@@ -95,7 +101,7 @@ fi
 log_sum=0
 log_count=0
 
-echo "strun: $strun   lua: $($lua -v 2>&1 | head -n1 | cut -d" " -f1-2)   luajit -joff: ${luajit:-none}   C: ${cc:+$cc -O2}   best of $repeats runs each"
+echo "strun: $strun   lua: $($lua -v 2>&1 | head -n1 | cut -d" " -f1-2)   luajit -joff: ${luajit:-none}   C: ${cc:+$cc -O2}   best of $repeats rounds, the sides in turn"
 row_format="%-14s %9s %9s %13s %9s %10s %9s %8s  %s\n"
 printf "$row_format" "workload" "strun s" "lua s" "strun/lua" "luajit s" "strun/jit" "C s" "strun/C" "checksum"
 printf "$row_format" "--------" "-------" "-----" "---------" "--------" "---------" "---" "-------" "--------"
@@ -114,11 +120,30 @@ for name in "${workloads[@]}"; do
     st_file="$workload_dir/$name.st"
     lua_file="$workload_dir/$name.lua"
 
-    best_time "$scratch/strun.json" "$scratch/strun.err" \
-        "$strun" run --virtual --stmt-cost 0ns --cycles 1 --task Main --dump "$st_file"
-    strun_ns=$best_ns strun_rc=$run_rc
-    best_time "$scratch/lua.out" "$scratch/lua.err" "$lua" "$lua_file"
-    lua_ns=$best_ns lua_rc=$run_rc
+    # The sides of this workload: strun and Lua always, LuaJIT's
+    # interpreter and the C twin when there are.
+    sides=(strun lua)
+    run_strun() { "$strun" run --virtual --stmt-cost 0ns --cycles 1 --task Main --dump "$st_file" >"$scratch/strun.out" 2>"$scratch/strun.err"; }
+    run_lua() { "$lua" "$lua_file" >"$scratch/lua.out" 2>"$scratch/lua.err"; }
+    jit_col="-" jit_ratio="-" c_col="-" c_ratio="-"
+    if [[ -n "$luajit" ]]; then
+        jit_file="$scratch/$name.luajit.lua"
+        luajit_twin "$lua_file" >"$jit_file"
+        run_jit() { "$luajit" -joff "$jit_file" >"$scratch/jit.out" 2>"$scratch/jit.err"; }
+        sides+=(jit)
+    fi
+    if [[ -n "$cc" && -f "$workload_dir/$name.c" ]]; then
+        if "$cc" -O2 -o "$scratch/$name.native" "$workload_dir/$name.c" 2>"$scratch/cc.err"; then
+            run_c() { "$scratch/$name.native" >"$scratch/c.out" 2>"$scratch/c.err"; }
+            sides+=(c)
+        else
+            failed=1 c_col="FAILED"
+            sed -n '1,5s/^/    cc: /p' "$scratch/cc.err"
+        fi
+    fi
+    in_turn "${sides[@]}"
+    strun_ns=${best[strun]} strun_rc=${rc[strun]}
+    lua_ns=${best[lua]} lua_rc=${rc[lua]}
 
     if (( strun_rc != 0 || lua_rc != 0 )); then
         failed=1
@@ -131,7 +156,7 @@ for name in "${workloads[@]}"; do
     fi
 
     ratio=$(awk -v s="$strun_ns" -v l="$lua_ns" 'BEGIN { printf "%.2f", s / l }')
-    if values=$("$lua" "$bench_dir/same_checksum.lua" "$scratch/strun.json" "$scratch/lua.out"); then
+    if values=$("$lua" "$bench_dir/same_checksum.lua" "$scratch/strun.out" "$scratch/lua.out"); then
         verdict="ok (${values% *})"
     else
         failed=1
@@ -141,34 +166,24 @@ for name in "${workloads[@]}"; do
     log_count=$(( log_count + 1 ))
 
     # LuaJIT's interpreter and the C twin: their output must be strun's checksum too.
-    jit_col="-" jit_ratio="-" c_col="-" c_ratio="-"
     if [[ -n "$luajit" ]]; then
-        jit_file="$scratch/$name.luajit.lua"
-        luajit_twin "$lua_file" >"$jit_file"
-        best_time "$scratch/jit.out" "$scratch/jit.err" "$luajit" -joff "$jit_file"
-        if (( run_rc == 0 )) && "$lua" "$bench_dir/same_checksum.lua" "$scratch/strun.json" "$scratch/jit.out" >/dev/null; then
-            jit_col=$(seconds "$best_ns")
-            jit_ratio=$(awk -v s="$strun_ns" -v l="$best_ns" 'BEGIN { printf "%.2f", s / l }')
+        if (( rc[jit] == 0 )) && "$lua" "$bench_dir/same_checksum.lua" "$scratch/strun.out" "$scratch/jit.out" >/dev/null; then
+            jit_col=$(seconds "${best[jit]}")
+            jit_ratio=$(awk -v s="$strun_ns" -v l="${best[jit]}" 'BEGIN { printf "%.2f", s / l }')
             jit_log_sum=$(awk -v a="$jit_log_sum" -v r="$jit_ratio" 'BEGIN { printf "%.6f", a + log(r) }')
             jit_log_count=$(( jit_log_count + 1 ))
         else
             failed=1 jit_col="FAILED"
         fi
     fi
-    if [[ -n "$cc" && -f "$workload_dir/$name.c" ]]; then
-        if "$cc" -O2 -o "$scratch/$name.native" "$workload_dir/$name.c" 2>"$scratch/cc.err"; then
-            best_time "$scratch/c.out" "$scratch/c.err" "$scratch/$name.native"
-            if (( run_rc == 0 )) && "$lua" "$bench_dir/same_checksum.lua" "$scratch/strun.json" "$scratch/c.out" >/dev/null; then
-                c_col=$(seconds "$best_ns")
-                c_ratio=$(awk -v s="$strun_ns" -v l="$best_ns" 'BEGIN { printf "%.1f", s / l }')
-                c_log_sum=$(awk -v a="$c_log_sum" -v s="$strun_ns" -v l="$best_ns" 'BEGIN { printf "%.6f", a + log(s / l) }')
-                c_log_count=$(( c_log_count + 1 ))
-            else
-                failed=1 c_col="FAILED"
-            fi
+    if [[ " ${sides[*]} " == *" c "* ]]; then
+        if (( rc[c] == 0 )) && "$lua" "$bench_dir/same_checksum.lua" "$scratch/strun.out" "$scratch/c.out" >/dev/null; then
+            c_col=$(seconds "${best[c]}")
+            c_ratio=$(awk -v s="$strun_ns" -v l="${best[c]}" 'BEGIN { printf "%.1f", s / l }')
+            c_log_sum=$(awk -v a="$c_log_sum" -v s="$strun_ns" -v l="${best[c]}" 'BEGIN { printf "%.6f", a + log(s / l) }')
+            c_log_count=$(( c_log_count + 1 ))
         else
             failed=1 c_col="FAILED"
-            sed -n '1,5s/^/    cc: /p' "$scratch/cc.err"
         fi
     fi
     printf "$row_format" "$name" "$(seconds "$strun_ns")" "$(seconds "$lua_ns")" "$ratio" "$jit_col" "$jit_ratio" "$c_col" "$c_ratio" "$verdict"
