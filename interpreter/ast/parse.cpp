@@ -33,6 +33,7 @@
 #include "interpreter/ast/st_scanner.h"
 #include "interpreter/ast/syntax_errors.h"
 #include "interpreter/ast/utf8_input.h"
+#include "stdlib/number_scan.h"
 
 namespace strun::ast {
 
@@ -227,10 +228,7 @@ private:
         size_t i = 1;
         while (i < end && blank(text[i])) ++i;
         auto keyword = [&](std::string_view word) {
-            if (end - i < word.size()) return false;
-            for (size_t k = 0; k < word.size(); ++k)
-                if (std::tolower(static_cast<unsigned char>(text[i + k])) != word[k]) return false;
-            return true;
+            return end - i >= word.size() && stdlib::equalsIgnoreCase(text.substr(i, word.size()), word);
         };
         if (keyword("warning")) {
             isError = false;

@@ -169,13 +169,9 @@ std::string ilWordAt(const std::string& s, size_t i) {
     return stdlib::upperAscii(std::string_view(s).substr(i, e - i));
 }
 
-// Case-insensitive: does `s` hold `word` (upper case) at i? ASCII case
-// folding inline: this runs at most letters of every ST file read.
-bool ilHasWord(const std::string& s, size_t i, const char* word) {
-    size_t k = 0;
-    for (; word[k]; ++k)
-        if (i + k >= s.size() || stdlib::mentions::upper(s[i + k]) != word[k]) return false;
-    return true;
+// Case-insensitive: does `s` hold `word` at i?
+bool ilHasWord(const std::string& s, size_t i, std::string_view word) {
+    return stdlib::equalsIgnoreCase(std::string_view(s).substr(i, word.size()), word);
 }
 
 }  // namespace

@@ -6,21 +6,16 @@
 
 #include <string>
 
-#include "interpreter/ast/parse.h"
+#include "parse_test_support.h"
 
 namespace {
-
-using namespace strun;
 
 // The messages parsing one program with `pragma` in its body gives, as
 // "CODE text" lines.
 std::string messagesOf(const std::string& pragma) {
-    SourceSet sources;
-    const int file = sources.add("p.st", "PROGRAM P\nVAR x : INT; END_VAR\n" + pragma + "\nx := 1;\nEND_PROGRAM\n");
-    CompileLog log;
-    parseFile(sources, file, log);
+    auto p = strun::ast::test::parse("PROGRAM P\nVAR x : INT; END_VAR\n" + pragma + "\nx := 1;\nEND_PROGRAM\n");
     std::string out;
-    for (const auto& m : log.messages()) out += m.code + " " + m.message + "\n";
+    for (const auto& m : p->log.messages()) out += m.code + " " + m.message + "\n";
     return out;
 }
 
