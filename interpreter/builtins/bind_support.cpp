@@ -45,7 +45,7 @@ bool rejectOutputs(Checker& ck, CallArgs& call) {
 bool isScalarConst(const Checked& a) {
     if (!a.isConst || !a.type) return false;
     if (sema::isIntRep(a.type) || sema::isRealRep(a.type)) return true;
-    return dynamic_cast<exec::ConstBytes*>(a.node) != nullptr;
+    return exec::nodeCast<exec::ConstBytes>(a.node) != nullptr;
 }
 
 }  // namespace

@@ -409,7 +409,7 @@ Stmt* Index1Var<T, B, IX>::makeStore(NodePool& pool, Expr* value, bool boolean) 
     else {
         const Index1Fields& fields = *this;
         if (boolean && !std::is_same_v<T, uint8_t>) return nullptr;
-        if (dynamic_cast<ConstInt*>(value) || dynamic_cast<ConstReal*>(value)) {
+        if (nodeCast<ConstInt>(value) || nodeCast<ConstReal>(value)) {
             Ctx none;  // constants read nothing from the context
             T k;
             if (boolean) k = static_cast<T>(value->i(none) != 0);

@@ -6,7 +6,7 @@ namespace {
 
 template <class T, exec::BaseKind B>
 exec::Stmt* onVar(exec::NodePool& pool, exec::Expr* selector, exec::CaseArms& arms) {
-    auto* v = dynamic_cast<exec::VarNode<T, B>*>(selector);
+    auto* v = exec::nodeCast<exec::VarNode<T, B>>(selector);
     if (!v) return nullptr;
     auto* n = pool.make<exec::CaseOnVar<T, B>>(v->off);
     n->arms = std::move(arms);

@@ -197,7 +197,7 @@ Checked Checker::checkConversionCall(const std::string& key, const ast::Expr& e,
     // SIMATIC AX: a one-character literal is a CHAR where no STRING is asked
     // for, so TO_USINT('0') is its code, 48 (simatic-ax/conversion; decision 0394).
     if (!from && a.isConst && a.type->kind == TK::String && options_.axStrings && !libraryFiles_.count(e.loc.file))
-        if (auto* bytes = dynamic_cast<exec::ConstBytes*>(a.node); bytes && bytes->bytes.size() >= 2 && bytes->bytes[0] != 0 && bytes->bytes[1] == 0)
+        if (auto* bytes = exec::nodeCast<exec::ConstBytes>(a.node); bytes && bytes->bytes.size() >= 2 && bytes->bytes[0] != 0 && bytes->bytes[1] == 0)
             a = coerce(a, types().elementary(TK::Char), e.args[0].value->loc, key.c_str());
     if (!from && isStringType(a.type->kind)) {
         handled = false;  // TO_INT('12'): a STRING source is a stdlib conversion (interpreter/builtins)
@@ -831,7 +831,7 @@ exec::Stmt* Checker::callFunctionBlock(Checked inst, const ast::Expr& e) {
         // parameter's own type, or a literal (checked against the input's
         // range by the assignment) converted to it.
         const Field* field = inst.type->findField(upper(p->name));
-        const bool literal = v.isConst && (dynamic_cast<exec::ConstInt*>(v.node) || dynamic_cast<exec::ConstReal*>(v.node));
+        const bool literal = v.isConst && (exec::nodeCast<exec::ConstInt>(v.node) || exec::nodeCast<exec::ConstReal>(v.node));
         const bool asIs = sameType(v.type, p->type) || (literal && v.untypedInt && isInteger(p->type->kind)) ||
                           (literal && (v.untypedInt || v.untypedReal) && isReal(p->type->kind));
         exec::ArgBind bind;

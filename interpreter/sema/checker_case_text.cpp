@@ -36,7 +36,7 @@ bool Checker::caseTextLabel(exec::Expr* key, const Type* selector, Checked& labe
         out = c.constInt;
         return true;
     }
-    auto* bytes = dynamic_cast<exec::ConstBytes*>(label.node);
+    auto* bytes = exec::nodeCast<exec::ConstBytes>(label.node);
     if (!label.type || !isStringType(label.type->kind) || label.type->kind != selector->kind || !bytes) {
         error(diag::E0503, loc, fmt::format("CASE label of type {} does not match the selector type {}", typeName(label.type), typeName(selector)));
         return false;

@@ -111,7 +111,7 @@ void Checker::buildConfiguration() {
         if (!c.ok) return false;
         if (c.type->kind != TK::Bool || !c.isPlace || c.direct != Checked::Direct::Abs) {
             if (c.type->kind == TK::Bool && c.node->bitIndex() >= 0) {
-                auto* bp = dynamic_cast<exec::BitPlace<uint8_t>*>(c.node);
+                auto* bp = exec::nodeCast<exec::BitPlace<uint8_t>>(c.node);
                 exec::Ctx dummy;
                 out.byte = bp->base->addr(dummy);
                 out.bit = bp->bit;

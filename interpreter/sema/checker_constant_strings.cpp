@@ -16,7 +16,7 @@ void Checker::foldStringConstant(VarSym& v, const ast::VarDecl& decl) {
     if (c.ok) c = coerce(c, v.type, decl.init->loc, "initial value");
     log_.dropFrom(messagesBefore);
     if (!c.ok || !c.isConst) return;
-    auto* text = dynamic_cast<exec::ConstBytes*>(c.node);
+    auto* text = exec::nodeCast<exec::ConstBytes>(c.node);
     if (!text) return;
     // The value as the variable holds it: cut to its length, NUL-terminated.
     std::vector<uint8_t> bytes(v.type->size, 0);

@@ -1131,7 +1131,7 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
                 }
                 writeScalar(p, t, c);
             } else if (isStringType(t->kind)) {
-                auto* bytes = dynamic_cast<exec::ConstBytes*>(c.node);
+                auto* bytes = exec::nodeCast<exec::ConstBytes>(c.node);
                 if (!bytes) {
                     if (!deferred()) error(diag::E0401, init->expr->loc, "an initial value must be a constant expression");
                     return;
@@ -1149,7 +1149,7 @@ void Checker::writeInitial(uint8_t* p, const Type* t, const ast::Init* init, con
                 // in LCLS's PMPS_GVL CONSTANT list): its image, written when it was
                 // declared, is its value for good (decision 0462).
                 std::memcpy(p, named->abs, t->size);
-            } else if (auto* image = dynamic_cast<exec::ConstBytes*>(c.node);
+            } else if (auto* image = exec::nodeCast<exec::ConstBytes>(c.node);
                        image && c.isConst && t->kind == TK::Struct && sameType(c.type, t) && image->bytes.size() == t->size) {
                 std::memcpy(p, image->bytes.data(), t->size);  // the same, named in a TYPE (earlyStructureConstant)
             } else if (!deferred()) {

@@ -965,7 +965,7 @@ Checked Checker::checkIndex(const ast::Expr& e) {
         n->elemSize = t->elem->size;
         n->site = site(e.loc);
         // ref^[i] of a REF_TO ARRAY[*]: the same, after its NULL test (decision 0402).
-        auto* viaRef = dynamic_cast<exec::FlexRefDesc*>(base.flexDesc);
+        auto* viaRef = exec::nodeCast<exec::FlexRefDesc>(base.flexDesc);
         exec::FlexRefIndexPlace* r = nullptr;
         if (viaRef) {
             r = pool().make<exec::FlexRefIndexPlace>();
@@ -1032,7 +1032,7 @@ Checked Checker::checkIndex(const ast::Expr& e) {
     }
     // PT^[i] through a pointer to an array: the pointer only has to lead into
     // project memory, and the element itself is checked (MemoryCheckedPlace).
-    auto* deref = dynamic_cast<exec::DerefPlace*>(base.node);
+    auto* deref = exec::nodeCast<exec::DerefPlace>(base.node);
     if (deref) deref->targetSize = 1;
     auto throughPointer = [&](exec::Expr* place) -> exec::Expr* {
         if (!deref) return place;
@@ -1059,7 +1059,7 @@ Checked Checker::checkIndex(const ast::Expr& e) {
             case Checked::Direct::Frame: n = makeByRep<Index1Frame>(pool(), rep); break;
             default: n = makeByRep<Index1Abs>(pool(), rep); break;
         }
-        auto* f = dynamic_cast<exec::Index1Fields*>(n);
+        auto* f = exec::nodeCast<exec::Index1Fields>(n);
         f->off = base.directOffset;
         f->abs = base.directAbs ? base.directAbs + base.directOffset : nullptr;
         f->index = dims[0].index;
@@ -1331,7 +1331,7 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
     }
     if (isCharType(target->kind) && isStringType(from->kind) && e.isConst) {
         // c : CHAR := 'A': a one-character string literal is that character.
-        if (auto* bytes = dynamic_cast<exec::ConstBytes*>(e.node)) {
+        if (auto* bytes = exec::nodeCast<exec::ConstBytes>(e.node)) {
             bool wide = from->kind == TK::WString;
             int64_t first = wide ? (bytes->bytes[0] | (bytes->bytes[1] << 8)) : bytes->bytes[0];
             int64_t second = wide ? (bytes->bytes.size() > 3 ? (bytes->bytes[2] | (bytes->bytes[3] << 8)) : 0) : (bytes->bytes.size() > 1 ? bytes->bytes[1] : 0);
@@ -1372,7 +1372,7 @@ Checked Checker::coerce(Checked e, const Type* target, const ast::Loc& loc, cons
     // implements, as SIMATIC AX returns it (`Append := THIS;`, decision 0366):
     // checked as the instance THIS^ itself.
     if (target->kind == TK::Interface && from->kind == TK::Pointer && from->target && from->target->kind == TK::FunctionBlock &&
-        e.node && dynamic_cast<exec::SelfAddress*>(e.node)) {
+        e.node && exec::nodeCast<exec::SelfAddress>(e.node)) {
         Checked self = e;
         self.type = from->target;
         self.isPlace = true;

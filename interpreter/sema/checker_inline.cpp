@@ -179,7 +179,7 @@ void Checker::inlineLeafCalls() {
             site.fbCall->inlined = in;  // its inputs are stored into the instance, not the frame
             site.fbCall->quick = quickInputs(*site.fbCall);
             // A block instance that is a variable of the caller's instance: its address read inline.
-            if (auto* var = dynamic_cast<exec::VarNode<void, exec::BaseKind::Self>*>(site.fbCall->instance)) {
+            if (auto* var = exec::nodeCast<exec::VarNode<void, exec::BaseKind::Self>>(site.fbCall->instance)) {
                 in->instanceOnSelf = true;
                 in->instanceOffset = var->off;
             }

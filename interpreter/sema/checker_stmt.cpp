@@ -21,9 +21,9 @@ uint32_t alignFrameTop(uint32_t v, uint32_t a) { return a <= 1 ? v : (v + a - 1)
 template <class T, bool FRAME>
 exec::Stmt* makeLocal(exec::NodePool& pool, uint32_t off, exec::Expr* v) {
     // x := F(...): the call runs without the dispatch to its value node (decision 0154).
-    if (auto* call = dynamic_cast<exec::CallPou*>(v)) return pool.make<exec::AssignCallLocal<T, FRAME>>(off, call);
+    if (auto* call = exec::nodeCast<exec::CallPou>(v)) return pool.make<exec::AssignCallLocal<T, FRAME>>(off, call);
     // x := a OP b with the operator fused (decision 0154).
-    if (auto* op = dynamic_cast<exec::FusedArith*>(v))
+    if (auto* op = exec::nodeCast<exec::FusedArith>(v))
         if (exec::Stmt* n = op->makeAssignLocal(pool, FRAME, off, typeid(T))) return n;
     return pool.make<exec::AssignLocal<T, FRAME>>(off, v);
 }
@@ -48,7 +48,7 @@ exec::Stmt* assignLocal(exec::NodePool& pool, Rep rep, uint32_t off, exec::Expr*
 
 template <class T>
 exec::Stmt* assignBitTyped(exec::NodePool& pool, exec::Expr* place, exec::Expr* v) {
-    auto* bp = dynamic_cast<exec::BitPlace<T>*>(place);
+    auto* bp = exec::nodeCast<exec::BitPlace<T>>(place);
     return bp ? pool.make<exec::AssignBit<T>>(bp->base, bp->bit, v) : nullptr;
 }
 }  // namespace
@@ -79,10 +79,10 @@ exec::Stmt* Checker::storeTo(exec::Expr* place, const Type* t, exec::Expr* value
         if (exec::Stmt* n = fuseAppendInPlace(pool(), t->kind == TK::WString, place, t->maxLen, value)) return n;
     if (t->kind == TK::String) return pool().make<exec::AssignString<char>>(place, value, t->maxLen);
     if (t->kind == TK::WString) return pool().make<exec::AssignString<char16_t>>(place, value, t->maxLen);
-    if (auto* part = dynamic_cast<exec::ClassPartOf*>(value))  // a derived instance into a base class variable (decision 0392)
+    if (auto* part = exec::nodeCast<exec::ClassPartOf>(value))  // a derived instance into a base class variable (decision 0392)
         return pool().make<exec::AssignClassPart>(place, part->instance, static_cast<uint32_t>(sizeof(const exec::ClassDesc*)), t->size);
     if (isAggregate(t)) return pool().make<exec::AssignBytes>(place, value, t->size);
-    if (auto* element = dynamic_cast<exec::Index1Target*>(place))  // a[i] := value (decision 0154)
+    if (auto* element = exec::nodeCast<exec::Index1Target>(place))  // a[i] := value (decision 0154)
         if (exec::Stmt* n = element->makeStore(pool(), value, repOf(t) == Rep::Bool)) return n;
     if (exec::Stmt* n = fuseStorePending(pool(), repOf(t), place, value)) return n;  // call arguments, FB inputs
     if (exec::Stmt* n = fuseAssignConst(pool(), repOf(t), value, place, exec::BaseKind::Self, 0)) return n;

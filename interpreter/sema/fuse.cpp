@@ -27,18 +27,18 @@ exec::Stmt* addConst(exec::NodePool& pool, uint32_t off, exec::Expr* value) {
     using C = std::conditional_t<(sizeof(T) < 4), int32_t, T>;  // arithmeticRep
     using V = exec::VarNode<T, B>;
     auto same = [&](exec::Expr* e) {
-        auto* v = dynamic_cast<V*>(e);
+        auto* v = exec::nodeCast<V>(e);
         return v && v->off == off;
     };
-    if (auto* n = dynamic_cast<exec::AddIK<C>*>(value); n && same(n->l)) return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(n->b));
-    if (auto* n = dynamic_cast<exec::SubIK<C>*>(value); n && same(n->l))
+    if (auto* n = exec::nodeCast<exec::AddIK<C>>(value); n && same(n->l)) return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(n->b));
+    if (auto* n = exec::nodeCast<exec::SubIK<C>>(value); n && same(n->l))
         return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(0 - static_cast<uint64_t>(static_cast<int64_t>(n->b))));
     if constexpr (std::is_same_v<C, T>) {
         using OV = exec::OpVar<T, B>;
         using K = exec::OpConst<T>;
-        if (auto* n = dynamic_cast<exec::FusedBin<T, BinOp::Add, OV, K>*>(value); n && n->l.off == off)
+        if (auto* n = exec::nodeCast<exec::FusedBin<T, BinOp::Add, OV, K>>(value); n && n->l.off == off)
             return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(n->r.k));
-        if (auto* n = dynamic_cast<exec::FusedBin<T, BinOp::Sub, OV, K>*>(value); n && n->l.off == off)
+        if (auto* n = exec::nodeCast<exec::FusedBin<T, BinOp::Sub, OV, K>>(value); n && n->l.off == off)
             return pool.make<exec::AddConstLocal<T, B>>(off, static_cast<int64_t>(0 - static_cast<uint64_t>(static_cast<int64_t>(n->r.k))));
     }
     return nullptr;
@@ -70,8 +70,8 @@ struct IndexLeaf {
 
 template <class S, exec::IndexFrom SELF, exec::IndexFrom FRAME>
 bool indexVar(exec::Expr* e, IndexLeaf& out) {
-    if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Self>*>(e)) { out.from = SELF; out.off = v->off; return true; }
-    if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Frame>*>(e)) { out.from = FRAME; out.off = v->off; return true; }
+    if (auto* v = exec::nodeCast<exec::VarNode<S, BaseKind::Self>>(e)) { out.from = SELF; out.off = v->off; return true; }
+    if (auto* v = exec::nodeCast<exec::VarNode<S, BaseKind::Frame>>(e)) { out.from = FRAME; out.off = v->off; return true; }
     return false;
 }
 
@@ -92,16 +92,16 @@ IndexLeaf indexLeafOf(exec::Expr* e) {
         leaf.off = off;
         leaf.add = static_cast<int32_t>(negate ? 0u - static_cast<uint32_t>(k) : static_cast<uint32_t>(k));
     };
-    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, VS, K>*>(e)) { fusedAdd(exec::IndexFrom::Self32, n->l.off, n->r.k, false); return leaf; }
-    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, VS, K>*>(e)) { fusedAdd(exec::IndexFrom::Self32, n->l.off, n->r.k, true); return leaf; }
-    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Add, VF, K>*>(e)) { fusedAdd(exec::IndexFrom::Frame32, n->l.off, n->r.k, false); return leaf; }
-    if (auto* n = dynamic_cast<exec::FusedBin<int32_t, BinOp::Sub, VF, K>*>(e)) { fusedAdd(exec::IndexFrom::Frame32, n->l.off, n->r.k, true); return leaf; }
+    if (auto* n = exec::nodeCast<exec::FusedBin<int32_t, BinOp::Add, VS, K>>(e)) { fusedAdd(exec::IndexFrom::Self32, n->l.off, n->r.k, false); return leaf; }
+    if (auto* n = exec::nodeCast<exec::FusedBin<int32_t, BinOp::Sub, VS, K>>(e)) { fusedAdd(exec::IndexFrom::Self32, n->l.off, n->r.k, true); return leaf; }
+    if (auto* n = exec::nodeCast<exec::FusedBin<int32_t, BinOp::Add, VF, K>>(e)) { fusedAdd(exec::IndexFrom::Frame32, n->l.off, n->r.k, false); return leaf; }
+    if (auto* n = exec::nodeCast<exec::FusedBin<int32_t, BinOp::Sub, VF, K>>(e)) { fusedAdd(exec::IndexFrom::Frame32, n->l.off, n->r.k, true); return leaf; }
     IndexLeaf inner;
-    if (auto* n = dynamic_cast<exec::AddIK<int32_t>*>(e); n && anyIndexVar(n->l, inner)) {
+    if (auto* n = exec::nodeCast<exec::AddIK<int32_t>>(e); n && anyIndexVar(n->l, inner)) {
         inner.add = n->b;
         return inner;
     }
-    if (auto* n = dynamic_cast<exec::SubIK<int32_t>*>(e); n && anyIndexVar(n->l, inner)) {
+    if (auto* n = exec::nodeCast<exec::SubIK<int32_t>>(e); n && anyIndexVar(n->l, inner)) {
         inner.add = static_cast<int32_t>(0u - static_cast<uint32_t>(n->b));
         return inner;
     }
@@ -138,7 +138,7 @@ exec::Stmt* assignConstTyped(exec::NodePool& pool, T k, exec::Expr* place, BaseK
 }  // namespace
 
 exec::Stmt* fuseAssignConst(exec::NodePool& pool, Rep rep, exec::Expr* value, exec::Expr* place, BaseKind base, uint32_t off) {
-    if (!dynamic_cast<exec::ConstInt*>(value) && !dynamic_cast<exec::ConstReal*>(value)) return nullptr;
+    if (!exec::nodeCast<exec::ConstInt>(value) && !exec::nodeCast<exec::ConstReal>(value)) return nullptr;
     exec::Ctx none;  // constants read nothing from the context
     switch (rep) {
         case Rep::I8: return assignConstTyped<int8_t>(pool, static_cast<int8_t>(value->i(none)), place, base, off);
@@ -161,9 +161,9 @@ template <class T, class S = T>
 exec::Stmt* storePending(exec::NodePool& pool, Rep rep, exec::Expr* place, exec::Expr* value) {
     BaseKind base;
     uint32_t off;
-    if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Pending>*>(place)) base = BaseKind::Pending, off = v->off;
-    else if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Self>*>(place)) base = BaseKind::Self, off = v->off;
-    else if (auto* v = dynamic_cast<exec::VarNode<S, BaseKind::Frame>*>(place)) base = BaseKind::Frame, off = v->off;
+    if (auto* v = exec::nodeCast<exec::VarNode<S, BaseKind::Pending>>(place)) base = BaseKind::Pending, off = v->off;
+    else if (auto* v = exec::nodeCast<exec::VarNode<S, BaseKind::Self>>(place)) base = BaseKind::Self, off = v->off;
+    else if (auto* v = exec::nodeCast<exec::VarNode<S, BaseKind::Frame>>(place)) base = BaseKind::Frame, off = v->off;
     else return nullptr;
     if (exec::Stmt* k = fuseAssignConst(pool, rep, value, nullptr, base, off)) return k;
     switch (base) {
@@ -178,7 +178,7 @@ namespace {
 // T: the assignment's type; S: the storage type of its variables (a BOOL's byte).
 template <class T, class S, bool DST_FRAME>
 exec::Stmt* copyLocalAs(exec::NodePool& pool, exec::Stmt* assign) {
-    auto* a = dynamic_cast<exec::AssignLocal<T, DST_FRAME>*>(assign);
+    auto* a = exec::nodeCast<exec::AssignLocal<T, DST_FRAME>>(assign);
     if (!a) return nullptr;
     const Leaf<S> from = leafOf<S>(a->value);
     if (from.kind == LeafKind::Self) return pool.make<exec::CopyLocal<T, DST_FRAME, false>>(a->off, from.off);
@@ -229,7 +229,7 @@ exec::Expr* fuseIndex1(exec::NodePool& pool, Rep rep, BaseKind base, const exec:
         case BaseKind::Abs: n = index1From<BaseKind::Abs>(pool, rep, leaf.from); break;
         default: return nullptr;
     }
-    auto* f = dynamic_cast<exec::Index1Fields*>(n);
+    auto* f = exec::nodeCast<exec::Index1Fields>(n);
     *f = fields;
     f->indexOff = leaf.off;
     f->indexAdd = leaf.add;
@@ -252,7 +252,7 @@ exec::Stmt* fuseAddConstLocal(exec::NodePool& pool, Rep rep, bool frame, uint32_
 
 exec::Expr* fuseRealToInt(exec::NodePool& pool, exec::Expr* value, int bits, bool isSigned, bool truncate) {
     // REAL_TO_DINT(x * 10.0): the conversion computes the operator itself (decision 0262).
-    if (auto* op = dynamic_cast<exec::FusedArith*>(value); op && (bits == 8 || bits == 16 || bits == 32 || bits == 64))
+    if (auto* op = exec::nodeCast<exec::FusedArith>(value); op && (bits == 8 || bits == 16 || bits == 32 || bits == 64))
         if (exec::Expr* n = op->makeRealToInt(pool, exec::RealToIntForm{static_cast<uint8_t>(bits), isSigned, truncate})) return n;
     switch (bits) {
         case 8: return isSigned ? realToInt<int8_t>(pool, value, bits, isSigned, truncate) : realToInt<uint8_t>(pool, value, bits, isSigned, truncate);
@@ -264,7 +264,7 @@ exec::Expr* fuseRealToInt(exec::NodePool& pool, exec::Expr* value, int bits, boo
 }
 
 exec::Stmt* fuseIf(exec::NodePool& pool, exec::Expr* cond, exec::Block* then, exec::Stmt* otherwise) {
-    if (auto* cmp = dynamic_cast<exec::FusedCompare*>(cond)) return cmp->makeIf(pool, then, otherwise);
+    if (auto* cmp = exec::nodeCast<exec::FusedCompare>(cond)) return cmp->makeIf(pool, then, otherwise);
     // IF flag / IF flags[i] on a BOOL (stored as a byte; a condition is
     // always BOOL) read inline.
     if (Leaf<uint8_t> v = leafOf<uint8_t>(cond); v.isVar())
@@ -272,14 +272,14 @@ exec::Stmt* fuseIf(exec::NodePool& pool, exec::Expr* cond, exec::Block* then, ex
     if (exec::OpElem<uint8_t> e; fusion::elemOf<uint8_t>(cond, e))
         return pool.make<exec::IfBool<exec::OpElem<uint8_t>>>(e, then, otherwise);
     // IF a OR b (a AND b, a XOR b): the IF evaluates both operands itself.
-    if (auto* n = dynamic_cast<exec::OrI<uint8_t>*>(cond)) return pool.make<exec::IfLogic<BinOp::Or>>(n->l, n->r, then, otherwise);
-    if (auto* n = dynamic_cast<exec::AndI<uint8_t>*>(cond)) return pool.make<exec::IfLogic<BinOp::And>>(n->l, n->r, then, otherwise);
-    if (auto* n = dynamic_cast<exec::XorI<uint8_t>*>(cond)) return pool.make<exec::IfLogic<BinOp::Xor>>(n->l, n->r, then, otherwise);
+    if (auto* n = exec::nodeCast<exec::OrI<uint8_t>>(cond)) return pool.make<exec::IfLogic<BinOp::Or>>(n->l, n->r, then, otherwise);
+    if (auto* n = exec::nodeCast<exec::AndI<uint8_t>>(cond)) return pool.make<exec::IfLogic<BinOp::And>>(n->l, n->r, then, otherwise);
+    if (auto* n = exec::nodeCast<exec::XorI<uint8_t>>(cond)) return pool.make<exec::IfLogic<BinOp::Xor>>(n->l, n->r, then, otherwise);
     return nullptr;
 }
 
 exec::Stmt* fuseWhile(exec::NodePool& pool, exec::Expr* cond, exec::Block* body) {
-    if (auto* cmp = dynamic_cast<exec::FusedCompare*>(cond)) return cmp->makeWhile(pool, body);
+    if (auto* cmp = exec::nodeCast<exec::FusedCompare>(cond)) return cmp->makeWhile(pool, body);
     return nullptr;
 }
 
@@ -312,7 +312,7 @@ bool copySource(exec::Expr* value, exec::ArgBind& out) {
 
 template <class T>
 bool integerArg(exec::Expr* value, exec::ArgBind& out) {
-    if (dynamic_cast<exec::ConstInt*>(value)) {
+    if (exec::nodeCast<exec::ConstInt>(value)) {
         exec::Ctx none;  // constants read nothing from the context
         out.how = withWidth(How::Const1, sizeof(T));
         out.bits = static_cast<uint64_t>(static_cast<std::make_unsigned_t<T>>(static_cast<T>(value->i(none))));
@@ -326,7 +326,7 @@ bool integerArg(exec::Expr* value, exec::ArgBind& out) {
 
 template <class T>
 bool realArg(exec::Expr* value, exec::ArgBind& out) {
-    if (dynamic_cast<exec::ConstInt*>(value) || dynamic_cast<exec::ConstReal*>(value)) {
+    if (exec::nodeCast<exec::ConstInt>(value) || exec::nodeCast<exec::ConstReal>(value)) {
         exec::Ctx none;
         T k = static_cast<T>(value->f(none));
         out.how = withWidth(How::Const1, sizeof(T));
@@ -356,7 +356,7 @@ bool fuseArgBind(Rep rep, uint32_t dst, exec::Expr* value, exec::ArgBind& out) {
         case Rep::U64: return integerArg<uint64_t>(value, out);
         case Rep::Bool:
             // A constant, or else through the value: a BOOL is stored as 0/1 whatever its source holds.
-            if (dynamic_cast<exec::ConstInt*>(value)) {
+            if (exec::nodeCast<exec::ConstInt>(value)) {
                 exec::Ctx none;
                 out.how = How::Const1;
                 out.bits = value->i(none) != 0;

@@ -36,16 +36,16 @@ exec::Expr* make(exec::NodePool& pool, L l, R r) {
 template <class T>
 bool computedOperand(exec::Expr* e) {
     if constexpr (!std::is_floating_point_v<T>)
-        if (dynamic_cast<exec::IntOperator*>(e)) return true;
-    return dynamic_cast<exec::FusedArith*>(e) || dynamic_cast<exec::Index1Target*>(e);
+        if (exec::nodeCast<exec::IntOperator>(e)) return true;
+    return exec::nodeCast<exec::FusedArith>(e) || exec::nodeCast<exec::Index1Target>(e);
 }
 
 // The constant value of `e` as T, when it is a constant node.
 template <class T>
 std::optional<T> constOf(exec::Expr* e) {
     exec::Ctx none;  // constants read nothing from the context
-    if (auto* ci = dynamic_cast<exec::ConstInt*>(e)) return std::is_floating_point_v<T> ? static_cast<T>(ci->f(none)) : static_cast<T>(ci->i(none));
-    if (auto* cr = dynamic_cast<exec::ConstReal*>(e); cr && std::is_floating_point_v<T>) return static_cast<T>(cr->f(none));
+    if (auto* ci = exec::nodeCast<exec::ConstInt>(e)) return std::is_floating_point_v<T> ? static_cast<T>(ci->f(none)) : static_cast<T>(ci->i(none));
+    if (auto* cr = exec::nodeCast<exec::ConstReal>(e); cr && std::is_floating_point_v<T>) return static_cast<T>(cr->f(none));
     return std::nullopt;
 }
 

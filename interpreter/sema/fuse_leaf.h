@@ -31,15 +31,15 @@ auto withVar(const Leaf<T>& v, F&& f) {
 template <class T>
 Leaf<T> leafOf(exec::Expr* e) {
     if (!e) return {};
-    if (auto* v = dynamic_cast<exec::VarNode<T, BaseKind::Self>*>(e)) return {LeafKind::Self, v->off, T{}};
-    if (auto* v = dynamic_cast<exec::VarNode<T, BaseKind::Frame>*>(e)) return {LeafKind::Frame, v->off, T{}};
+    if (auto* v = exec::nodeCast<exec::VarNode<T, BaseKind::Self>>(e)) return {LeafKind::Self, v->off, T{}};
+    if (auto* v = exec::nodeCast<exec::VarNode<T, BaseKind::Frame>>(e)) return {LeafKind::Frame, v->off, T{}};
     return {};
 }
 
 namespace detail {
 template <class T, BaseKind B, exec::IndexFrom IX>
 bool elemAs(exec::Expr* e, exec::OpElem<T>& out) {
-    auto* n = dynamic_cast<exec::Index1Var<T, B, IX>*>(e);
+    auto* n = exec::nodeCast<exec::Index1Var<T, B, IX>>(e);
     if (!n) return false;
     out.base = exec::ctxBase<B>();
     out.off = n->off;

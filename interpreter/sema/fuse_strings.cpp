@@ -20,9 +20,9 @@ struct StringVar {
 
 StringVar stringVarOf(exec::Expr* e) {
     using exec::BaseKind;
-    if (auto* v = dynamic_cast<exec::VarNode<void, BaseKind::Self>*>(e)) return {StringVar::Kind::Self, v->off, nullptr};
-    if (auto* v = dynamic_cast<exec::VarNode<void, BaseKind::Frame>*>(e)) return {StringVar::Kind::Frame, v->off, nullptr};
-    if (auto* v = dynamic_cast<exec::VarNode<void, BaseKind::Abs>*>(e)) return {StringVar::Kind::Abs, v->off, v->abs};
+    if (auto* v = exec::nodeCast<exec::VarNode<void, BaseKind::Self>>(e)) return {StringVar::Kind::Self, v->off, nullptr};
+    if (auto* v = exec::nodeCast<exec::VarNode<void, BaseKind::Frame>>(e)) return {StringVar::Kind::Frame, v->off, nullptr};
+    if (auto* v = exec::nodeCast<exec::VarNode<void, BaseKind::Abs>>(e)) return {StringVar::Kind::Abs, v->off, v->abs};
     return {};
 }
 
@@ -38,7 +38,7 @@ exec::Stmt* make(exec::NodePool& pool, const StringVar& target, uint32_t limit, 
 
 template <class Ch>
 exec::Stmt* fuseTyped(exec::NodePool& pool, exec::Expr* place, uint32_t placeMaxLen, exec::Expr* value) {
-    auto* concat = dynamic_cast<exec::ConcatNode<Ch>*>(value);
+    auto* concat = exec::nodeCast<exec::ConcatNode<Ch>>(value);
     if (!concat || concat->parts.size() < 2) return nullptr;
     StringVar target = stringVarOf(place);
     if (target.kind == StringVar::Kind::None || !target.sameStorage(stringVarOf(concat->parts[0]))) return nullptr;
@@ -46,7 +46,7 @@ exec::Stmt* fuseTyped(exec::NodePool& pool, exec::Expr* place, uint32_t placeMax
     // variables, which neither change s nor share its storage.
     std::vector<exec::Expr*> pieces(concat->parts.begin() + 1, concat->parts.end());
     for (exec::Expr* p : pieces) {
-        if (dynamic_cast<exec::ConstBytes*>(p)) continue;
+        if (exec::nodeCast<exec::ConstBytes>(p)) continue;
         StringVar v = stringVarOf(p);
         if (v.kind == StringVar::Kind::None || v.sameStorage(target)) return nullptr;
         if (v.kind == StringVar::Kind::Abs && target.kind == StringVar::Kind::Abs) {

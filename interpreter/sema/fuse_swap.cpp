@@ -17,7 +17,7 @@ using exec::IndexFrom;
 // The element operand that the place of a[j] := ... (AssignIndex1) stores to.
 template <class T, BaseKind B, IndexFrom IX>
 bool storeAs(exec::Stmt* s, exec::OpElem<T>& place, exec::Expr*& value) {
-    auto* n = dynamic_cast<exec::AssignIndex1<T, B, IX>*>(s);
+    auto* n = exec::nodeCast<exec::AssignIndex1<T, B, IX>>(s);
     if (!n) return false;
     place.base = exec::ctxBase<B>();
     place.off = n->off;
@@ -64,8 +64,8 @@ exec::Stmt* swapOf(exec::NodePool& pool, exec::Stmt* s1, exec::Stmt* s2, exec::S
     exec::CtxBase tmpBase;
     uint32_t tmpOff;
     exec::Expr* v1;
-    if (auto* n = dynamic_cast<exec::AssignLocal<T, false>*>(s1)) tmpBase = &exec::Ctx::self, tmpOff = n->off, v1 = n->value;
-    else if (auto* n = dynamic_cast<exec::AssignLocal<T, true>*>(s1)) tmpBase = &exec::Ctx::frame, tmpOff = n->off, v1 = n->value;
+    if (auto* n = exec::nodeCast<exec::AssignLocal<T, false>>(s1)) tmpBase = &exec::Ctx::self, tmpOff = n->off, v1 = n->value;
+    else if (auto* n = exec::nodeCast<exec::AssignLocal<T, true>>(s1)) tmpBase = &exec::Ctx::frame, tmpOff = n->off, v1 = n->value;
     else return nullptr;
     exec::OpElem<T> x;
     if (!fusion::elemOf<T>(v1, x)) return nullptr;
