@@ -44,6 +44,9 @@ std::span<const LibraryName> libraryNames();
 // a word without building anything at start-up.
 std::span<const uint64_t, 256> libraryNameMasksByFirst();
 std::span<const uint64_t, 256> libraryNameMasksByLast();
+// Bit mentions::foldedNameHash(name) is set for every such name: the
+// second test of the word scan, after the masks (stdlib/library_mentions.h).
+std::span<const uint64_t> libraryNameHashSet();
 
 // What the code of embedded file `file` needs, computed at build time by the
 // rule a project's text is scanned with (stdlib/library_mentions.h; comments

@@ -21,11 +21,15 @@ namespace mentions = stdlib::mentions;
 struct NameMasks {
     std::span<const uint64_t, 256> byFirst = stdlib::libraryNameMasksByFirst();
     std::span<const uint64_t, 256> byLast = stdlib::libraryNameMasksByLast();
+    std::span<const uint64_t> hashSet = stdlib::libraryNameHashSet();
     bool mayBeName(std::string_view w) const {
-        if (w.size() >= 64) return true;
         if (w.empty()) return false;
-        const uint64_t bit = uint64_t{1} << w.size();
-        return (byFirst[static_cast<unsigned char>(w.front())] & bit) != 0 && (byLast[static_cast<unsigned char>(w.back())] & bit) != 0;
+        if (w.size() < 64) {
+            const uint64_t bit = uint64_t{1} << w.size();
+            if ((byFirst[static_cast<unsigned char>(w.front())] & bit) == 0 || (byLast[static_cast<unsigned char>(w.back())] & bit) == 0) return false;
+        }
+        const uint32_t h = mentions::foldedNameHash(w);
+        return (hashSet[h / 64] >> (h % 64) & 1) != 0;
     }
 };
 

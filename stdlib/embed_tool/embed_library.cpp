@@ -417,8 +417,12 @@ int main(int argc, char** argv) {
     // The letter masks of the selecting names (library_registry.h), computed
     // here so that start-up does not walk the whole registry to build them.
     uint64_t byFirst[256] = {}, byLast[256] = {};
+    std::vector<uint64_t> hashSet((size_t{1} << strun::stdlib::mentions::kNameHashBits) / 64);
     for (const Name& n : names) {
-        if (n.kind == 'U' || n.upper.empty() || n.upper.size() >= 64) continue;
+        if (n.kind == 'U' || n.upper.empty()) continue;
+        const uint32_t h = strun::stdlib::mentions::foldedNameHash(n.upper);
+        hashSet[h / 64] |= uint64_t{1} << (h % 64);
+        if (n.upper.size() >= 64) continue;  // the masks pass every word this long
         const uint64_t bit = uint64_t{1} << n.upper.size();
         for (unsigned char c : {static_cast<unsigned char>(n.upper.front()), static_cast<unsigned char>(std::tolower(static_cast<unsigned char>(n.upper.front())))})
             byFirst[c] |= bit;
@@ -432,6 +436,10 @@ int main(int argc, char** argv) {
     };
     masks("kMaskByFirst", byFirst);
     masks("kMaskByLast", byLast);
+    o << "static constexpr uint64_t kNameHashSet[] = {";
+    for (size_t i = 0; i < hashSet.size(); ++i) o << (i % 8 == 0 ? "\n   " : "") << " 0x" << std::hex << hashSet[i] << std::dec << "u,";
+    o << "\n};\n";
+    o << "std::span<const uint64_t> libraryNameHashSet() { return kNameHashSet; }\n";
     o << "std::span<const uint64_t, 256> libraryNameMasksByFirst() { return std::span<const uint64_t, 256>(kMaskByFirst); }\n"
          "std::span<const uint64_t, 256> libraryNameMasksByLast() { return std::span<const uint64_t, 256>(kMaskByLast); }\n";
     o << "}  // namespace strun::stdlib\n";

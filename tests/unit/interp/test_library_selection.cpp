@@ -1,11 +1,14 @@
 // The embedded library files a project gets: only those it mentions
 // (interpreter/project/library_selection.h, decision 0150).
 #include <algorithm>
+#include <cctype>
 #include <string>
 
 #include <catch2/catch.hpp>
 
 #include "interpreter/project/library_selection.h"
+#include "stdlib/embedded_sources.h"
+#include "stdlib/library_mentions.h"
 #include "stdlib/library_registry.h"
 
 namespace {
@@ -188,4 +191,35 @@ TEST_CASE("an enumeration value still selects its file, as does its block", "[li
     // enumeration without its type.
     CHECK(has(selectedPaths({"d := MC_Negative_Direction;"}), "stdlib/Tc2_MC2/types.st"));
     CHECK(has(selectedPaths({"m : MC_MoveVelocity; m(Direction := d);"}), "stdlib/Tc2_MC2/types.st"));
+}
+
+// Decision 0493: the word scan's hash filter never drops a selecting name.
+TEST_CASE("every name that selects a file or natives passes the word filter, in any case", "[library]") {
+    const auto hashSet = strun::stdlib::libraryNameHashSet();
+    auto inSet = [&](std::string_view w) {
+        const uint32_t h = strun::stdlib::mentions::foldedNameHash(w);
+        return (hashSet[h / 64] >> (h % 64) & 1) != 0;
+    };
+    const auto& sources = strun::stdlib::embeddedSources();
+    size_t checkedFiles = 0;
+    for (const strun::stdlib::LibraryName& n : strun::stdlib::libraryNames()) {
+        if (n.kind == 'U') continue;
+        std::string lower(n.upper);
+        for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        INFO(n.upper);
+        CHECK(inSet(n.upper));
+        CHECK(inSet(lower));
+        if (n.written.find('.') == std::string_view::npos) CHECK(inSet(n.written));  // a dotted namespace's path is no word
+        // Written in lower case where a project uses it, the name still selects its file.
+        if (n.file >= 0 && (n.kind == 'B' || n.kind == 'T' || n.kind == 'E' || n.kind == 'G' || n.kind == 'F')) {
+            const std::string text = "x := " + lower + (n.kind == 'F' ? "(1);" : ";");
+            const auto s = strun::project::selectLibraries({text});
+            const auto* want = &sources[static_cast<size_t>(n.file)];
+            CHECK(std::find(s.files.begin(), s.files.end(), want) != s.files.end());
+            ++checkedFiles;
+        }
+    }
+    CHECK(checkedFiles > 500);
+    // The words a program is full of are let through by neither test.
+    for (std::string_view w : {"END_VAR", "enable", "setpoint", "timer", "END_FUNCTION_BLOCK"}) CHECK_FALSE(inSet(w));
 }
