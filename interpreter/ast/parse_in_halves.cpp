@@ -52,7 +52,8 @@ std::optional<std::size_t> splitPoint(const std::vector<ScannedToken>& tokens) {
 }
 
 struct Half {
-    std::vector<ScannedToken> tokens;  // ending with EOF
+    std::span<const ScannedToken> tokens;  // the file's, not copied (decision 0493)
+    const ScannedToken* eof = nullptr;     // the first half's: where the second starts
     CompilationUnit unit;
     bool clean = false;
 };
@@ -62,7 +63,7 @@ struct Half {
 // shared by all parsers (ATNSimulator::_stateLock and _edgeLock are static).
 void parseHalf(std::string_view text, Half& half, int fileIndex) {
     try {
-        ScannedTokenSource source(text, half.tokens);
+        ScannedTokenSource source(text, half.tokens, half.eof);
         ScannedTokenStream stream(&source);
         strun_grammar::RuleContextArena arena;  // outlives the parser, which deletes the contexts
         strun_grammar::RuleContextArena::Scope scope(arena);
@@ -93,7 +94,7 @@ std::optional<CompilationUnit> parseInHalves(std::string_view text, const std::v
     const std::optional<std::size_t> split = splitPoint(tokens);
     if (!split) return std::nullopt;
     Half first, second;
-    first.tokens.assign(tokens.begin(), tokens.begin() + static_cast<std::ptrdiff_t>(*split) + 1);
+    first.tokens = std::span<const ScannedToken>(tokens).first(*split + 1);
     ScannedToken eof = tokens.back();  // an empty EOF where the second half starts
     const ScannedToken& next = tokens[*split + 1];
     eof.start = next.start;
@@ -101,8 +102,8 @@ std::optional<CompilationUnit> parseInHalves(std::string_view text, const std::v
     eof.line = next.line;
     eof.column = next.column;
     eof.channel = antlr4::Token::DEFAULT_CHANNEL;
-    first.tokens.push_back(eof);
-    second.tokens.assign(tokens.begin() + static_cast<std::ptrdiff_t>(*split) + 1, tokens.end());
+    first.eof = &eof;
+    second.tokens = std::span<const ScannedToken>(tokens).subspan(*split + 1);
     runInParallelWithLargeStacks([&] { parseHalf(text, first, fileIndex); }, [&] { parseHalf(text, second, fileIndex); });
     if (!first.clean || !second.clean) return std::nullopt;
     CompilationUnit unit = std::move(first.unit);

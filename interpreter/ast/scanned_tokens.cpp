@@ -36,13 +36,13 @@ std::string ScannedTokenView::toString() const {
            ">," + std::to_string(getLine()) + ":" + std::to_string(getCharPositionInLine()) + "]";
 }
 
-ScannedTokenSource::ScannedTokenSource(std::string_view text, const std::vector<ScannedToken>& scanned)
-    : text_(text), stream_(text), scanned_(scanned) {}
+ScannedTokenSource::ScannedTokenSource(std::string_view text, std::span<const ScannedToken> scanned, const ScannedToken* eof)
+    : text_(text), stream_(text), scanned_(scanned), eof_(eof) {}
 
 std::unique_ptr<antlr4::Token> ScannedTokenSource::nextToken() {
     // Past the end the EOF token again, as a lexer would.
-    const ScannedToken& t = scanned_[std::min(next_, scanned_.size() - 1)];
-    if (next_ < scanned_.size()) ++next_;
+    const ScannedToken& t = token(std::min(next_, size() - 1));
+    if (next_ < size()) ++next_;
     auto token = std::make_unique<antlr4::CommonToken>(std::make_pair(this, &stream_), t.type, t.channel, t.start, stopIndex(t));
     token->setLine(t.line);
     token->setCharPositionInLine(t.column);
@@ -50,11 +50,11 @@ std::unique_ptr<antlr4::Token> ScannedTokenSource::nextToken() {
 }
 
 size_t ScannedTokenSource::getLine() const {
-    return next_ < scanned_.size() ? scanned_[next_].line : scanned_.back().line;
+    return token(std::min(next_, size() - 1)).line;
 }
 
 size_t ScannedTokenSource::getCharPositionInLine() {
-    return next_ < scanned_.size() ? scanned_[next_].column : scanned_.back().column;
+    return token(std::min(next_, size() - 1)).column;
 }
 
 ScannedTokenStream::ScannedTokenStream(ScannedTokenSource* source) : ScannedTokenStream(source, ViewsOnly) {
@@ -62,9 +62,9 @@ ScannedTokenStream::ScannedTokenStream(ScannedTokenSource* source) : ScannedToke
 }
 
 ScannedTokenStream::ScannedTokenStream(ScannedTokenSource* source, ViewsOnlyTag) : antlr4::CommonTokenStream(source) {
-    const std::vector<ScannedToken>& scanned = source->scanned();
-    views_.reserve(scanned.size());  // never reallocated: _tokens points into it
-    for (size_t i = 0; i < scanned.size(); ++i) views_.emplace_back(scanned[i], i, source);
+    const size_t n = source->size();
+    views_.reserve(n);  // never reallocated: _tokens points into it
+    for (size_t i = 0; i < n; ++i) views_.emplace_back(source->token(i), i, source);
 }
 
 void ScannedTokenStream::prepareForParsing() {

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -73,11 +74,14 @@ private:
 
 class ScannedTokenSource : public antlr4::TokenSource {
 public:
-    // `text` must outlive this source; `scanned` ends with its EOF token.
-    ScannedTokenSource(std::string_view text, const std::vector<ScannedToken>& scanned);
+    // `text` and `scanned` must outlive this source; `scanned` ends with its
+    // EOF token, or `eof` is that token (the first half of a file parsed in
+    // halves, decision 0493: no copy of the half's tokens).
+    ScannedTokenSource(std::string_view text, std::span<const ScannedToken> scanned, const ScannedToken* eof = nullptr);
     // For ANTLR's generic use; the parser's stream reads views() instead.
     std::unique_ptr<antlr4::Token> nextToken() override;
-    const std::vector<ScannedToken>& scanned() const { return scanned_; }
+    size_t size() const { return scanned_.size() + (eof_ ? 1 : 0); }
+    const ScannedToken& token(size_t i) const { return i < scanned_.size() ? scanned_[i] : *eof_; }
     std::string_view text() const { return text_; }
     size_t getLine() const override;
     size_t getCharPositionInLine() override;
@@ -90,7 +94,8 @@ public:
 private:
     std::string_view text_;
     Utf8SourceStream stream_;
-    const std::vector<ScannedToken>& scanned_;
+    std::span<const ScannedToken> scanned_;
+    const ScannedToken* eof_;
     size_t next_ = 0;
 };
 
