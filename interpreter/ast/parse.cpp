@@ -87,7 +87,6 @@ public:
           text_(sanitizeUtf8(sources.file(fileIndex).text, &firstInvalidByte_, &invalidBytes_)),
           scan_(scanWithActionKeyword(text_)),
           source_(text_, scan_.tokens),
-          tokens_(&source_, ScannedTokenStream::ViewsOnly),
           reporter_(log, fileIndex),
           log_(log),
           fileIndex_(fileIndex) {}
@@ -101,10 +100,11 @@ public:
         if (!reportLexerErrors()) return emptyUnit();
         if (scan_.tokens.size() >= halvesFrom_)
             if (auto halves = parseInHalves(text_, scan_.tokens, fileIndex_)) return std::move(*halves);
-        // Parsed whole: only now the stream's lookahead tables and the
-        // parser (a file parsed in halves never needs them).
-        tokens_.prepareForParsing();
-        parser_.emplace(&tokens_);
+        // Parsed whole: only now the token stream (its views of every
+        // token and lookahead tables) and the parser; a file parsed in
+        // halves never needs them (decisions 0492, 0493).
+        tokens_.emplace(&source_);
+        parser_.emplace(&*tokens_);
         parser_->removeErrorListeners();
         // The AST builder reads the contexts' labels only (decision 0159):
         // no terminal node per token, no child lists.
@@ -114,7 +114,7 @@ public:
             strun_grammar::RuleContextArena::Scope arena(contextArena_);  // the contexts of this parse
             try {
                 P::CompilationUnitContext* tree = parse();
-                AstBuilder builder(tokens_, reporter_, fileIndex_);
+                AstBuilder builder(*tokens_, reporter_, fileIndex_);
                 unit = builder.build(tree);
             } catch (const std::exception& e) {
                 log_.error(diag::E0001, Loc{fileIndex_, 1, 1}, std::string("internal parser error: ") + e.what());
@@ -176,20 +176,24 @@ private:
     // `||`, `++`, `+=`, `!`): one message with the ST spelling, before the
     // parser's less helpful one on the same line (one error per line).
     void reportForeignOperators() {
-        // ScannedTokenView, the final class: no virtual call per token.
-        std::vector<ScannedTokenView*> seen;
-        seen.reserve(tokens_.views().size());
-        for (ScannedTokenView& t : tokens_.views())
-            if (t.getChannel() == antlr4::Token::DEFAULT_CHANNEL || t.getChannel() == L::ERRORS) seen.push_back(&t);
-        auto is = [](ScannedTokenView* t, size_t type, const char* text = nullptr) {
-            return t->getType() == type && (text == nullptr || t->getText() == text);
+        // The scanner's tokens themselves: no view (with its virtual
+        // destructor) per token, no copy of the text unless one matches.
+        const std::vector<ScannedToken>& tokens = scan_.tokens;
+        auto seenFrom = [&](size_t i) {  // the first token at or after i that the parser (or the error report) sees
+            while (i < tokens.size() && tokens[i].channel != antlr4::Token::DEFAULT_CHANNEL && tokens[i].channel != L::ERRORS) ++i;
+            return i;
         };
-        for (size_t i = 0; i < seen.size(); ++i) {
-            ScannedTokenView* a = seen[i];
-            ScannedTokenView* b = i + 1 < seen.size() ? seen[i + 1] : nullptr;
-            const bool pair = b != nullptr && b->getStartIndex() == a->getStopIndex() + 1;
-            ScannedTokenView* before = i > 0 ? seen[i - 1] : nullptr;
-            auto target = [&] { return before != nullptr && P::isNameToken(before->getType()) ? before->getText() : "x"; };
+        auto textOf = [&](const ScannedToken* t) { return tokenText(text_, *t); };
+        auto is = [&](const ScannedToken* t, size_t type, const char* text = nullptr) {
+            return t->type == type && (text == nullptr || textOf(t) == text);
+        };
+        const ScannedToken* before = nullptr;
+        for (size_t i = seenFrom(0), next; i < tokens.size(); before = &tokens[i], i = next) {
+            next = seenFrom(i + 1);
+            const ScannedToken* a = &tokens[i];
+            const ScannedToken* b = next < tokens.size() ? &tokens[next] : nullptr;
+            const bool pair = b != nullptr && b->start == stopIndex(*a) + 1;
+            auto target = [&] { return before != nullptr && P::isNameToken(before->type) ? std::string(textOf(before)) : "x"; };
             std::string op, help;
             if (pair && is(a, L::EQ) && is(b, L::EQ)) {
                 op = "==", help = "compare with a single '=': IF a = b THEN";
@@ -201,17 +205,21 @@ private:
                 op = "&&", help = "write AND: IF a AND b THEN";
             } else if (pair && is(a, L::ERROR_CHAR, "|") && is(b, L::ERROR_CHAR, "|")) {
                 op = "||", help = "write OR: IF a OR b THEN";
-            } else if (pair && (is(a, L::PLUS) || is(a, L::MINUS)) && b->getType() == a->getType()) {
-                const std::string sign = a->getText();
+            } else if (pair && (is(a, L::PLUS) || is(a, L::MINUS)) && b->type == a->type) {
+                const std::string sign(textOf(a));
                 op = sign + sign, help = "write '" + target() + " := " + target() + " " + sign + " 1;'";
             } else if (pair && (is(a, L::PLUS) || is(a, L::MINUS) || is(a, L::STAR) || is(a, L::SLASH)) && is(b, L::EQ)) {
-                op = a->getText() + "=", help = "write '" + target() + " := " + target() + " " + a->getText() + " ...;'";
+                const std::string sign(textOf(a));
+                op = sign + "=", help = "write '" + target() + " := " + target() + " " + sign + " ...;'";
             } else {
                 continue;
             }
-            reporter_.report(diag::E0004, a->getLine(), a->getCharPositionInLine(), "ST has no '" + op + "' operator").withHelp(help)
-                .spanTo(static_cast<int>(a->getLine()), static_cast<int>(a->getCharPositionInLine() + op.size()) + 1);
-            if (pair && op.size() == 2) ++i;
+            reporter_.report(diag::E0004, a->line, a->column, "ST has no '" + op + "' operator").withHelp(help)
+                .spanTo(static_cast<int>(a->line), static_cast<int>(a->column + op.size()) + 1);
+            if (pair && op.size() == 2) {  // b is part of the operator
+                i = next;
+                next = seenFrom(i + 1);
+            }
         }
     }
 
@@ -253,9 +261,10 @@ private:
     // {warning 'text'} and {error 'text'} (CODESYS message pragmas): the text
     // as a warning (W0010) or an error (E0010) at the pragma.
     void reportMessagePragmas() {
-        for (ScannedTokenView& token : tokens_.views()) {
-            ScannedTokenView* t = &token;
-            if (t->getChannel() != L::PRAGMAS) continue;
+        for (size_t i = 0; i < scan_.tokens.size(); ++i) {
+            if (scan_.tokens[i].channel != L::PRAGMAS) continue;
+            const ScannedTokenView view = viewOf(i);
+            const ScannedTokenView* t = &view;
             const std::string text = t->getText();
             if (text.size() >= 4 && text[1] == '{' && text[text.size() - 2] == '}') {  // matiec/Beremiz inline C code (0351)
                 const Loc at{fileIndex_, static_cast<int>(t->getLine()), static_cast<int>(t->getCharPositionInLine()) + 1};
@@ -275,9 +284,11 @@ private:
     // Reports error tokens and runs the nesting guard; false if parsing must
     // not go ahead.
     bool reportLexerErrors() {
-        for (ScannedTokenView& each : tokens_.views()) {  // the final class: no virtual calls
-            ScannedTokenView* token = &each;
-            if (token->getChannel() == L::ERRORS) {
+        for (size_t i = 0; i < scan_.tokens.size(); ++i) {
+            if (scan_.tokens[i].channel != L::ERRORS) continue;
+            const ScannedTokenView view = viewOf(i);
+            const ScannedTokenView* token = &view;
+            {
                 reporter_.report(isUnterminated(*token) ? diag::E0005 : diag::E0006, token->getLine(),
                                  token->getCharPositionInLine(), lexerErrorMessage(*token),
                                  token->getType() != L::ERROR_CHAR);
@@ -300,6 +311,9 @@ private:
         return true;
     }
 
+    // Token i as the parser would see it, made when a report needs it.
+    ScannedTokenView viewOf(size_t i) { return ScannedTokenView(scan_.tokens[i], i, &source_); }
+
     P::CompilationUnitContext* parse() {
         auto* simulator = parser_->getInterpreter<antlr4::atn::ParserATNSimulator>();
         simulator->setPredictionMode(antlr4::atn::PredictionMode::SLL);
@@ -310,7 +324,7 @@ private:
             // Not SLL-parseable as is: a syntax error, or (rarely) a construct
             // that needs full-context prediction. Parse again properly.
         }
-        tokens_.seek(0);
+        tokens_->seek(0);
         parser_->reset();
         parser_->setBuildParseTree(false);
         simulator->setPredictionMode(antlr4::atn::PredictionMode::LL);
@@ -325,7 +339,7 @@ private:
     std::string text_;
     ScanResult scan_;
     ScannedTokenSource source_;
-    ScannedTokenStream tokens_;
+    std::optional<ScannedTokenStream> tokens_;      // made when the file is parsed whole
     strun_grammar::RuleContextArena contextArena_;  // outlives parser_, which deletes the contexts
     std::optional<P> parser_;                      // made when the file is parsed whole
     SyntaxErrorReporter reporter_;

@@ -19,12 +19,13 @@ size_t Utf8SourceStream::LA(ssize_t i) {
     return static_cast<unsigned char>(text_[static_cast<size_t>(at)]);
 }
 
-std::string ScannedTokenView::getText() const {
-    const std::string_view text = source_->text();
-    if (token_->type == antlr4::Token::EOF || token_->start >= text.size()) return "<EOF>";  // as CommonToken
-    if (token_->stop < token_->start) return std::string();
-    return std::string(text.substr(token_->start, std::min<size_t>(token_->stop, text.size() - 1) + 1 - token_->start));
+std::string_view tokenText(std::string_view text, const ScannedToken& token) {
+    if (token.type == antlr4::Token::EOF || token.start >= text.size()) return "<EOF>";  // as CommonToken
+    if (token.stop < token.start) return {};
+    return text.substr(token.start, std::min<size_t>(token.stop, text.size() - 1) + 1 - token.start);
 }
+
+std::string ScannedTokenView::getText() const { return std::string(tokenText(source_->text(), *token_)); }
 
 antlr4::TokenSource* ScannedTokenView::getTokenSource() const { return source_; }
 
@@ -57,21 +58,11 @@ size_t ScannedTokenSource::getCharPositionInLine() {
     return token(std::min(next_, size() - 1)).column;
 }
 
-ScannedTokenStream::ScannedTokenStream(ScannedTokenSource* source) : ScannedTokenStream(source, ViewsOnly) {
-    prepareForParsing();
-}
-
-ScannedTokenStream::ScannedTokenStream(ScannedTokenSource* source, ViewsOnlyTag) : antlr4::CommonTokenStream(source) {
+ScannedTokenStream::ScannedTokenStream(ScannedTokenSource* source) : antlr4::CommonTokenStream(source) {
     const size_t n = source->size();
     views_.reserve(n);  // never reallocated: _tokens points into it
     for (size_t i = 0; i < n; ++i) views_.emplace_back(source->token(i), i, source);
-}
-
-void ScannedTokenStream::prepareForParsing() {
-    if (prepared_) return;
-    prepared_ = true;
     fill();
-    const size_t n = views_.size();
     auto stopsHere = [&](size_t i) {
         return views_[i].getChannel() == antlr4::Token::DEFAULT_CHANNEL || views_[i].getType() == antlr4::Token::EOF;
     };

@@ -46,6 +46,10 @@ inline size_t stopIndex(const ScannedToken& token) {
     return token.type == antlr4::Token::EOF ? static_cast<size_t>(token.start) - 1 : token.stop;
 }
 
+// The text of a scanned token of `text`, as ANTLR's getText() gives it
+// ("<EOF>" for EOF).
+std::string_view tokenText(std::string_view text, const ScannedToken& token);
+
 // A scanned token as the parser sees it: a view of the ScannedToken and of
 // the source text. The stream keeps all of them in one array (one
 // allocation per file instead of a CommonToken per token, which was a
@@ -110,19 +114,9 @@ private:
 // and previous default-channel token of each position instead of a walk
 // over the hidden tokens with a bounds check per step: the parser asks
 // for the next token several times per token (decision 0159).
-//
-// Made with `ViewsOnly`, it holds the views and nothing else until
-// prepareForParsing(): what parseFile needs to report scanner errors for a
-// file that is then parsed in halves (ast/parse_in_halves.h), each half with
-// a stream of its own.
 class ScannedTokenStream : public antlr4::CommonTokenStream {
 public:
-    enum ViewsOnlyTag { ViewsOnly };
     explicit ScannedTokenStream(ScannedTokenSource* source);
-    ScannedTokenStream(ScannedTokenSource* source, ViewsOnlyTag);
-    // Fetches every token and builds the lookahead tables; once, before a
-    // parser reads a stream made with ViewsOnly (a no-op on any other).
-    void prepareForParsing();
     ~ScannedTokenStream() override;
     ScannedTokenStream(const ScannedTokenStream&) = delete;
     ScannedTokenStream& operator=(const ScannedTokenStream&) = delete;
@@ -145,7 +139,6 @@ private:
     std::vector<ScannedTokenView> views_;
     std::vector<uint32_t> nextOnChannel_;      // BufferedTokenStream::nextTokenOnChannel(i, 0)
     std::vector<int32_t> previousOnChannel_;   // BufferedTokenStream::previousTokenOnChannel(i, 0), -1 for none
-    bool prepared_ = false;
 };
 
 }  // namespace strun::ast
