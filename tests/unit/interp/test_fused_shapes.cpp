@@ -338,3 +338,23 @@ END_PROGRAM
     REQUIRE(wide);
     CHECK(dynamic_cast<exec::DivIK<uint32_t>*>(wide->value));
 }
+
+// Decision 0493: the fusers' shape test answers as dynamic_cast does.
+TEST_CASE("nodeCast finds a final node class by its type and an interface by dynamic_cast", "[fused]") {
+    exec::NodePool pool;
+    exec::Expr* constant = pool.make<exec::ConstInt>(7);
+    exec::Expr* var = pool.make<exec::VarNode<int32_t, exec::BaseKind::Frame>>(8);
+    exec::Expr* sum = pool.make<exec::AddIK<int32_t>>(var, 1);
+    CHECK(exec::nodeCast<exec::ConstInt>(constant) == constant);
+    CHECK(exec::nodeCast<exec::ConstInt>(var) == nullptr);
+    CHECK(exec::nodeCast<exec::VarNode<int32_t, exec::BaseKind::Frame>>(var) == var);
+    CHECK(exec::nodeCast<exec::VarNode<int32_t, exec::BaseKind::Self>>(var) == nullptr);  // same template, other base
+    CHECK(exec::nodeCast<exec::VarNode<int64_t, exec::BaseKind::Frame>>(var) == nullptr);  // other type
+    CHECK(exec::nodeCast<exec::AddIK<int32_t>>(sum) == sum);
+    CHECK(exec::nodeCast<exec::AddIK<int64_t>>(sum) == nullptr);
+    CHECK(exec::nodeCast<exec::IntOperator>(sum) == sum);  // an interface: dynamic_cast
+    CHECK(exec::nodeCast<exec::IntOperator>(constant) == nullptr);
+    CHECK(exec::nodeCast<exec::ConstInt>(static_cast<exec::Expr*>(nullptr)) == nullptr);
+    const exec::Expr* readOnly = constant;
+    CHECK(exec::nodeCast<const exec::ConstInt>(readOnly) == constant);
+}
