@@ -10,6 +10,7 @@
 #include <cctype>
 #include <cstring>
 #include <map>
+#include <string_view>
 #include <vector>
 
 namespace strun::source::il {
@@ -154,8 +155,11 @@ const std::map<std::string, std::pair<std::string, bool>>& binaryOperators() {
 }
 
 // The inputs of the standard blocks that are IL operators of their own (`CU C10`: C10(CU := CR)).
+constexpr std::string_view kBlockInputOperators[] = {"S1", "R1", "CLK", "CU", "CD", "PV", "IN", "PT"};
 bool isBlockInputOperator(const std::string& w) {
-    return w == "S1" || w == "R1" || w == "CLK" || w == "CU" || w == "CD" || w == "PV" || w == "IN" || w == "PT";
+    for (std::string_view k : kBlockInputOperators)
+        if (k == w) return true;
+    return false;
 }
 
 // A piece of ST and the instruction it belongs to (its lines carry that instruction's place).
@@ -767,11 +771,19 @@ private:
 }  // namespace
 
 bool isOperator(const std::string& w) {
-    static const char* const words[] = {"LD",  "LDN",  "ST",  "STN",   "S",   "R",    "NOT",   "JMP", "JMPC",
-                                        "JMPCN", "CAL", "CALC", "CALCN", "RET", "RETC", "RETCN"};
-    for (const char* k : words)
-        if (w == k) return true;
-    return binaryOperators().count(w) > 0 || isBlockInputOperator(w);
+    if (w.size() > kLongestOperator) return false;  // mayHoldTextualIl tests the length first
+    // Every operator word once, collected from the lists the translator
+    // uses: mayHoldTextualIl asks after every END_VAR of every ST file.
+    static const std::vector<std::string_view> all = [] {
+        std::vector<std::string_view> words = {"LD",   "LDN",   "ST",  "STN", "S",     "R",   "NOT",  "JMP",
+                                               "JMPC", "JMPCN", "CAL", "CALC", "CALCN", "RET", "RETC", "RETCN"};
+        for (const auto& op : binaryOperators()) words.emplace_back(op.first);
+        for (std::string_view k : kBlockInputOperators) words.push_back(k);
+        return words;
+    }();
+    for (std::string_view k : all)
+        if (k == w) return true;
+    return false;
 }
 
 bool translate(std::string_view text, int line, int col, const Surroundings& around, plcopen::Translation& out) {

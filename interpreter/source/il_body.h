@@ -40,5 +40,7 @@ bool translate(std::string_view text, int line, int col, const Surroundings& aro
 // ANDN, CU, ...): what tells an IL body from an ST one in a text file
 // (st_textual_il.cpp, decision 0464).
 bool isOperator(const std::string& upperWord);
+// The length of the longest of them (JMPCN, CALCN, RETCN).
+inline constexpr size_t kLongestOperator = 5;
 
 }  // namespace strun::source::il

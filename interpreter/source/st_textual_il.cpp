@@ -16,6 +16,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <cstring>
 #include <cctype>
 #include <map>
 #include <set>
@@ -163,11 +165,14 @@ size_t skipBlankIl(const std::string& s, size_t i) {
     return i;
 }
 
-std::string ilWordAt(const std::string& s, size_t i) {
+// The length of the word (letters, digits, '_') at i.
+size_t ilWordLength(const std::string& s, size_t i) {
     size_t e = i;
     while (e < s.size() && (std::isalnum(static_cast<unsigned char>(s[e])) || s[e] == '_')) ++e;
-    return stdlib::upperAscii(std::string_view(s).substr(i, e - i));
+    return e - i;
 }
+
+std::string ilWordAt(const std::string& s, size_t i) { return stdlib::upperAscii(std::string_view(s).substr(i, ilWordLength(s, i))); }
 
 // Case-insensitive: does `s` hold `word` at i?
 bool ilHasWord(const std::string& s, size_t i, std::string_view word) {
@@ -187,32 +192,55 @@ bool mayHoldTextualIl(const std::string& s) {
     }();
     const auto* bytes = reinterpret_cast<const unsigned char*>(s.data());
     const size_t n = s.size();
-    for (size_t i = 0; i + 1 < n; ++i) {
-        if (!kStarts[bytes[i]]) continue;
+    // The first of those letters at or after i (n when none): eight bytes at
+    // a time (decision 0493). A byte b has b | 0x20 == 'e' only when it is
+    // 'e' or 'E' (the same for 'a'), and a word has a zero byte exactly when
+    // (v - 0x01..) & ~v & 0x80.. is not zero.
+    auto nextStart = [&](size_t i) {
+        constexpr uint64_t kOnes = 0x0101010101010101ull;
+        constexpr uint64_t kHighs = 0x8080808080808080ull;
+        for (; i + 8 <= n; i += 8) {
+            uint64_t word;
+            std::memcpy(&word, bytes + i, 8);
+            const uint64_t folded = word | (kOnes * 0x20);
+            const uint64_t e = folded ^ (kOnes * 'e');
+            const uint64_t a = folded ^ (kOnes * 'a');
+            if ((((e - kOnes) & ~e) | ((a - kOnes) & ~a)) & kHighs) break;
+        }
+        while (i < n && !kStarts[bytes[i]]) ++i;
+        return i;
+    };
+    for (size_t i = nextStart(0); i + 1 < n; i = nextStart(i + 1)) {
         const char c = stdlib::mentions::upper(s[i]);
         const char second = stdlib::mentions::upper(s[i + 1]);
         if (!((c == 'E' && second == 'N') || (c == 'A' && second == 'C'))) continue;
         size_t after = 0;
-        if (c == 'E' && ilHasWord(s, i, "END_VAR")) after = i + 7;
-        else if (c == 'E' && ilHasWord(s, i, "END_METHOD")) after = i + 10;
-        else if (c == 'E' && ilHasWord(s, i, "END_ACTION")) after = i + 10;
+        // END_VAR, END_METHOD, END_ACTION: the letter after END_ first
+        // (END_IF, END_FOR, ... stop there).
+        const char fifth = c == 'E' && i + 4 < n && s[i + 3] == '_' ? stdlib::mentions::upper(s[i + 4]) : '\0';
+        if (fifth == 'V' && ilHasWord(s, i, "END_VAR")) after = i + 7;
+        else if (fifth == 'M' && ilHasWord(s, i, "END_METHOD")) after = i + 10;
+        else if (fifth == 'A' && ilHasWord(s, i, "END_ACTION")) after = i + 10;
         else if (c == 'A' && ilHasWord(s, i, "ACTION") && (i == 0 || !std::isalnum(static_cast<unsigned char>(s[i - 1])))) {
             after = skipBlankIl(s, i + 6);
-            after += ilWordAt(s, after).size();  // the action's name
+            after += ilWordLength(s, after);  // the action's name
             after = skipBlankIl(s, after);
             if (after < s.size() && s[after] == ':') ++after;
         } else {
             continue;
         }
         size_t w = skipBlankIl(s, after);
-        std::string word = ilWordAt(s, w);
-        if (word.empty()) continue;
-        size_t next = skipBlankIl(s, w + word.size());
+        size_t length = ilWordLength(s, w);
+        if (length == 0) continue;
+        size_t next = skipBlankIl(s, w + length);
         if (next < s.size() && s[next] == ':' && s.compare(next, 2, ":=") != 0) {  // a label: the word after it
             w = skipBlankIl(s, next + 1);
-            word = ilWordAt(s, w);
+            length = ilWordLength(s, w);
         }
-        if (il::isOperator(word)) return true;
+        // A word longer than every operator (the statement after an ST
+        // END_VAR, mostly) is tested without being copied (decision 0493).
+        if (length == 0 || length > il::kLongestOperator) continue;
+        if (il::isOperator(ilWordAt(s, w))) return true;
     }
     return false;
 }

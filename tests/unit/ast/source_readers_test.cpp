@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "interpreter/source/st_assembler.h"
+#include "interpreter/source/st_textual_il.h"
 #include "interpreter/source/xml_inputs.h"
 
 using namespace strun;
@@ -81,4 +82,30 @@ TEST_CASE("PLCopen: CODESYS's tc6_0200 form with the POUs in the resource's addD
     CHECK(c.text.find("PROGRAM PLC_PRG\n") != std::string::npos);
     CHECK(c.text.find("x := x + 1;") != std::string::npos);
     CHECK(c.text.find("PROGRAM PLC_PRG WITH T : PLC_PRG;") != std::string::npos);
+}
+
+// Decisions 0464, 0493: which ST files may hold IL bodies (and are then read
+// with the IL reader); the operator after END_VAR (or a label) decides.
+TEST_CASE("an IL operator after END_VAR, END_METHOD or an ACTION marks a file as holding IL", "[source][il]") {
+    using strun::source::mayHoldTextualIl;
+    CHECK(mayHoldTextualIl("FUNCTION F : INT VAR_INPUT x : INT; END_VAR LD x ST F END_FUNCTION"));
+    CHECK(mayHoldTextualIl("PROGRAM P VAR b : BOOL; END_VAR\n  (* c *) JMPCN done\ndone: RET END_PROGRAM"));
+    CHECK(mayHoldTextualIl("PROGRAM P VAR END_VAR start: CALCN f END_PROGRAM"));  // a label, then the longest operators
+    CHECK(mayHoldTextualIl("program p var c : CTU; end_var cu c END_PROGRAM"));     // any case; a block input operator
+    CHECK(mayHoldTextualIl("METHOD M END_VAR RETCN END_METHOD"));
+    CHECK(mayHoldTextualIl("ACTION Reset: LD FALSE ST x END_ACTION"));
+    CHECK_FALSE(mayHoldTextualIl("PROGRAM P VAR x : INT; END_VAR x := x + 1; END_PROGRAM"));
+    CHECK_FALSE(mayHoldTextualIl("PROGRAM P VAR END_VAR IF TRUE THEN END_IF; END_PROGRAM"));
+    CHECK_FALSE(mayHoldTextualIl("PROGRAM P VAR END_VAR LDX := 1; END_PROGRAM"));         // a word longer than LD
+    CHECK_FALSE(mayHoldTextualIl("PROGRAM P VAR END_VAR JMPCNX(); END_PROGRAM"));          // longer than any operator
+    // The scan reads eight bytes at a time: END_VAR at every offset, bytes
+    // that differ from E and A only in bit 5 or 6 around it, text ending in E.
+    for (size_t pad = 0; pad < 20; ++pad) {
+        const std::string before(pad, pad % 2 ? 'x' : '\xC5');
+        INFO("pad " << pad);
+        CHECK(mayHoldTextualIl(before + "END_VAR LD x"));
+        CHECK(mayHoldTextualIl(before + "end_var\tst y"));
+        CHECK_FALSE(mayHoldTextualIl(before + "END_VAR x := 1; %eE"));
+        CHECK_FALSE(mayHoldTextualIl(before + "\x45\x65\x41\x61\x05\x25\x01\x21 END_IF ACTIONS"));
+    }
 }
