@@ -288,19 +288,16 @@ private:
             if (scan_.tokens[i].channel != L::ERRORS) continue;
             const ScannedTokenView view = viewOf(i);
             const ScannedTokenView* token = &view;
-            {
-                reporter_.report(isUnterminated(*token) ? diag::E0005 : diag::E0006, token->getLine(),
-                                 token->getCharPositionInLine(), lexerErrorMessage(*token),
-                                 token->getType() != L::ERROR_CHAR);
-                // The statement an unterminated string cut off ends on the next line: one error, not two.
-                if (token->getType() == L::UNTERMINATED_STRING || token->getType() == L::UNTERMINATED_WSTRING)
-                    reporter_.markLine(token->getLine() + 1);
-                // An unterminated comment or pragma swallowed the rest of the file: what the
-                // parser then misses (END_PROGRAM, ...) is its consequence, not news.
-                if (token->getType() == L::UNTERMINATED_BLOCK_COMMENT || token->getType() == L::UNTERMINATED_C_COMMENT ||
-                    token->getType() == L::UNTERMINATED_PRAGMA)
-                    reporter_.silence();
-            }
+            reporter_.report(isUnterminated(*token) ? diag::E0005 : diag::E0006, token->getLine(),
+                             token->getCharPositionInLine(), lexerErrorMessage(*token), token->getType() != L::ERROR_CHAR);
+            // The statement an unterminated string cut off ends on the next line: one error, not two.
+            if (token->getType() == L::UNTERMINATED_STRING || token->getType() == L::UNTERMINATED_WSTRING)
+                reporter_.markLine(token->getLine() + 1);
+            // An unterminated comment or pragma swallowed the rest of the file: what the
+            // parser then misses (END_PROGRAM, ...) is its consequence, not news.
+            if (token->getType() == L::UNTERMINATED_BLOCK_COMMENT || token->getType() == L::UNTERMINATED_C_COMMENT ||
+                token->getType() == L::UNTERMINATED_PRAGMA)
+                reporter_.silence();
         }
         if (auto violation = findExcessiveNesting(scan_.tokens)) {
             const ScannedToken& at = scan_.tokens[violation->token];

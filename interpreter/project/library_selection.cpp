@@ -15,9 +15,11 @@ namespace {
 namespace mentions = stdlib::mentions;
 
 // Bit L of [c]: some selecting name of length L (< 64) starts (ends) with
-// the letter c in either case. Most words of a program fail this test, and
-// then need no upper-casing and lookup. The tables are generated with the
-// registry (stdlib/library_registry.h): nothing is built at start-up.
+// the letter c in either case; and the bit of the word's folded hash in the
+// set of the names' (decision 0493). Nearly every word of a program fails
+// one of the two tests, and then needs no upper-casing and lookup. The
+// tables are generated with the registry (stdlib/library_registry.h):
+// nothing is built at start-up.
 struct NameMasks {
     std::span<const uint64_t, 256> byFirst = stdlib::libraryNameMasksByFirst();
     std::span<const uint64_t, 256> byLast = stdlib::libraryNameMasksByLast();
