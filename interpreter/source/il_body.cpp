@@ -771,7 +771,7 @@ private:
 }  // namespace
 
 bool isOperator(const std::string& w) {
-    if (w.size() > kLongestOperator) return false;  // mayHoldTextualIl tests the length first
+    if (w.size() > kLongestOperator) return false;  // none is longer: mayHoldTextualIl relies on it
     // Every operator word once, collected from the lists the translator
     // uses: mayHoldTextualIl asks after every END_VAR of every ST file.
     static const std::vector<std::string_view> all = [] {
