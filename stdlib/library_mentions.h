@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 namespace strun::stdlib::mentions {
@@ -48,6 +49,17 @@ inline uint32_t foldedNameHash(std::string_view w) {
     uint32_t h = 2166136261u;
     for (char c : w) h = (h ^ static_cast<unsigned char>(upper(c))) * 16777619u;
     return (h ^ (h >> kNameHashBits)) & ((uint32_t{1} << kNameHashBits) - 1);
+}
+
+// The set of those hashes, kNameHashBits bits in 64-bit words: one place
+// for the bit's position, which the build tool sets and the scan reads.
+inline void addNameHash(std::span<uint64_t> set, std::string_view w) {
+    const uint32_t h = foldedNameHash(w);
+    set[h / 64] |= uint64_t{1} << (h % 64);
+}
+inline bool mayBeInNameHashSet(std::span<const uint64_t> set, std::string_view w) {
+    const uint32_t h = foldedNameHash(w);
+    return (set[h / 64] >> (h % 64) & 1) != 0;
 }
 
 // The offset of the first character at or after `at` that is not a blank.

@@ -30,8 +30,7 @@ struct NameMasks {
             const uint64_t bit = uint64_t{1} << w.size();
             if ((byFirst[static_cast<unsigned char>(w.front())] & bit) == 0 || (byLast[static_cast<unsigned char>(w.back())] & bit) == 0) return false;
         }
-        const uint32_t h = mentions::foldedNameHash(w);
-        return (hashSet[h / 64] >> (h % 64) & 1) != 0;
+        return mentions::mayBeInNameHashSet(hashSet, w);
     }
 };
 

@@ -420,8 +420,7 @@ int main(int argc, char** argv) {
     std::vector<uint64_t> hashSet((size_t{1} << strun::stdlib::mentions::kNameHashBits) / 64);
     for (const Name& n : names) {
         if (n.kind == 'U' || n.upper.empty()) continue;
-        const uint32_t h = strun::stdlib::mentions::foldedNameHash(n.upper);
-        hashSet[h / 64] |= uint64_t{1} << (h % 64);
+        strun::stdlib::mentions::addNameHash(hashSet, n.upper);
         if (n.upper.size() >= 64) continue;  // the masks pass every word this long
         const uint64_t bit = uint64_t{1} << n.upper.size();
         for (unsigned char c : {static_cast<unsigned char>(n.upper.front()), static_cast<unsigned char>(std::tolower(static_cast<unsigned char>(n.upper.front())))})
