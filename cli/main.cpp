@@ -18,6 +18,7 @@
 #include "cli/commands.h"
 #include "cli/editor_commands.h"
 #include "cli/exit_codes.h"
+#include "cli/huge_page_restart.h"
 #include "cli/man_page.h"
 #include "cli/test_command.h"
 #include "cli/usage_errors.h"
@@ -116,6 +117,8 @@ int runMain(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Before anything is read or written: may replace the process image.
+    restartWithHugePagesForLargeInputs(argc, argv);
     // Two malloc arenas: the two halves of a large file are parsed at the
     // same time (decision 0159), and with one arena they took turns at its
     // lock. More would only cost mmap/mprotect calls: nothing on strun's hot
