@@ -8,6 +8,8 @@
 
 #include <unistd.h>
 
+#include "interpreter/source/project_inputs.h"
+
 namespace strun::cli {
 
 namespace {
@@ -18,13 +20,6 @@ namespace fs = std::filesystem;
 // and a huge tree must not delay every start.
 constexpr int kWalkEntries = 20000;
 
-bool isProjectFile(const fs::path& path) {
-    const std::string ext = path.extension().string();
-    for (std::string_view e : {".plcproj", ".tsproj", ".sln", ".tspproj", ".project", ".yml", ".yaml"})
-        if (ext.size() == e.size() && strncasecmp(ext.c_str(), e.data(), e.size()) == 0) return true;
-    return false;
-}
-
 std::uintmax_t folderBytes(const fs::path& dir, std::uintmax_t enough) {
     std::uintmax_t total = 0;
     std::error_code ec;
@@ -32,7 +27,7 @@ std::uintmax_t folderBytes(const fs::path& dir, std::uintmax_t enough) {
     int entries = 0;
     for (; !ec && it != fs::recursive_directory_iterator() && entries < kWalkEntries && total < enough; it.increment(ec), ++entries) {
         std::error_code fileEc;
-        if (it->is_regular_file(fileEc)) {
+        if (it->is_regular_file(fileEc) && source::isProjectSource(it->path().string())) {
             const std::uintmax_t size = it->file_size(fileEc);
             if (!fileEc) total += size;
         }
@@ -60,7 +55,6 @@ std::uintmax_t inputBytes(int count, char** paths, std::uintmax_t enough) {
         if (fs::is_regular_file(status)) {
             const std::uintmax_t size = fs::file_size(path, ec);
             if (!ec) total += size;
-            if (isProjectFile(path)) total += folderBytes(path.has_parent_path() ? path.parent_path() : fs::path("."), enough - total);
         } else if (fs::is_directory(status)) {
             total += folderBytes(path, enough - total);
         }
