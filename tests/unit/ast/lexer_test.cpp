@@ -184,6 +184,15 @@ TEST_CASE("lexer: malformed input becomes error-channel tokens at its start", "[
     CHECK(stray[1].channel == STLexer::ERRORS);
 }
 
+TEST_CASE("lexer: a large file's tokens fit the room reserved for them (decision 0494)", "[lexer]") {
+    std::string text;
+    while (text.size() < 200000) text += "counter := counter + 1; (* one statement *)\n";
+    const strun::ast::ScanResult scan = strun::ast::scanSource(text, 1000000);
+    REQUIRE(scan.tokens.size() < text.size() / 4);
+    CHECK(scan.tokens.capacity() == text.size() / 4 + 16);  // never grown and copied
+    CHECK(strun::ast::scanSource("a b c", 3).tokens.capacity() <= 3 + 16);  // bounded by the limit
+}
+
 TEST_CASE("lexer: the token limit stops scanning and says so", "[lexer]") {
     const strun::ast::ScanResult within = strun::ast::scanSource("a b c", 3);
     CHECK_FALSE(within.overLimit);
