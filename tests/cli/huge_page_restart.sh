@@ -41,6 +41,17 @@ while [ $i -lt 40 ]; do
 done
 cp "$small" "$dir/project/main.st"
 
+# Ends a background run: SIGTERM (a background job of a non-interactive
+# shell ignores SIGINT until strun installs its handler, which a run still
+# compiling has not), SIGKILL if it is still there after a second.
+stop() {
+    kill -TERM "$1" 2>/dev/null
+    n=0
+    while kill -0 "$1" 2>/dev/null && [ $n -lt 20 ]; do sleep 0.05; n=$((n + 1)); done
+    kill -KILL "$1" 2>/dev/null
+    wait "$1" 2>/dev/null
+}
+
 # Prints the GLIBC_TUNABLES of a real-clock run of the given inputs ("none"
 # when it has none), read from /proc while it runs.
 tunables_of_run() {
@@ -58,8 +69,7 @@ tunables_of_run() {
         sleep 0.05
         k=$((k + 1))
     done
-    kill -INT "$pid" 2>/dev/null
-    wait "$pid" 2>/dev/null
+    stop "$pid"
     echo "$seen"
 }
 
@@ -75,8 +85,7 @@ GLIBC_TUNABLES=glibc.malloc.check=0 "$strun" run --quiet "$bigfix" >/dev/null 2>
 pid=$!
 sleep 0.5
 t=$(tr '\0' '\n' <"/proc/$pid/environ" 2>/dev/null | sed -n 's/^GLIBC_TUNABLES=//p')
-kill -INT "$pid" 2>/dev/null
-wait "$pid" 2>/dev/null
+stop "$pid"
 [ "$t" = "glibc.malloc.check=0" ] || fail "the user's GLIBC_TUNABLES became '$t'"
 
 # Restarted or not, the same diagnostics and exit status.
