@@ -63,11 +63,8 @@ struct Half {
 // tables (DFA), as ANTLR intends: its 4.9 runtime guards them with locks
 // shared by all parsers (ATNSimulator::_stateLock and _edgeLock are static).
 void parseHalf(std::string_view text, Half& half, int fileIndex) {
-    // The tree of a half takes about 280 bytes per token, in the arena of
-    // the thread that parses it (decision 0494). Not for a half under 7 MB
-    // of tree (25 000 tokens, about 6 500 lines): there the huge pages
-    // marked and not filled cost more than the page faults they save.
-    if (half.tokens.size() >= 25000) growThisThreadsHeap(half.tokens.size() * 280);
+    // The tree is built in the arena of the thread that parses the half (decision 0494).
+    growThisThreadsHeap(half.tokens.size() * kTreeBytesPerToken);
     try {
         ScannedTokenSource source(text, half.tokens, half.eof);
         ScannedTokenStream stream(&source);

@@ -11,6 +11,7 @@ namespace strun::ast {
 void growThisThreadsHeap(std::size_t bytes) {
     constexpr std::size_t kPiece = 7u << 20;
     constexpr std::size_t kHugePage = 2u << 20;
+    if (bytes < kWorthGrowing) return;
     std::array<void*, 8> pieces{};  // at most 56 MiB: a thread arena holds 64 MiB
     std::size_t count = 0;
     for (std::size_t got = 0; got < bytes && count < pieces.size(); got += kPiece) {
