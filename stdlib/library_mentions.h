@@ -13,6 +13,8 @@
 #include <span>
 #include <string_view>
 
+#include "stdlib/ascii_case.h"
+
 namespace strun::stdlib::mentions {
 
 // Character classes of the word scan: 1 starts a word, 2 continues one
@@ -28,14 +30,8 @@ inline constexpr std::array<unsigned char, 256> kWordClass = [] {
 
 inline bool isWordStart(char c) { return kWordClass[static_cast<unsigned char>(c)] == 1; }
 
-inline char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - ('a' - 'A')) : c; }
-
-inline bool equalNoCase(std::string_view a, std::string_view b) {
-    if (a.size() != b.size()) return false;
-    for (size_t i = 0; i < a.size(); ++i)
-        if (upper(a[i]) != upper(b[i])) return false;
-    return true;
-}
+using stdlib::equalsIgnoreCase;
+using stdlib::upperAscii;
 
 // A hash of the word's upper-case form (FNV-1a over the ASCII-folded
 // bytes), reduced to kNameHashBits bits: the build tool sets the bit of
@@ -47,7 +43,7 @@ inline bool equalNoCase(std::string_view a, std::string_view b) {
 inline constexpr unsigned kNameHashBits = 16;
 inline uint32_t foldedNameHash(std::string_view w) {
     uint32_t h = 2166136261u;
-    for (char c : w) h = (h ^ static_cast<unsigned char>(upper(c))) * 16777619u;
+    for (char c : w) h = (h ^ static_cast<unsigned char>(upperAscii(c))) * 16777619u;
     return (h ^ (h >> kNameHashBits)) & ((uint32_t{1} << kNameHashBits) - 1);
 }
 
@@ -88,7 +84,7 @@ void forEachWord(std::string_view text, F&& f) {
         if (kind != 1) continue;
         const std::string_view word = text.substr(start, i - start);
         f(word, i, start < usingListEnd);
-        if (word.size() == 5 && (word[0] == 'U' || word[0] == 'u') && equalNoCase(word, "USING")) {
+        if (word.size() == 5 && (word[0] == 'U' || word[0] == 'u') && equalsIgnoreCase(word, "USING")) {
             const size_t semicolon = text.find(';', i);
             usingListEnd = semicolon == std::string_view::npos ? n : semicolon;
         }
@@ -98,8 +94,8 @@ void forEachWord(std::string_view text, F&& f) {
 // `x : BOOL R_EDGE;` is checked as a hidden R_TRIG (F_EDGE: F_TRIG; decision 0339).
 inline std::string_view edgeBlock(std::string_view w) {
     if (w.size() == 6 && w[1] == '_') {
-        if (equalNoCase(w, "R_EDGE")) return "R_TRIG";
-        if (equalNoCase(w, "F_EDGE")) return "F_TRIG";
+        if (equalsIgnoreCase(w, "R_EDGE")) return "R_TRIG";
+        if (equalsIgnoreCase(w, "F_EDGE")) return "F_TRIG";
     }
     return w;
 }
@@ -121,7 +117,7 @@ inline bool namespaceUse(std::string_view text, size_t end, std::string_view res
         size_t nameEnd = name;
         while (nameEnd < text.size() && kWordClass[static_cast<unsigned char>(text[nameEnd])] != 0) ++nameEnd;
         const size_t restDot = rest.find('.');
-        if (!equalNoCase(text.substr(name, nameEnd - name), rest.substr(0, restDot))) return false;
+        if (!equalsIgnoreCase(text.substr(name, nameEnd - name), rest.substr(0, restDot))) return false;
         rest = restDot == std::string_view::npos ? std::string_view{} : rest.substr(restDot + 1);
         at = nameEnd;
     }

@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include "stdlib/ascii_case.h"  // equalsIgnoreCase, upperAscii(char)
+
 namespace strun::stdlib {
 
 // A literal shown in an error message, cut short so a huge one cannot flood it.
@@ -49,7 +51,6 @@ RealScan scanReal(std::string_view text, size_t pos);
 double realScanToDouble(const RealScan& scan, bool* overflowed = nullptr);
 float realScanToFloat(const RealScan& scan, bool* overflowed = nullptr);
 
-bool equalsIgnoreCase(std::string_view a, std::string_view b);
 // The text with a-z folded to A-Z (names and keywords are ASCII; other bytes unchanged).
 std::string upperAscii(std::string_view text);
 // The text with A-Z folded to a-z.

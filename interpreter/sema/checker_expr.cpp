@@ -9,6 +9,7 @@
 #include "interpreter/exec/class_part_nodes.h"
 #include "interpreter/exec/flex_ref_nodes.h"
 #include "interpreter/sema/checker.h"
+#include "stdlib/ascii_case.h"
 #include "interpreter/sema/expr_observer.h"
 #include "interpreter/sema/fuse.h"
 #include "interpreter/sema/node_factory.h"
@@ -407,7 +408,7 @@ Checked Checker::varAccess(VarSym* v, const ast::Loc& loc, bool fromOutside) {
         c.node = directNode(pool(), d, offset, v->abs, v->type);
     }
     c.node->type = v->type;
-    return autoDeref(c);
+    return autoDeref(std::move(c));
 }
 
 // The address a VAR_IN_OUT is bound to (its slot's content, 0 while unbound),
@@ -430,7 +431,7 @@ Checked Checker::inOutBinding(const VarSym* v, const ast::Loc& loc) {
 void Checker::ambiguousGlobal(const VarSym* v, const ast::Loc& loc, const std::string& written) {
     std::string lists;
     for (const VarSym* g : model_.globals)
-        if (g->sharedName && upper(g->name) == upper(v->name)) lists += (lists.empty() ? "" : ", ") + g->listName + "." + g->name;
+        if (g->sharedName && stdlib::equalsIgnoreCase(g->name, v->name)) lists += (lists.empty() ? "" : ", ") + g->listName + "." + g->name;
     error(diag::E0108, loc, fmt::format("'{}' is declared in several global lists; write one of {}", written, lists));
 }
 
@@ -819,7 +820,7 @@ Checked Checker::memberOf(Checked base, const std::string& member, const ast::Lo
         c.node = loadFrom(pool().make<exec::OffsetPlace>(base.node, f->offset), ft);
     }
     c.node->type = ft;
-    return autoDeref(c);
+    return autoDeref(std::move(c));
 }
 
 // x.%B1, x.%W0, x.%D1, x.%L0: byte, word, double word or long word N of an

@@ -335,7 +335,7 @@ exec::Stmt* Checker::assignProperty(Checked target, Checked value, const ast::Lo
 // REFERENCE TO x values are used as the x they refer to.
 Checked Checker::autoDeref(Checked c) {
     if (suppressAutoDeref_) return c;
-    return derefReference(c);
+    return derefReference(std::move(c));
 }
 
 // The x a REFERENCE TO x value refers to, as a place (a NULL reference faults).

@@ -185,11 +185,11 @@ Checked Checker::checkBinary(const ast::Expr& e) {
     if (!a.ok || !b.ok) return bad(e.loc);
     switch (e.op) {
         case ast::Op::Eq: case ast::Op::Ne: case ast::Op::Lt: case ast::Op::Le: case ast::Op::Gt: case ast::Op::Ge:
-            return makeCompare(e.op, a, b, e.loc);
+            return makeCompare(e.op, std::move(a), std::move(b), e.loc);
         case ast::Op::And: case ast::Op::Or: case ast::Op::Xor: case ast::Op::AndThen: case ast::Op::OrElse:
-            return makeLogic(e.op, a, b, e.loc);
+            return makeLogic(e.op, std::move(a), std::move(b), e.loc);
         default:
-            return makeArith(e.op, a, b, e.loc);
+            return makeArith(e.op, std::move(a), std::move(b), e.loc);
     }
 }
 

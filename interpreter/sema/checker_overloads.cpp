@@ -29,6 +29,7 @@
 #include <fmt/format.h>
 
 #include "interpreter/sema/checker.h"
+#include "stdlib/ascii_case.h"
 
 namespace strun::sema {
 
@@ -120,7 +121,7 @@ void Checker::noteOverloads(std::vector<ast::CompilationUnit>& units) {
         std::vector<Member> kept;
         for (const Member& m : members) {
             const bool replaced = m.library && std::any_of(members.begin(), members.end(), [&](const Member& o) {
-                                      return !o.library && upper(o.signature) == upper(m.signature);
+                                      return !o.library && stdlib::equalsIgnoreCase(o.signature, m.signature);
                                   });
             if (replaced) m.pou->name += "(" + m.signature + ")#library";  // declared, never reached
             else kept.push_back(m);
@@ -246,7 +247,7 @@ PouInfo* Checker::pickOverload(const std::vector<PouInfo*>& all, const ast::Expr
                 ++positional;
             } else {
                 for (VarSym* q : fn->params)
-                    if (upper(q->name) == upper(a.name)) p = q;
+                    if (stdlib::equalsIgnoreCase(q->name, a.name)) p = q;
             }
             const bool asOutput = a.output || (p && p->section == ast::VarSection::Output && a.name.empty());
             if (!p || connected.count(p) || (asOutput != (p->section == ast::VarSection::Output))) {

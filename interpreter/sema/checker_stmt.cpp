@@ -6,6 +6,7 @@
 #include "interpreter/exec/class_part_nodes.h"
 #include "interpreter/exec/else_nodes.h"
 #include "interpreter/sema/case_lowering.h"
+#include "stdlib/ascii_case.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/expr_observer.h"
 #include "interpreter/sema/fuse.h"
@@ -348,7 +349,7 @@ exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
         Checked target = checkExpr(*s.target);
         Checked value = checkExpr(*s.expr);
         if (!target.ok || !value.ok) return nullptr;
-        exec::Stmt* st = assignChecked(target, value, s.loc);
+        exec::Stmt* st = assignChecked(std::move(target), std::move(value), s.loc);
         if (log_.messages().size() != before && !st) temp->inferredConflict = true;
         return st;
     }
@@ -357,13 +358,13 @@ exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
             if (!value.ok) return nullptr;
             fixInferredTemp(temp, value.type);
             Checked target = checkExpr(*s.target);
-            return target.ok ? assignChecked(target, value, s.loc) : nullptr;
+            return target.ok ? assignChecked(std::move(target), std::move(value), s.loc) : nullptr;
         }
     if (pou_ && pou_->result) {
         // F.x := ... and F[i] := ... assign (part of) the function result too.
         const ast::Expr* root = s.target.get();
         while (root && (root->kind == ast::ExprKind::Member || root->kind == ast::ExprKind::Index) && !root->kids.empty()) root = root->kids[0].get();
-        if (root && root->kind == ast::ExprKind::Name && upper(root->name) == upper(pou_->result->name)) assignedResult_ = true;
+        if (root && root->kind == ast::ExprKind::Name && stdlib::equalsIgnoreCase(root->name, pou_->result->name)) assignedResult_ = true;
     }
     Checked target = checkExpr(*s.target);
     Checked value = checkExprExpecting(*s.expr, target.ok ? target.type : nullptr);
@@ -380,7 +381,7 @@ exec::Stmt* Checker::checkAssign(const ast::Stmt& s) {
     if (s.kind == ast::StmtKind::RefAssign || s.kind == ast::StmtKind::TryAssign) return checkRefAssign(s);
     // A call inside that was aborted (watchdog / STOP) stops the activation
     // at the next tick (decision 0267).
-    return assignChecked(target, value, s.loc);
+    return assignChecked(std::move(target), std::move(value), s.loc);
 }
 
 exec::Stmt* Checker::checkFor(const ast::Stmt& s) {
@@ -541,7 +542,7 @@ exec::Stmt* Checker::checkStmt(const ast::Stmt& s) {
                 // CODESYS: a PROGRAM called from another POU runs its (single) instance.
                 if (findProgram(upper(callee.name))) maybeFb = true;
             }
-            if (callee.kind == ast::ExprKind::Name && pou_ && pou_->result && upper(callee.name) == upper(pou_->result->name)) maybeFb = false;
+            if (callee.kind == ast::ExprKind::Name && pou_ && pou_->result && stdlib::equalsIgnoreCase(callee.name, pou_->result->name)) maybeFb = false;
             if (isSuiteBuiltinCall(callee)) maybeFb = false;  // THIS^.AssertTrue(...) in a suite (decision 0145)
             if (maybeFb) {
                 bool isMethod = false;

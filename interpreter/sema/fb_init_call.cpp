@@ -1,4 +1,5 @@
 #include "interpreter/sema/fb_init_call.h"
+#include "stdlib/ascii_case.h"
 
 #include "interpreter/ast/ast_clone.h"
 #include "interpreter/ast/synthesized_expr.h"
@@ -55,7 +56,7 @@ ast::Expr baseFbInitCall(const PouInfo& base, const ast::Expr& derivedCall) {
     for (size_t k = 0; k < derivedCall.args.size(); ++k) {
         const ast::Arg& a = derivedCall.args[k];
         bool declared = a.name.empty() && k < base.params.size();
-        for (const VarSym* p : base.params) declared = declared || (!a.name.empty() && upper(p->name) == upper(a.name));
+        for (const VarSym* p : base.params) declared = declared || (!a.name.empty() && stdlib::equalsIgnoreCase(p->name, a.name));
         if (declared) call.args.push_back(ast::cloneArg(a));
     }
     return call;

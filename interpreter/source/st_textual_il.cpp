@@ -211,13 +211,13 @@ bool mayHoldTextualIl(const std::string& s) {
         return i;
     };
     for (size_t i = nextStart(0); i + 1 < n; i = nextStart(i + 1)) {
-        const char c = stdlib::mentions::upper(s[i]);
-        const char second = stdlib::mentions::upper(s[i + 1]);
+        const char c = stdlib::upperAscii(s[i]);
+        const char second = stdlib::upperAscii(s[i + 1]);
         if (!((c == 'E' && second == 'N') || (c == 'A' && second == 'C'))) continue;
         size_t after = 0;
         // END_VAR, END_METHOD, END_ACTION: the letter after END_ first
         // (END_IF, END_FOR, ... stop there).
-        const char fifth = c == 'E' && i + 4 < n && s[i + 3] == '_' ? stdlib::mentions::upper(s[i + 4]) : '\0';
+        const char fifth = c == 'E' && i + 4 < n && s[i + 3] == '_' ? stdlib::upperAscii(s[i + 4]) : '\0';
         if (fifth == 'V' && ilHasWord(s, i, "END_VAR")) after = i + 7;
         else if (fifth == 'M' && ilHasWord(s, i, "END_METHOD")) after = i + 10;
         else if (fifth == 'A' && ilHasWord(s, i, "END_ACTION")) after = i + 10;
