@@ -18,9 +18,15 @@ TEST_CASE("growThisThreadsHeap: a new thread's arena grows by the room asked for
         after = mallinfo2();
     });
     worker.join();
+#ifdef STRUN_SANITIZED
+    // ASan's allocator is not glibc's: mallinfo2 says nothing there (all
+    // zero), and the call only has to return.
+    SUCCEED("sanitizer build: growThisThreadsHeap returned");
+#else
     // Three pieces of 7 MiB, from the arena (not mapped one by one), all free again.
     CHECK(after.arena >= before.arena + (20u << 20));
     CHECK(after.fordblks >= before.fordblks + (20u << 20));
     CHECK(after.uordblks <= before.uordblks + (64u << 10));
     CHECK(after.hblks == before.hblks);
+#endif
 }
