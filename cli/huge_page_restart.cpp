@@ -43,8 +43,9 @@ bool underValgrind() {
     return preload && std::strstr(preload, "vgpreload") != nullptr;
 }
 
-}  // namespace
-
+// The bytes of the regular files among `paths` and of the sources a
+// directory among them contributes (source::isProjectSource); stops counting
+// once `enough` is reached. Other arguments (options, their values) count nothing.
 std::uintmax_t inputBytes(int count, char** paths, std::uintmax_t enough) {
     std::uintmax_t total = 0;
     for (int i = 0; i < count && total < enough; ++i) {
@@ -61,6 +62,8 @@ std::uintmax_t inputBytes(int count, char** paths, std::uintmax_t enough) {
     }
     return total;
 }
+
+}  // namespace
 
 bool wantsHugePageRestart(int argc, char** argv) {
     if (argc < 3) return false;

@@ -25,10 +25,4 @@ bool wantsHugePageRestart(int argc, char** argv);
 // pid, arguments and open files; nothing has been read or written yet).
 void restartWithHugePagesForLargeInputs(int argc, char** argv);
 
-// The bytes of the regular files among `paths` and of the sources a
-// directory among them contributes (source::isProjectSource; each directory
-// walked up to a bounded number of entries); stops counting once `enough`
-// is reached. Other arguments (options, their values) count nothing.
-std::uintmax_t inputBytes(int count, char** paths, std::uintmax_t enough);
-
 }  // namespace strun::cli

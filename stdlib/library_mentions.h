@@ -30,9 +30,6 @@ inline constexpr std::array<unsigned char, 256> kWordClass = [] {
 
 inline bool isWordStart(char c) { return kWordClass[static_cast<unsigned char>(c)] == 1; }
 
-using stdlib::equalsIgnoreCase;
-using stdlib::upperAscii;
-
 // A hash of the word's upper-case form (FNV-1a over the ASCII-folded
 // bytes), reduced to kNameHashBits bits: the build tool sets the bit of
 // every selecting name's, and the start-up scan looks a word up in the

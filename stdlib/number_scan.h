@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "stdlib/ascii_case.h"  // equalsIgnoreCase, upperAscii(char)
+#include "stdlib/ascii_case.h"  // equalsIgnoreCase, upperAscii, lowerAscii
 
 namespace strun::stdlib {
 
@@ -51,10 +51,6 @@ RealScan scanReal(std::string_view text, size_t pos);
 double realScanToDouble(const RealScan& scan, bool* overflowed = nullptr);
 float realScanToFloat(const RealScan& scan, bool* overflowed = nullptr);
 
-// The text with a-z folded to A-Z (names and keywords are ASCII; other bytes unchanged).
-std::string upperAscii(std::string_view text);
-// The text with A-Z folded to a-z.
-std::string lowerAscii(std::string_view text);
 // Removes leading and trailing spaces and tabs (and CR/LF).
 std::string_view trimBlanks(std::string_view text);
 

@@ -1,5 +1,4 @@
 #include "interpreter/ast/parse_in_halves.h"
-#include "interpreter/ast/thread_heap.h"
 
 #include <antlr4-runtime.h>
 
@@ -9,6 +8,7 @@
 #include "interpreter/ast/large_stack.h"
 #include "interpreter/ast/scanned_tokens.h"
 #include "interpreter/ast/syntax_errors.h"
+#include "interpreter/ast/thread_heap.h"
 
 namespace strun::ast {
 

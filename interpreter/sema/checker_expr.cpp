@@ -9,10 +9,10 @@
 #include "interpreter/exec/class_part_nodes.h"
 #include "interpreter/exec/flex_ref_nodes.h"
 #include "interpreter/sema/checker.h"
-#include "stdlib/ascii_case.h"
 #include "interpreter/sema/expr_observer.h"
 #include "interpreter/sema/fuse.h"
 #include "interpreter/sema/node_factory.h"
+#include "stdlib/ascii_case.h"
 #include "stdlib/literals.h"
 #include "stdlib/time_literals.h"
 

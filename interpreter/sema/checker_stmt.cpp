@@ -6,13 +6,13 @@
 #include "interpreter/exec/class_part_nodes.h"
 #include "interpreter/exec/else_nodes.h"
 #include "interpreter/sema/case_lowering.h"
-#include "stdlib/ascii_case.h"
 #include "interpreter/sema/checker.h"
 #include "interpreter/sema/expr_observer.h"
 #include "interpreter/sema/fuse.h"
 #include "interpreter/sema/fuse_swap.h"
 #include "interpreter/sema/node_factory.h"
 #include "interpreter/sema/read_before_write.h"
+#include "stdlib/ascii_case.h"
 
 namespace strun::sema {
 

@@ -1,9 +1,9 @@
 #include "interpreter/sema/fb_init_call.h"
-#include "stdlib/ascii_case.h"
 
 #include "interpreter/ast/ast_clone.h"
 #include "interpreter/ast/synthesized_expr.h"
 #include "interpreter/sema/types.h"
+#include "stdlib/ascii_case.h"
 
 namespace strun::sema {
 
