@@ -47,10 +47,7 @@ struct Library {
     bool selectedByNamespace = false;
 };
 
-std::string upperOf(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
+std::string upperOf(std::string_view s) { return strun::stdlib::upperAscii(s); }
 
 bool isWordStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
 bool isWordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
