@@ -55,7 +55,7 @@ struct SaxEvent {
     Kind kind;
     int64_t integer = 0;  // Bool, the integers (ULINT as its bits), member/element count at the end of a container
     double real = 0;
-    std::string text;     // Key, String
+    std::string text{};   // Key, String ({}: an event built from its kind alone is complete, -Wmissing-field-initializers)
 };
 // The events of `text`, or false when it is not valid JSON.
 bool saxEvents(std::string_view text, std::vector<SaxEvent>& out);
