@@ -293,22 +293,36 @@ struct ForStmt final : Stmt {
     Expr *from, *to, *by;  // by may be null (step 1)
     bool descending = false;  // a negative constant step on an unsigned variable (decision 0326)
     Body body;
+    template <class Run>
+    [[gnu::always_inline]] static Flow stepOne(Ctx& c, uint8_t* p, T end, Run&& run) {
+        while (loadAs<T>(p) <= end) {
+            Flow f = run(c);
+            if (f != Flow::Next) {
+                if (f == Flow::Exit) break;
+                if (f != Flow::Continue) return f;
+            }
+            if (tickAborts(c)) return Flow::Abort;
+            storeAs<T>(p, static_cast<T>(static_cast<U<T>>(loadAs<T>(p)) + U<T>(1)));
+        }
+        return Flow::Next;
+    }
     Flow exec(Ctx& c) override {
         T end = static_cast<T>(to->i(c));
         if (!by) {
             // Step 1 (decision 0266): no test of the step's sign per iteration.
             uint8_t* p = var->addr(c);
             storeAs<T>(p, static_cast<T>(from->i(c)));
-            while (loadAs<T>(p) <= end) {
-                Flow f = body.runPinned(c);
-                if (f != Flow::Next) {
-                    if (f == Flow::Exit) break;
-                    if (f != Flow::Continue) return f;
-                }
-                if (tickAborts(c)) return Flow::Abort;
-                storeAs<T>(p, static_cast<T>(static_cast<U<T>>(loadAs<T>(p)) + U<T>(1)));
-            }
-            return Flow::Next;
+            // One loop per shape of the body, its statements in locals: read
+            // through `body` after each statement's call, the shape was
+            // tested and the statements reloaded at every iteration.
+            if (body.block || !body.s0) return stepOne(c, p, end, [b = body](Ctx& k) { return b.runPinned(k); });
+            Stmt* const s0 = body.s0;
+            if (Stmt* const s1 = body.s1) return stepOne(c, p, end, [s0, s1](Ctx& k) {
+                Flow f = runOne(k, s0);
+                if (f != Flow::Next) return f;
+                return runOne(k, s1);
+            });
+            return stepOne(c, p, end, [s0](Ctx& k) { return runOne(k, s0); });
         }
         T step = static_cast<T>(by->i(c));
         const bool up = !descending && step >= T(0);
