@@ -17,12 +17,12 @@ struct ElseStmts final : Stmt {
     Stmt* s0;
     Stmt* s1;  // may be null
     ElseStmts(Stmt* a, Stmt* b) : s0(a), s1(b) {}
-    // One statement tail-called, as Body::run runs a branch of one (decision 0496).
+    // The last statement tail-called, as Body::run runs a branch (decision 0496).
     Flow exec(Ctx& c) override {
-        if (!s1) return Body::runLast(c, s0);
+        if (!s1) return runOne(c, s0);
         Flow f = runOne(c, s0);
         if (f != Flow::Next) return f;
-        return Body::runLast(c, s1);
+        return runOne(c, s1);
     }
     // The `otherwise` of an IF link for the ELSE Block `b`: null for an empty
     // ELSE, an ElseStmts for one or two statements without labels, else the Block.

@@ -96,7 +96,11 @@ struct Body {
         if (block) return block->exec(c);
         return runInline(c);
     }
-    // The statements held inline (none, one or two).
+    // The statements held inline (none, one or two). The loops' form: run()
+    // tests the shape in another order, so that its last call is a tail
+    // call; written that way here, GCC laid out the loops and inlined call
+    // bodies worse (collatz +2.0 %, fb_io +1.3 %, bubble_sort +1.3 %
+    // instructions).
     [[gnu::always_inline]] inline Flow runInline(Ctx& c) const {
         if (!s0) return Flow::Next;
         Flow f = runOne(c, s0);
@@ -112,16 +116,10 @@ struct Body {
     // through runOutOfLine: 29 instructions -> 12, decision 0496).
     inline Flow run(Ctx& c) const {
         if (block) return runBlock(block, c);
-        if (!s1) return s0 ? runLast(c, s0) : Flow::Next;
+        if (!s1) return s0 ? runOne(c, s0) : Flow::Next;
         Flow f = runOne(c, s0);
         if (f != Flow::Next) return f;
-        return runLast(c, s1);
-    }
-    // A branch's last statement, as runOne, tail-called.
-    [[gnu::always_inline]] static Flow runLast(Ctx& c, Stmt* s) {
-        c.stmt = s;
-        if (tickAborts(c)) return Flow::Abort;
-        return s->exec(c);
+        return runOne(c, s1);
     }
     // Never inlined: IfCompare's THEN, tail-called, so that the IF node
     // saves no registers (decision 0410; inlined there once loops stopped
