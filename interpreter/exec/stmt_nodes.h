@@ -73,8 +73,9 @@ struct Block final : Stmt {
 // and vector walk; longer lists, and lists with labels (JMP targets), run
 // as their Block. Built from a finished Block (the Block must not change
 // afterwards). Every statement still ticks exactly as in Block::exec.
-// The loops (and an inlined call, call_nodes.h) run their body with
-// runPinned, always inlined into them (decision 0410):
+// The loops run their body through withShape (one loop per shape, decision
+// 0498) and an inlined call (call_nodes.h) with runPinned, both always
+// inlined into them (decision 0410):
 // left to GCC's budget, the inlining of run() into a loop node
 // (WhileCompare in sort) came and went with unrelated edits to the same
 // unit (+-9 % instructions). The IF and CASE nodes keep run() (GCC's
@@ -95,6 +96,21 @@ struct Body {
     [[gnu::always_inline]] inline Flow runPinned(Ctx& c) const {
         if (block) return block->exec(c);
         return runInline(c);
+    }
+    // Calls loop(run), `run(c)` running this body with its shape resolved
+    // once: a loop per shape, the statements in locals. Read through the
+    // Body after each statement's call, the shape was tested and the
+    // statements reloaded at every iteration (decisions 0497, 0498).
+    template <class Loop>
+    [[gnu::always_inline]] inline Flow withShape(Loop&& loop) const {
+        if (block || !s0) return loop([b = *this](Ctx& k) { return b.runPinned(k); });
+        Stmt* const a = s0;
+        if (Stmt* const b = s1) return loop([a, b](Ctx& k) {
+            Flow f = runOne(k, a);
+            if (f != Flow::Next) return f;
+            return runOne(k, b);
+        });
+        return loop([a](Ctx& k) { return runOne(k, a); });
     }
     // The statements held inline (none, one or two). The loops' form: run()
     // tests the shape in another order, so that its last call is a tail
@@ -310,35 +326,27 @@ struct ForStmt final : Stmt {
             // Step 1 (decision 0266): no test of the step's sign per iteration.
             uint8_t* p = var->addr(c);
             storeAs<T>(p, static_cast<T>(from->i(c)));
-            // One loop per shape of the body, its statements in locals: read
-            // through `body` after each statement's call, the shape was
-            // tested and the statements reloaded at every iteration.
-            if (body.block || !body.s0) return stepOne(c, p, end, [b = body](Ctx& k) { return b.runPinned(k); });
-            Stmt* const s0 = body.s0;
-            if (Stmt* const s1 = body.s1) return stepOne(c, p, end, [s0, s1](Ctx& k) {
-                Flow f = runOne(k, s0);
-                if (f != Flow::Next) return f;
-                return runOne(k, s1);
-            });
-            return stepOne(c, p, end, [s0](Ctx& k) { return runOne(k, s0); });
+            return body.withShape([&](auto&& run) { return stepOne(c, p, end, run); });
         }
         T step = static_cast<T>(by->i(c));
         const bool up = !descending && step >= T(0);
         uint8_t* p = var->addr(c);
         storeAs<T>(p, static_cast<T>(from->i(c)));
-        for (;;) {
-            T v = loadAs<T>(p);
-            if (up ? !(v <= end) : !(v >= end)) break;
-            Flow f = body.runPinned(c);
-            if (f != Flow::Next) {
-                if (f == Flow::Exit) break;
-                if (f != Flow::Continue) return f;
+        return body.withShape([&](auto&& run) {
+            for (;;) {
+                T v = loadAs<T>(p);
+                if (up ? !(v <= end) : !(v >= end)) break;
+                Flow f = run(c);
+                if (f != Flow::Next) {
+                    if (f == Flow::Exit) break;
+                    if (f != Flow::Continue) return f;
+                }
+                if (tickAborts(c)) return Flow::Abort;
+                // The control variable is a plain variable: its address does not move.
+                storeAs<T>(p, static_cast<T>(static_cast<U<T>>(loadAs<T>(p)) + static_cast<U<T>>(step)));
             }
-            if (tickAborts(c)) return Flow::Abort;
-            // The control variable is a plain variable: its address does not move.
-            storeAs<T>(p, static_cast<T>(static_cast<U<T>>(loadAs<T>(p)) + static_cast<U<T>>(step)));
-        }
-        return Flow::Next;
+            return Flow::Next;
+        });
     }
 };
 
@@ -346,15 +354,17 @@ struct ForStmt final : Stmt {
 // evaluates the condition.
 template <class Cond>
 [[gnu::always_inline]] inline Flow runWhile(Ctx& c, const Body& body, Cond&& holds) {
-    while (holds(c)) {
-        Flow f = body.runPinned(c);
-        if (f != Flow::Next) {
-            if (f == Flow::Exit) break;
-            if (f != Flow::Continue) return f;
+    return body.withShape([&](auto&& run) {
+        while (holds(c)) {
+            Flow f = run(c);
+            if (f != Flow::Next) {
+                if (f == Flow::Exit) break;
+                if (f != Flow::Continue) return f;
+            }
+            if (tickAborts(c)) return Flow::Abort;
         }
-        if (tickAborts(c)) return Flow::Abort;
-    }
-    return c.aborting ? Flow::Abort : Flow::Next;
+        return c.aborting ? Flow::Abort : Flow::Next;
+    });
 }
 
 struct WhileStmt final : Stmt {
@@ -369,16 +379,18 @@ struct RepeatStmt final : Stmt {
     Expr* cond;
     Body body;
     Flow exec(Ctx& c) override {
-        for (;;) {
-            Flow f = body.runPinned(c);
-            if (f != Flow::Next) {
-                if (f == Flow::Exit) break;
-                if (f != Flow::Continue) return f;
+        return body.withShape([&](auto&& run) {
+            for (;;) {
+                Flow f = run(c);
+                if (f != Flow::Next) {
+                    if (f == Flow::Exit) break;
+                    if (f != Flow::Continue) return f;
+                }
+                if (cond->i(c)) break;
+                if (tickAborts(c)) return Flow::Abort;
             }
-            if (cond->i(c)) break;
-            if (tickAborts(c)) return Flow::Abort;
-        }
-        return c.aborting ? Flow::Abort : Flow::Next;
+            return c.aborting ? Flow::Abort : Flow::Next;
+        });
     }
 };
 
