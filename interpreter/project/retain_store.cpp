@@ -135,7 +135,6 @@ struct Scan {
 
 Scan scanRetainFile(int fd, uint64_t limit, bool firstLineOnly) {
     Reader in(fd);
-    Scan scan;
     const std::string_view magic = kMagic;
     uint64_t hash = kFnvBasis, hashAtLine = kFnvBasis, hashAtLast = kFnvBasis;
     std::string line, last;
