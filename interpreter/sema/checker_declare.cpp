@@ -440,8 +440,10 @@ const Type* Checker::resolveTypeSpec(const ast::TypeSpec* spec, const std::strin
             for (const auto& r : spec->dims) {
                 if (r.star) { flexible = true; dims.push_back({0, -1}); continue; }
                 int64_t lo = 0, hi = 0;
-                bool ok = constIntExpr(r.lo.get(), lo, "an array bound") & constIntExpr(r.hi.get(), hi, "an array bound");
-                if (!ok) return nullptr;
+                // Both bounds are checked, lower first, so that both get their diagnostics.
+                const bool loOk = constIntExpr(r.lo.get(), lo, "an array bound");
+                const bool hiOk = constIntExpr(r.hi.get(), hi, "an array bound");
+                if (!loOk || !hiOk) return nullptr;
                 if (hi < lo) {
                     error(diag::E0407, spec->loc, fmt::format("array upper bound {} is below lower bound {}", hi, lo));
                     return nullptr;
