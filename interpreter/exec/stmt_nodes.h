@@ -112,11 +112,13 @@ struct Body {
         });
         return loop([a](Ctx& k) { return runOne(k, a); });
     }
-    // The statements held inline (none, one or two). The loops' form: run()
-    // tests the shape in another order, so that its last call is a tail
-    // call; written that way here, GCC laid out the loops and inlined call
-    // bodies worse (collatz +2.0 %, fb_io +1.3 %, bubble_sort +1.3 %
-    // instructions).
+    // The statements held inline (none, one or two), as runPinned runs them:
+    // an inlined call's body (call_nodes.h) and, through withShape, a loop's
+    // empty body. run() tests the shape in another order, so that its last
+    // call is a tail call; written that way here (measured while the loops
+    // still ran their statements through it), GCC laid out the loops and
+    // inlined call bodies worse (collatz +2.0 %, fb_io +1.3 %, bubble_sort
+    // +1.3 % instructions).
     [[gnu::always_inline]] inline Flow runInline(Ctx& c) const {
         if (!s0) return Flow::Next;
         Flow f = runOne(c, s0);
