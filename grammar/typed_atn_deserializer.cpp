@@ -3,6 +3,8 @@
 // and transition kinds read from the objects instead of dynamic_cast.
 #include "grammar/typed_atn_deserializer.h"
 
+#include "grammar/atn_heap.h"
+
 #include <Exceptions.h>
 #include <atn/ATNState.h>
 #include <atn/ATNType.h>
@@ -89,6 +91,7 @@ bool TypedAtnDeserializer::readsForm(const std::vector<uint16_t>& input) { retur
 
 ATN TypedAtnDeserializer::deserialize(const std::vector<uint16_t>& input) {
     if (!knownForm(input)) return ATNDeserializer::deserialize(input);
+    AtnHeap::Scope heap;  // the ATN's objects live until exit: bumped, not malloc'd
     Words in(input);
     in.skip(9);  // version, UUID
     ATNType grammarType = ATNType(in.next());
