@@ -26,6 +26,11 @@ std::byte* regionStart = nullptr;
 std::byte* regionEnd = nullptr;
 std::byte* next = nullptr;
 thread_local bool open = false;
+// regionStart as a number for operator delete's one unsigned comparison:
+// until the region exists, the last kRegion bytes of the address space
+// (kernel addresses, never a pointer new returned; a null pointer falls in
+// too, and deleting it does nothing either way).
+std::uintptr_t regionBase = ~std::uintptr_t(0) - kRegion + 1;
 
 [[maybe_unused]] void reserveRegion() {
     void* p = mmap(nullptr, kRegion, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
@@ -35,6 +40,7 @@ thread_local bool open = false;
 #endif
     regionStart = next = static_cast<std::byte*>(p);
     regionEnd = regionStart + kRegion;
+    regionBase = reinterpret_cast<std::uintptr_t>(p);
 }
 
 void* fromRegion(std::size_t bytes) {
@@ -45,10 +51,7 @@ void* fromRegion(std::size_t bytes) {
     return out;
 }
 
-bool inRegion(void* p) {
-    auto* b = static_cast<std::byte*>(p);
-    return b >= regionStart && b < regionEnd;
-}
+bool inRegion(void* p) { return reinterpret_cast<std::uintptr_t>(p) - regionBase < kRegion; }
 
 #ifndef STRUN_SANITIZED
 void* allocate(std::size_t bytes) {
