@@ -4,7 +4,7 @@
 // objects it never calls: Parser -> ParseTreePatternMatcher ->
 // ParseTreePattern -> XPath -> XPathLexer. XPathLexer's object builds the
 // lexer's ATN at static initialisation, with ANTLR's dynamic_cast-heavy
-// deserializer: 0.28 M instructions, a ninth of a one-line `strun run`. The
+// deserializer: 0.28 M instructions, a tenth of a one-line `strun run`. The
 // link wraps the two symbols XPath's object takes from it (CMakeLists.txt:
 // --wrap), so that object is never pulled in and these two stand in for its
 // constructor and destructor. strun never evaluates an XPath, so neither is
