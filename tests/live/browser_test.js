@@ -13,6 +13,8 @@ const path = require("path");
 const [strun, program, modules, screenshot] = process.argv.slice(2);
 const puppeteer = require(path.join(modules, "puppeteer-core"));
 
+// The step in progress, named in the failure message: a failure in CI leaves only this test's output.
+let step = "start";
 function fail(message) { throw new Error(message); }
 const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 
@@ -37,7 +39,7 @@ async function api(url, p, body) {
   return res.json();
 }
 
-async function waitFor(what, predicate, timeout = 15000) {
+async function waitFor(what, predicate, timeout = 30000) {
   const end = Date.now() + timeout;
   let last;
   while (Date.now() < end) {
@@ -53,22 +55,28 @@ async function waitFor(what, predicate, timeout = 15000) {
   const { child, url } = await startStrun(["--serve", "127.0.0.1:0"]);
   let browser;
   try {
+    step = "launching Chromium";
+    // Generous limits: Chromium's first start on a fresh machine builds its font caches.
     browser = await puppeteer.launch({
+      timeout: 120000,
       executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
       headless: true,
       args: ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-background-networking",
              "--disable-component-update", "--disable-sync", "--user-data-dir=" + profile],
     });
     const page = await browser.newPage();
+    page.setDefaultTimeout(60000);
     await page.setViewport({ width: 1400, height: 900 });
     const outside = [];
     page.on("request", (r) => { if (!r.url().startsWith(url) && !r.url().startsWith("data:")) outside.push(r.url()); });
     const errors = [];
     page.on("pageerror", (e) => errors.push(String(e)));
+    step = "loading the page";
     await page.goto(url, { waitUntil: "load" });
 
     // The instances are expanded: elementary values are in the page without a click.
     const cell = '.var[data-path="Main.counter"] .value';
+    step = "the counter's value changing";
     await page.waitForSelector(cell);
     const first = await waitFor(() => page.$eval(cell, (td) => td.textContent), (t) => t !== "");
     await waitFor(() => page.$eval(cell, (td) => td.textContent), (t) => t !== "" && Number(t) > Number(first));
@@ -76,6 +84,7 @@ async function waitFor(what, predicate, timeout = 15000) {
     if (state !== "RUN") fail("state " + state);
 
     // Force Main.x through the page: the editor of its row, value 42, F.
+    step = "forcing Main.x through the page";
     await page.click('.var[data-path="Main.x"] .btn-edit');
     await page.waitForSelector('.var[data-path="Main.x"] .edit-value');
     await page.$eval('.var[data-path="Main.x"] .edit-value', (i) => { i.value = ""; });
@@ -90,6 +99,7 @@ async function waitFor(what, predicate, timeout = 15000) {
     await waitFor(() => page.$eval('.var[data-path="Main.x"] .value', (td) => td.textContent), (t) => t === "42");
 
     // Pause, then step one cycle from the page: the cycle counter advances by one.
+    step = "pausing and stepping one cycle";
     await page.click("#btn-pause");
     await waitFor(() => api(url, "/api/state"), (s) => s.paused);
     await waitFor(() => page.$eval("#plc-paused", (e) => !e.hidden), (v) => v);
@@ -104,6 +114,7 @@ async function waitFor(what, predicate, timeout = 15000) {
     await waitFor(() => page.$eval(cell, (td) => Number(td.textContent)), (v) => v === counterBefore + 1);
 
     // The filter box.
+    step = "the filter box";
     await page.type("#filter", "valve");
     await waitFor(() => page.$('.var[data-path="Main.counter"]'), (e) => e === null);
     if (!(await page.$('.var[data-path="Main.valve.cmd"]'))) fail("the filter hid a match");
@@ -127,4 +138,4 @@ async function waitFor(what, predicate, timeout = 15000) {
     child.kill("SIGINT");
     fs.rmSync(profile, { recursive: true, force: true });
   }
-})().catch((e) => { console.error("FAIL browser: " + e.message); process.exit(1); });
+})().catch((e) => { console.error("FAIL browser (" + step + "): " + e.message); process.exit(1); });
