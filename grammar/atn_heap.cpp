@@ -23,16 +23,18 @@ constexpr std::size_t kPrefault = 256u << 10;
 constexpr std::size_t kAlign = alignof(std::max_align_t);
 
 std::byte* regionStart = nullptr;
-std::byte* regionEnd = nullptr;
 std::byte* next = nullptr;
 thread_local bool open = false;
+
+#ifndef STRUN_SANITIZED  // the sanitizers' own operator new keeps its checks: no region there
+std::byte* regionEnd = nullptr;
 // regionStart as a number for operator delete's one unsigned comparison:
 // until the region exists, the last kRegion bytes of the address space
 // (kernel addresses, never a pointer new returned; a null pointer falls in
 // too, and deleting it does nothing either way).
 std::uintptr_t regionBase = ~std::uintptr_t(0) - kRegion + 1;
 
-[[maybe_unused]] void reserveRegion() {
+void reserveRegion() {
     void* p = mmap(nullptr, kRegion, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
     if (p == MAP_FAILED) return;
 #ifdef MADV_POPULATE_WRITE
@@ -53,7 +55,6 @@ void* fromRegion(std::size_t bytes) {
 
 bool inRegion(void* p) { return reinterpret_cast<std::uintptr_t>(p) - regionBase < kRegion; }
 
-#ifndef STRUN_SANITIZED
 void* allocate(std::size_t bytes) {
     if (open) [[unlikely]] {
         if (void* p = fromRegion(bytes)) return p;
@@ -77,7 +78,7 @@ void release(void* p) noexcept {
 }  // namespace
 
 AtnHeap::Scope::Scope() {
-#ifndef STRUN_SANITIZED  // the sanitizers' own operator new keeps its checks
+#ifndef STRUN_SANITIZED
     if (regionStart == nullptr) reserveRegion();
     open = regionStart != nullptr;
 #endif
